@@ -1,0 +1,224 @@
+/*
+ * disksim: hard disks (2D elastic billiards) in a square box.
+ *
+ * The one public header of libdisksim. Every exported symbol starts with
+ * `ds_`. The library never prints, never exits and keeps no global mutable
+ * state: errors come back as a ds_status, which ds_status_str() describes.
+ *
+ * Units: lengths in box units (the box is [0,box]^2, box = 1000 by default),
+ * time in simulated seconds, unit masses.
+ */
+#ifndef DISK_SIM_H
+#define DISK_SIM_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define DS_VERSION_MAJOR 1
+#define DS_VERSION_MINOR 0
+#define DS_VERSION_PATCH 0
+#define DS_VERSION_STRING "1.0.0"
+
+/* ------------------------------------------------------------------ */
+/* Status codes                                                        */
+/* ------------------------------------------------------------------ */
+
+typedef enum ds_status {
+    DS_OK = 0,
+    DS_ERR_ARG,       /* an argument is out of range or NULL */
+    DS_ERR_NOMEM,     /* an allocation failed or would not fit in memory */
+    DS_ERR_PLACEMENT, /* random sequential placement cannot reach the packing */
+    DS_ERR_IO,        /* a read or write failed */
+    DS_ERR_FORMAT     /* a frame file is malformed (see ds_frame_error) */
+} ds_status;
+
+/* A static English description of a status; never NULL. */
+const char *ds_status_str(ds_status status);
+
+/* Library version as "MAJOR.MINOR.PATCH" (same as DS_VERSION_STRING). */
+const char *ds_version(void);
+
+/* ------------------------------------------------------------------ */
+/* Random numbers: xorshift64* (Vigna 2016), one state per generator    */
+/* ------------------------------------------------------------------ */
+
+typedef struct ds_rng {
+    uint64_t state; /* never 0 */
+} ds_rng;
+
+/* Seeds the generator; any seed (0 included) gives a valid, distinct stream. */
+void ds_rng_seed(ds_rng *rng, uint64_t seed);
+/* 64 random bits. */
+uint64_t ds_rng_next(ds_rng *rng);
+/* Uniform double in [a, b) built from the top 53 random bits. */
+double ds_rng_uniform(ds_rng *rng, double a, double b);
+
+/* ------------------------------------------------------------------ */
+/* Timer: accumulates CLOCK_MONOTONIC seconds over start/stop pairs     */
+/* ------------------------------------------------------------------ */
+
+typedef struct ds_timer {
+    double started; /* monotonic seconds at the last start */
+    double total;   /* accumulated seconds of completed start/stop pairs */
+    int running;
+} ds_timer;
+
+/* Monotonic clock reading in seconds (arbitrary origin, never decreases). */
+double ds_now(void);
+void ds_timer_reset(ds_timer *timer);
+void ds_timer_start(ds_timer *timer);
+void ds_timer_stop(ds_timer *timer);
+/* Accumulated seconds, including the running interval if started. */
+double ds_timer_seconds(const ds_timer *timer);
+
+/* ------------------------------------------------------------------ */
+/* Simulation                                                          */
+/* ------------------------------------------------------------------ */
+
+typedef struct ds_sim ds_sim; /* opaque */
+
+typedef struct ds_disk {
+    double x, y, vx, vy;
+} ds_disk;
+
+/* How candidate pairs are found. All give exactly the same overlapping pairs. */
+typedef enum ds_broadphase {
+    DS_SAP = 0,     /* sweep and prune along x, insertion sort (the seed's) */
+    DS_BRUTE_FORCE, /* all pairs, O(N^2): the reference */
+    DS_SAP_STRIPS,  /* sweep and prune in horizontal strips: O(N) at fixed density */
+    DS_AUTO         /* DS_SAP or DS_SAP_STRIPS, whichever is expected to be faster */
+} ds_broadphase;
+
+typedef struct ds_params {
+    size_t n;      /* number of disks, >= 1 */
+    double radius; /* disk radius, 0 < radius < box/2 */
+    uint64_t seed; /* seed of the placement and direction generator */
+    double box;    /* 0 means 1000 */
+    double speed;  /* 0 means 100  */
+    double dt;     /* 0 means 0.001 */
+    ds_broadphase broadphase;
+} ds_params;
+
+#define DS_DEFAULT_SEED 20260101u
+
+/* n, radius, seed DS_DEFAULT_SEED, defaults for the rest, DS_AUTO. */
+ds_params ds_default_params(size_t n, double radius);
+
+/* Validates params without allocating: DS_ERR_ARG for impossible values,
+ * DS_ERR_PLACEMENT for a packing random sequential placement cannot reach
+ * (area fraction above DS_MAX_AREA_FRACTION), DS_ERR_NOMEM for an n whose
+ * arrays cannot be addressed. If warnings is not NULL, it receives a bit set
+ * of DS_WARN_* flags for requests that run but with degraded physics. */
+ds_status ds_check_params(const ds_params *params, unsigned *warnings);
+
+/* Bytes ds_create would allocate for params (DS_ERR_ARG / DS_ERR_NOMEM as
+ * ds_check_params), so a caller can refuse a request before trying it. */
+ds_status ds_memory_needed(const ds_params *params, size_t *bytes);
+
+/* Random sequential adsorption of disks jams near 0.547 area fraction;
+ * requests above this bound are refused instead of searched forever. */
+#define DS_MAX_AREA_FRACTION 0.54
+
+/* A head-on pair at speed speed_max can pass through each other between two
+ * steps: 2 * speed_max * dt > 4 R (speed_max taken as 3x the initial speed,
+ * which the Rayleigh tail exceeds with probability e^-9). */
+#define DS_WARN_TUNNELING 1u
+
+/* Creates and places the disks. On success *out owns the simulation. */
+ds_status ds_create(const ds_params *params, ds_sim **out);
+void ds_destroy(ds_sim *sim); /* NULL is allowed */
+
+/* One time step: move by v*dt, reflect at walls, resolve disk-disk collisions. */
+void ds_step(ds_sim *sim);
+void ds_run(ds_sim *sim, uint64_t steps);
+
+size_t ds_count(const ds_sim *sim);
+double ds_radius(const ds_sim *sim);
+double ds_box(const ds_sim *sim);
+double ds_dt(const ds_sim *sim);
+double ds_time(const ds_sim *sim);    /* simulated time = steps * dt */
+uint64_t ds_steps(const ds_sim *sim); /* steps taken since creation */
+ds_broadphase ds_broadphase_used(const ds_sim *sim); /* never DS_AUTO */
+const char *ds_broadphase_name(ds_broadphase bp);
+
+/* Disk i, in generation order (i < n; out of range gives all zeros). */
+ds_disk ds_get(const ds_sim *sim, size_t i);
+/* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, or the
+ * centre is outside [R, box-R]^2. Does not check overlaps. */
+ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
+
+/* The seed's timing measure: seconds spent sorting, pruning, testing and
+ * resolving disk-disk pairs, summed over all steps. */
+double ds_collision_seconds(const ds_sim *sim);
+uint64_t ds_collision_count(const ds_sim *sim); /* disk-disk collisions resolved */
+uint64_t ds_pairs_tested(const ds_sim *sim);    /* narrow-phase distance tests */
+
+/* ------------------------------------------------------------------ */
+/* Observables                                                         */
+/* ------------------------------------------------------------------ */
+
+double ds_kinetic_energy(const ds_sim *sim); /* sum of v^2/2, unit masses */
+void ds_momentum(const ds_sim *sim, double *px, double *py);
+uint64_t ds_wall_count(const ds_sim *sim); /* wall reflections since reset */
+/* Momentum handed to the walls since the last reset: sum of 2|v_n|. */
+double ds_wall_impulse(const ds_sim *sim);
+/* Wall impulse per unit time per unit length of wall the centres reach
+ * (perimeter 4 (box - 2R)), averaged since the last reset; 0 before any
+ * step. In 2D this is a force per length, the ideal gas has P A = N <v^2>/2. */
+double ds_pressure(const ds_sim *sim);
+/* Zeroes the wall impulse, wall count and pressure clock (not the
+ * collision count or time), so a relaxation period can be discarded. */
+void ds_reset_observables(ds_sim *sim);
+
+/* ------------------------------------------------------------------ */
+/* Frames: text files of lines "x y R" or "x y R vx vy"                */
+/* ------------------------------------------------------------------ */
+
+/* Writes one line per disk in generation order: x and y with 6 decimals,
+ * R in the shortest form that reads back as the same double. */
+ds_status ds_write_frame(const ds_sim *sim, FILE *out);
+ds_status ds_write_frame_velocities(const ds_sim *sim, FILE *out);
+
+/* Formats the frame into buf (at most cap bytes, no NUL). With cap too small
+ * returns DS_ERR_ARG; *len receives the bytes needed either way.
+ * ds_frame_size() tells the capacity that is always enough. */
+size_t ds_frame_size(const ds_sim *sim, int velocities);
+ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap,
+                          size_t *len);
+
+/* One disk read from a frame file. vx, vy are 0 in 3-column frames. */
+typedef struct ds_frame_disk {
+    double x, y, r, vx, vy;
+} ds_frame_disk;
+
+typedef struct ds_frame {
+    ds_frame_disk *disks; /* malloc'd, free with ds_frame_free */
+    size_t count;
+    int columns; /* 3 or 5 (all lines agree); 0 for an empty frame */
+} ds_frame;
+
+/* Where and why a frame failed to parse. */
+typedef struct ds_frame_error {
+    size_t line;      /* 1-based line number, 0 if not about a line */
+    char message[96]; /* e.g. "expected 3 or 5 numbers" */
+} ds_frame_error;
+
+/* Parses a frame held in memory (need not be NUL-terminated). Every line
+ * must hold 3 or 5 finite numbers, all lines the same count, R > 0.
+ * Blank lines and lines starting with '#' are skipped; an empty frame is
+ * DS_ERR_FORMAT. err may be NULL. On error *frame is left empty. */
+ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err);
+/* Reads and parses a file (DS_ERR_IO if it cannot be read). */
+ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err);
+void ds_frame_free(ds_frame *frame);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* DISK_SIM_H */

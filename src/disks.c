@@ -1,0 +1,426 @@
+/* disks: the command-line front end. Parses arguments, runs the simulation,
+ * writes frame_NNNN.txt files crash-safe, prints the seed's timing. All
+ * printing and exit codes live here, never in the library. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "disk_sim.h"
+
+enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
+#define MAX_FRAMES 10000 /* frame_NNNN.txt has four digits */
+
+typedef struct options {
+    size_t n;
+    double radius;
+    uint64_t seed;
+    long frames;
+    uint64_t steps_per_frame;
+    const char *out_dir;
+    const char *stats_path;
+    int quiet, velocities;
+    ds_broadphase broadphase;
+} options;
+
+static const char *const usage_text =
+    "usage: disks N R [options]\n"
+    "Simulates N hard disks of radius R in the box [0,1000]^2 and writes\n"
+    "frame_0000.txt, frame_0001.txt, ... with one line \"x y R\" per disk.\n"
+    "\n"
+    "options:\n"
+    "  --seed S             random seed, 0..2^64-1 (default %u)\n"
+    "  --frames F           frames to write, 1..10000 (default 500)\n"
+    "  --steps-per-frame K  steps of dt = 0.001 between frames (default 100)\n"
+    "  --out DIR            directory for the frames, created if missing (default .)\n"
+    "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
+    "  --stats FILE         write one CSV row of observables per frame to FILE\n"
+    "  --broadphase B       sap, strips, brute or auto (default auto)\n"
+    "  --quiet              print nothing but errors and warnings\n"
+    "  --help               show this help and exit\n"
+    "  --version            show the version and exit\n"
+    "\n"
+    "exit status: 0 success, 1 run-time error (placement, I/O), 2 usage error\n";
+
+static void die(int code, const char *fmt, ...)
+{
+    va_list ap;
+    fputs("disks: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    exit(code);
+}
+
+/* A non-negative integer: digits only, or an exact integer in decimal
+ * scientific notation (1e5), no sign, no trailing text. */
+static int parse_count(const char *s, uint64_t max, uint64_t *out)
+{
+    if (!*s || *s == '-' || *s == '+' || *s == ' ')
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (*end == '\0' && end != s) {
+        if (errno == ERANGE || v > max)
+            return -1;
+        *out = v;
+        return 1;
+    }
+    double d = strtod(s, &end);
+    if (*end != '\0' || end == s || !isfinite(d) || d != floor(d) || d < 0.0)
+        return errno == ERANGE ? -1 : 0;
+    if (d > (double)max)
+        return -1;
+    *out = (uint64_t)d;
+    return 1;
+}
+
+static uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_t max)
+{
+    uint64_t v = 0;
+    int ok = parse_count(s, max, &v);
+    if (ok == 0)
+        die(EXIT_USAGE, "%s must be a whole number, got '%s'", name, s);
+    if (ok < 0 || v < min)
+        die(EXIT_USAGE, "%s must be between %llu and %llu, got '%s'", name,
+            (unsigned long long)min, (unsigned long long)max, s);
+    return v;
+}
+
+static double radius_arg(const char *s)
+{
+    char *end;
+    errno = 0;
+    double r = strtod(s, &end);
+    if (end == s || *end != '\0' || *s == ' ')
+        die(EXIT_USAGE, "R must be a number, got '%s'", s);
+    if (!isfinite(r) || errno == ERANGE)
+        die(EXIT_USAGE, "R must be a finite number, got '%s'", s);
+    if (!(r > 0.0 && r < 500.0))
+        die(EXIT_USAGE, "R must be > 0 and < 500 (half the box), got '%s'", s);
+    return r;
+}
+
+static ds_broadphase broadphase_arg(const char *s)
+{
+    const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k)
+        if (strcmp(s, ds_broadphase_name(all[k])) == 0)
+            return all[k];
+    die(EXIT_USAGE, "--broadphase must be sap, strips, brute or auto, got '%s'", s);
+    return DS_AUTO;
+}
+
+static options parse_args(int argc, char **argv)
+{
+    options o;
+    memset(&o, 0, sizeof o);
+    o.seed = DS_DEFAULT_SEED;
+    o.frames = 500;
+    o.steps_per_frame = 100;
+    o.out_dir = ".";
+    o.broadphase = DS_AUTO;
+
+    const char *positional[2];
+    int npos = 0;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            printf(usage_text, (unsigned)DS_DEFAULT_SEED);
+            exit(0);
+        }
+        if (strcmp(a, "--version") == 0) {
+            printf("disks %s\n", ds_version());
+            exit(0);
+        }
+        if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            o.quiet = 1;
+            continue;
+        }
+        if (strcmp(a, "--velocities") == 0) {
+            o.velocities = 1;
+            continue;
+        }
+        if (a[0] == '-' && a[1] == '-') {
+            /* --name VALUE or --name=VALUE */
+            const char *eq = strchr(a, '=');
+            size_t len = eq ? (size_t)(eq - a) : strlen(a);
+            const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
+            const char *names[] = {"--seed", "--frames", "--steps-per-frame", "--out", "--stats",
+                                   "--broadphase"};
+            int which = -1;
+            for (int k = 0; k < 6; ++k)
+                if (strlen(names[k]) == len && strncmp(a, names[k], len) == 0)
+                    which = k;
+            if (which < 0)
+                die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, a);
+            if (!value)
+                die(EXIT_USAGE, "%s needs a value (try --help)", names[which]);
+            if (!eq)
+                ++i;
+            switch (which) {
+            case 0:
+                o.seed = count_arg("--seed", value, 0, UINT64_MAX);
+                break;
+            case 1:
+                o.frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
+                break;
+            case 2:
+                o.steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
+                break;
+            case 3:
+                if (!*value)
+                    die(EXIT_USAGE, "--out needs a directory name");
+                o.out_dir = value;
+                break;
+            case 4:
+                if (!*value)
+                    die(EXIT_USAGE, "--stats needs a file name");
+                o.stats_path = value;
+                break;
+            default:
+                o.broadphase = broadphase_arg(value);
+            }
+            continue;
+        }
+        if (a[0] == '-' && a[1] != '\0' && !(a[1] >= '0' && a[1] <= '9') && a[1] != '.')
+            die(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+        if (npos == 2)
+            die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
+        positional[npos++] = a;
+    }
+    if (npos < 2)
+        die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
+            npos == 0 ? "N and R" : "R");
+    o.n = (size_t)count_arg("N", positional[0], 1, UINT64_MAX);
+    o.radius = radius_arg(positional[1]);
+    return o;
+}
+
+static void check_request(const options *o, const ds_params *p)
+{
+    unsigned warnings = 0;
+    ds_status st = ds_check_params(p, &warnings);
+    size_t bytes = 0;
+    if (st == DS_ERR_NOMEM || (st != DS_ERR_ARG && ds_memory_needed(p, &bytes) != DS_OK))
+        die(EXIT_USAGE, "N = %zu disks cannot be held in memory", o->n);
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && page > 0 && (double)bytes > 0.8 * (double)pages * (double)page)
+        die(EXIT_USAGE, "N = %zu disks need %.1f GiB, more than this machine's %.1f GiB", o->n,
+            (double)bytes / 1073741824.0, (double)pages * (double)page / 1073741824.0);
+    if (st == DS_ERR_PLACEMENT)
+        die(EXIT_RUN,
+            "N = %zu disks of R = %g cover %.3f of the box; random placement cannot exceed "
+            "%.2f",
+            o->n, o->radius, (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6,
+            DS_MAX_AREA_FRACTION);
+    if (st != DS_OK)
+        die(EXIT_USAGE, "invalid parameters: %s", ds_status_str(st));
+    if (warnings & DS_WARN_TUNNELING)
+        fprintf(stderr,
+                "disks: warning: R = %g is small for speeds near %g and dt = %g: a fast pair "
+                "can pass through each other within one step and miss its collision\n",
+                o->radius, 100.0, 0.001);
+}
+
+static void make_dirs(const char *path)
+{
+    char buf[4096];
+    size_t len = strlen(path);
+    if (len >= sizeof buf)
+        die(EXIT_USAGE, "--out path is too long");
+    memcpy(buf, path, len + 1);
+    for (size_t k = 1; k <= len; ++k) {
+        if (buf[k] != '/' && buf[k] != '\0')
+            continue;
+        char saved = buf[k];
+        buf[k] = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            die(EXIT_RUN, "cannot create directory '%s': %s", buf, strerror(errno));
+        buf[k] = saved;
+    }
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
+        die(EXIT_RUN, "'%s' is not a directory", path);
+}
+
+/* Writes len bytes to dir/name via a temporary file and rename(), so a
+ * reader never sees a half-written file. Returns 0 or sets *why. */
+static int write_file_atomic(const char *dir, const char *name, const char *data, size_t len,
+                             const char **why)
+{
+    char final_path[4200], tmp_path[4200];
+    snprintf(final_path, sizeof final_path, "%s/%s", dir, name);
+    snprintf(tmp_path, sizeof tmp_path, "%s/.%s.XXXXXX", dir, name);
+    int fd = mkstemp(tmp_path);
+    if (fd < 0) {
+        *why = strerror(errno);
+        return -1;
+    }
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+        *why = strerror(errno);
+        close(fd);
+        unlink(tmp_path);
+        return -1;
+    }
+    fchmod(fd, 0644);
+    size_t put = fwrite(data, 1, len, f);
+    int failed = put != len || fflush(f) != 0 || ferror(f);
+    int saved = errno;
+    if (fclose(f) != 0 && !failed) {
+        failed = 1;
+        saved = errno;
+    }
+    if (!failed && rename(tmp_path, final_path) != 0) {
+        failed = 1;
+        saved = errno;
+    }
+    if (failed) {
+        unlink(tmp_path);
+        *why = strerror(saved ? saved : EIO);
+        return -1;
+    }
+    return 0;
+}
+
+typedef struct progress {
+    int enabled;
+    double started;
+} progress;
+
+static void progress_show(const progress *pr, long frame, long frames, uint64_t steps)
+{
+    if (!pr->enabled)
+        return;
+    double elapsed = ds_now() - pr->started;
+    double rate = elapsed > 0.0 ? (double)steps / elapsed : 0.0;
+    double left = frame > 0 ? elapsed * (double)(frames - frame) / (double)frame : 0.0;
+    fprintf(stderr, "\rframe %ld of %ld  %.0f steps/s  %.0f s left  ", frame, frames, rate,
+            left);
+}
+
+static void progress_clear(const progress *pr)
+{
+    if (pr->enabled)
+        fputs("\r\033[K", stderr);
+}
+
+static void stats_row(char **buf, size_t *len, size_t *cap, long frame, const ds_sim *sim)
+{
+    char row[256];
+    double px, py;
+    ds_momentum(sim, &px, &py);
+    int l = snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g\n", frame,
+                     ds_time(sim), ds_kinetic_energy(sim), px, py,
+                     (unsigned long long)ds_collision_count(sim),
+                     (unsigned long long)ds_wall_count(sim), ds_pressure(sim));
+    if (*len + (size_t)l + 1 > *cap) {
+        size_t ncap = *cap * 2 + sizeof row;
+        char *grown = realloc(*buf, ncap);
+        if (!grown)
+            die(EXIT_RUN, "out of memory for --stats");
+        *buf = grown;
+        *cap = ncap;
+    }
+    memcpy(*buf + *len, row, (size_t)l);
+    *len += (size_t)l;
+}
+
+int main(int argc, char **argv)
+{
+    options o = parse_args(argc, argv);
+    ds_params p = ds_default_params(o.n, o.radius);
+    p.seed = o.seed;
+    p.broadphase = o.broadphase;
+    check_request(&o, &p);
+    make_dirs(o.out_dir);
+
+    ds_sim *sim = NULL;
+    ds_status st = ds_create(&p, &sim);
+    if (st == DS_ERR_PLACEMENT)
+        die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s",
+            o.n, o.radius, (unsigned long long)o.seed, "try fewer or smaller disks");
+    if (st != DS_OK)
+        die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
+    if (!o.quiet)
+        printf("disks: N = %zu, R = %g, seed = %llu, broad phase = %s, %ld frames x %llu steps "
+               "-> %s\n",
+               o.n, o.radius, (unsigned long long)o.seed,
+               ds_broadphase_name(ds_broadphase_used(sim)), o.frames,
+               (unsigned long long)o.steps_per_frame, o.out_dir);
+    fflush(stdout);
+
+    size_t cap = ds_frame_size(sim, o.velocities), len = 0;
+    char *buf = malloc(cap ? cap : 1);
+    char *stats = NULL;
+    size_t stats_len = 0, stats_cap = 0;
+    if (!buf)
+        die(EXIT_RUN, "out of memory for the frame buffer");
+    if (o.stats_path) {
+        const char *header =
+            "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure\n";
+        stats_cap = 4096;
+        stats = malloc(stats_cap);
+        if (!stats)
+            die(EXIT_RUN, "out of memory for --stats");
+        stats_len = strlen(header);
+        memcpy(stats, header, stats_len);
+    }
+
+    progress pr = {!o.quiet && isatty(STDERR_FILENO), ds_now()};
+    double sim_seconds = 0.0, out_seconds = 0.0;
+    for (long frame = 0; frame < o.frames; ++frame) {
+        if (frame > 0) {
+            double t0 = ds_now();
+            ds_run(sim, o.steps_per_frame);
+            sim_seconds += ds_now() - t0;
+        }
+        double t0 = ds_now();
+        char name[32];
+        const char *why = "";
+        snprintf(name, sizeof name, "frame_%04ld.txt", frame);
+        ds_format_frame(sim, o.velocities, buf, cap, &len);
+        if (write_file_atomic(o.out_dir, name, buf, len, &why) != 0) {
+            progress_clear(&pr);
+            die(EXIT_RUN, "cannot write %s/%s: %s", o.out_dir, name, why);
+        }
+        if (stats)
+            stats_row(&stats, &stats_len, &stats_cap, frame, sim);
+        out_seconds += ds_now() - t0;
+        progress_show(&pr, frame + 1, o.frames, ds_steps(sim));
+    }
+    progress_clear(&pr);
+    if (stats) {
+        const char *why = "";
+        const char *slash = strrchr(o.stats_path, '/');
+        char dir[4096];
+        const char *base = slash ? slash + 1 : o.stats_path;
+        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - o.stats_path) : 1,
+                 slash ? o.stats_path : ".");
+        if (slash == o.stats_path)
+            snprintf(dir, sizeof dir, "/");
+        if (!*base || write_file_atomic(dir, base, stats, stats_len, &why) != 0)
+            die(EXIT_RUN, "cannot write %s: %s", o.stats_path, *base ? why : "not a file name");
+    }
+    if (!o.quiet) {
+        printf("collision processing time: %.6f s (sorting, pruning, testing and resolving "
+               "pairs over %llu steps)\n",
+               ds_collision_seconds(sim), (unsigned long long)ds_steps(sim));
+        printf("disk-disk collisions: %llu, wall reflections: %llu\n",
+               (unsigned long long)ds_collision_count(sim),
+               (unsigned long long)ds_wall_count(sim));
+        printf("simulation %.3f s, output %.3f s\n", sim_seconds, out_seconds);
+    }
+    free(buf);
+    free(stats);
+    ds_destroy(sim);
+    return 0;
+}

@@ -1,0 +1,298 @@
+/* The simulation: parameters, creation, the step loop, accessors and
+ * observables. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim_internal.h"
+
+/* Bytes per disk: x, y, vx, vy, id, slot, plus the placement grid's link. */
+#define BYTES_PER_DISK (4 * sizeof(double) + 3 * sizeof(uint32_t))
+
+ds_params ds_default_params(size_t n, double radius)
+{
+    ds_params p;
+    memset(&p, 0, sizeof p);
+    p.n = n;
+    p.radius = radius;
+    p.seed = DS_DEFAULT_SEED;
+    p.broadphase = DS_AUTO;
+    return p;
+}
+
+typedef struct resolved {
+    double box, speed, dt;
+} resolved;
+
+static resolved resolve_defaults(const ds_params *p)
+{
+    resolved r;
+    r.box = p->box == 0.0 ? 1000.0 : p->box;
+    r.speed = p->speed == 0.0 ? 100.0 : p->speed;
+    r.dt = p->dt == 0.0 ? 0.001 : p->dt;
+    return r;
+}
+
+ds_status ds_check_params(const ds_params *p, unsigned *warnings)
+{
+    if (warnings)
+        *warnings = 0;
+    if (!p)
+        return DS_ERR_ARG;
+    resolved r = resolve_defaults(p);
+    /* Bounds keep every coordinate far below 2^53 so frames print exactly. */
+    if (!(r.box > 0.0 && r.box <= 1e9) || !(r.speed > 0.0 && r.speed <= 1e9) ||
+        !(r.dt > 0.0 && r.dt <= 1.0))
+        return DS_ERR_ARG;
+    if (p->n < 1 || !(p->radius > 0.0) || !(p->radius < 0.5 * r.box))
+        return DS_ERR_ARG;
+    if ((unsigned)p->broadphase > (unsigned)DS_AUTO)
+        return DS_ERR_ARG;
+    /* Ids are 32-bit; beyond that no machine this runs on has the memory. */
+    if (p->n >= UINT32_MAX || p->n > (SIZE_MAX - 64) / BYTES_PER_DISK)
+        return DS_ERR_NOMEM;
+    double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box);
+    if (fraction > DS_MAX_AREA_FRACTION)
+        return DS_ERR_PLACEMENT;
+    if (warnings && 2.0 * 3.0 * r.speed * r.dt > 4.0 * p->radius)
+        *warnings |= DS_WARN_TUNNELING;
+    return DS_OK;
+}
+
+ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
+{
+    ds_status st = ds_check_params(params, NULL);
+    if (st == DS_ERR_PLACEMENT)
+        st = DS_OK; /* memory is still a meaningful answer */
+    if (st != DS_OK)
+        return st;
+    *bytes = (params->n + 1) * BYTES_PER_DISK;
+    return DS_OK;
+}
+
+static ds_broadphase choose_broadphase(const ds_params *p, double box)
+{
+    if (p->broadphase != DS_AUTO)
+        return p->broadphase;
+    /* Plain SAP tests ~ n * 2R / box candidates per disk (those within 2R
+     * in x, anywhere in y); strips test a constant ~6 n h R / box^2. Past a
+     * few dozen candidates per disk, strips win (see `make bench`). */
+    double per_disk = (double)p->n * 2.0 * p->radius / box;
+    return per_disk > 24.0 ? DS_SAP_STRIPS : DS_SAP;
+}
+
+static void format_radius(char *out, size_t cap, double r)
+{
+    /* Shortest %.Ng that reads back as the same double: 5 -> "5". */
+    for (int digits = 1; digits <= 17; ++digits) {
+        snprintf(out, cap, "%.*g", digits, r);
+        if (strtod(out, NULL) == r)
+            return;
+    }
+}
+
+ds_status ds_create(const ds_params *params, ds_sim **out)
+{
+    if (!out)
+        return DS_ERR_ARG;
+    *out = NULL;
+    ds_status st = ds_check_params(params, NULL);
+    if (st != DS_OK)
+        return st;
+    resolved r = resolve_defaults(params);
+
+    ds_sim *sim = calloc(1, sizeof *sim);
+    if (!sim)
+        return DS_ERR_NOMEM;
+    const size_t n = params->n, cap = n + 1;
+    sim->n = n;
+    sim->radius = params->radius;
+    sim->box = r.box;
+    sim->speed = r.speed;
+    sim->dt = r.dt;
+    sim->broadphase = choose_broadphase(params, r.box);
+    format_radius(sim->radius_text, sizeof sim->radius_text, sim->radius);
+
+    sim->x = malloc(cap * sizeof(double));
+    sim->y = malloc(cap * sizeof(double));
+    sim->vx = malloc(cap * sizeof(double));
+    sim->vy = malloc(cap * sizeof(double));
+    sim->id = malloc(cap * sizeof(uint32_t));
+    sim->slot = malloc(cap * sizeof(uint32_t));
+    if (!sim->x || !sim->y || !sim->vx || !sim->vy || !sim->id || !sim->slot) {
+        ds_destroy(sim);
+        return DS_ERR_NOMEM;
+    }
+    st = ds_place_disks(sim, params->seed);
+    if (st != DS_OK) {
+        ds_destroy(sim);
+        return st;
+    }
+    for (size_t k = 0; k < n; ++k)
+        sim->id[k] = (uint32_t)k;
+    /* Slot n is the sweep sentinel: never inside any x window. */
+    sim->x[n] = INFINITY;
+    sim->y[n] = INFINITY;
+    sim->vx[n] = sim->vy[n] = 0.0;
+    sim->id[n] = UINT32_MAX;
+
+    if (sim->broadphase == DS_SAP_STRIPS) {
+        st = ds_strips_create(sim);
+        if (st != DS_OK) {
+            ds_destroy(sim);
+            return st;
+        }
+    } else if (sim->broadphase == DS_SAP) {
+        ds_bp_insertion_sort_x(sim);
+    }
+    ds_rebuild_slots(sim);
+    ds_timer_reset(&sim->collision_timer);
+    *out = sim;
+    return DS_OK;
+}
+
+void ds_destroy(ds_sim *sim)
+{
+    if (!sim)
+        return;
+    ds_strips_destroy(sim);
+    free(sim->x);
+    free(sim->y);
+    free(sim->vx);
+    free(sim->vy);
+    free(sim->id);
+    free(sim->slot);
+    free(sim);
+}
+
+void ds_rebuild_slots(ds_sim *sim)
+{
+    for (size_t k = 0; k < sim->n; ++k)
+        sim->slot[sim->id[k]] = (uint32_t)k;
+}
+
+static void step_once(ds_sim *sim)
+{
+    ds_move_and_reflect(sim);
+    ds_timer_start(&sim->collision_timer);
+    sim->pairs_tested += ds_bp_find_pairs(sim, ds_resolve_pair, NULL);
+    ds_timer_stop(&sim->collision_timer);
+    ++sim->steps;
+}
+
+void ds_run(ds_sim *sim, uint64_t steps)
+{
+    if (!sim || steps == 0)
+        return;
+    for (uint64_t s = 0; s < steps; ++s)
+        step_once(sim);
+    ds_rebuild_slots(sim);
+}
+
+void ds_step(ds_sim *sim) { ds_run(sim, 1); }
+
+size_t ds_count(const ds_sim *sim) { return sim ? sim->n : 0; }
+double ds_radius(const ds_sim *sim) { return sim ? sim->radius : 0.0; }
+double ds_box(const ds_sim *sim) { return sim ? sim->box : 0.0; }
+double ds_dt(const ds_sim *sim) { return sim ? sim->dt : 0.0; }
+/* steps * dt rather than a running sum, so time carries no rounding drift. */
+double ds_time(const ds_sim *sim) { return sim ? (double)sim->steps * sim->dt : 0.0; }
+uint64_t ds_steps(const ds_sim *sim) { return sim ? sim->steps : 0; }
+ds_broadphase ds_broadphase_used(const ds_sim *sim) { return sim ? sim->broadphase : DS_SAP; }
+
+const char *ds_broadphase_name(ds_broadphase bp)
+{
+    switch (bp) {
+    case DS_SAP:
+        return "sap";
+    case DS_BRUTE_FORCE:
+        return "brute";
+    case DS_SAP_STRIPS:
+        return "strips";
+    case DS_AUTO:
+        return "auto";
+    }
+    return "unknown";
+}
+
+ds_disk ds_get(const ds_sim *sim, size_t i)
+{
+    ds_disk d = {0.0, 0.0, 0.0, 0.0};
+    if (!sim || i >= sim->n)
+        return d;
+    size_t k = sim->slot[i];
+    d.x = sim->x[k];
+    d.y = sim->y[k];
+    d.vx = sim->vx[k];
+    d.vy = sim->vy[k];
+    return d;
+}
+
+ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
+{
+    if (!sim || i >= sim->n)
+        return DS_ERR_ARG;
+    const double lo = sim->radius, hi = sim->box - sim->radius;
+    if (!(d.x >= lo && d.x <= hi && d.y >= lo && d.y <= hi) || !isfinite(d.vx) ||
+        !isfinite(d.vy) || fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
+        return DS_ERR_ARG;
+    size_t k = sim->slot[i];
+    sim->x[k] = d.x;
+    sim->y[k] = d.y;
+    sim->vx[k] = d.vx;
+    sim->vy[k] = d.vy;
+    /* The broad phase re-sorts on the next step; insertion sort copes with
+     * any displacement, just more slowly for a large one. */
+    return DS_OK;
+}
+
+double ds_collision_seconds(const ds_sim *sim)
+{
+    return sim ? ds_timer_seconds(&sim->collision_timer) : 0.0;
+}
+uint64_t ds_collision_count(const ds_sim *sim) { return sim ? sim->collisions : 0; }
+uint64_t ds_pairs_tested(const ds_sim *sim) { return sim ? sim->pairs_tested : 0; }
+
+double ds_kinetic_energy(const ds_sim *sim)
+{
+    if (!sim)
+        return 0.0;
+    double e = 0.0;
+    for (size_t k = 0; k < sim->n; ++k)
+        e += sim->vx[k] * sim->vx[k] + sim->vy[k] * sim->vy[k];
+    return 0.5 * e;
+}
+
+void ds_momentum(const ds_sim *sim, double *px, double *py)
+{
+    double sx = 0.0, sy = 0.0;
+    for (size_t k = 0; sim && k < sim->n; ++k) {
+        sx += sim->vx[k];
+        sy += sim->vy[k];
+    }
+    if (px)
+        *px = sx;
+    if (py)
+        *py = sy;
+}
+
+uint64_t ds_wall_count(const ds_sim *sim) { return sim ? sim->wall_count : 0; }
+double ds_wall_impulse(const ds_sim *sim) { return sim ? sim->wall_impulse : 0.0; }
+
+double ds_pressure(const ds_sim *sim)
+{
+    if (!sim || sim->steps == sim->observables_since_step)
+        return 0.0;
+    double elapsed = (double)(sim->steps - sim->observables_since_step) * sim->dt;
+    double perimeter = 4.0 * (sim->box - 2.0 * sim->radius);
+    return sim->wall_impulse / (elapsed * perimeter);
+}
+
+void ds_reset_observables(ds_sim *sim)
+{
+    if (!sim)
+        return;
+    sim->wall_count = 0;
+    sim->wall_impulse = 0.0;
+    sim->observables_since_step = sim->steps;
+}

@@ -1,0 +1,65 @@
+/* The simulation state and the internal interfaces between its parts.
+ * Not installed: nothing here is part of the public API. */
+#ifndef DS_SIM_INTERNAL_H
+#define DS_SIM_INTERNAL_H
+
+#include "disk_sim.h"
+
+/* Structure of arrays, stored physically in broad-phase order (x order for
+ * DS_SAP) so that the sweep reads memory front to back. id[k] is the
+ * generation index of the disk in slot k; slot[i] is its inverse, valid
+ * between API calls (rebuilt at the end of ds_run). Every array has one
+ * element past n: DS_SAP keeps x[n] = +infinity there as a sweep sentinel. */
+struct ds_sim {
+    size_t n;
+    double radius, box, speed, dt;
+    ds_broadphase broadphase; /* resolved, never DS_AUTO */
+
+    double *x, *y, *vx, *vy;
+    uint32_t *id;
+    uint32_t *slot;
+
+    /* DS_SAP_STRIPS state, NULL otherwise (see broad_phase_strips.c). */
+    struct ds_strips *strips;
+
+    uint64_t steps;
+    ds_timer collision_timer;
+    uint64_t collisions;
+    uint64_t pairs_tested;
+
+    uint64_t wall_count;
+    double wall_impulse;
+    uint64_t observables_since_step; /* step count at the last reset */
+
+    char radius_text[32]; /* R as written in frames, shortest round trip */
+};
+
+/* Called for each overlapping pair (centre distance < 2R) the broad phase
+ * finds, with physical indices a != b. */
+typedef void (*ds_pair_fn)(ds_sim *sim, size_t a, size_t b, void *ctx);
+
+/* Broad phase: brings the arrays into the order the sweep needs (may permute
+ * slots; slot[] is then stale until ds_rebuild_slots), then reports every
+ * overlapping pair exactly once. Returns the number of narrow-phase tests. */
+uint64_t ds_bp_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
+
+/* Sorts slots 0..n-1 by x with insertion sort (all arrays move together). */
+void ds_bp_insertion_sort_x(ds_sim *sim);
+
+/* DS_SAP_STRIPS lifecycle (broad_phase_strips.c). */
+ds_status ds_strips_create(ds_sim *sim);
+void ds_strips_destroy(ds_sim *sim);
+uint64_t ds_strips_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
+
+/* Collision response (collision.c). */
+void ds_resolve_pair(ds_sim *sim, size_t a, size_t b, void *ctx);
+void ds_move_and_reflect(ds_sim *sim);
+
+/* Placement (placement.c): fills x, y, vx, vy in generation order. */
+ds_status ds_place_disks(ds_sim *sim, uint64_t seed);
+
+void ds_rebuild_slots(ds_sim *sim);
+
+#define DS_TWO_PI 6.28318530717958647692
+
+#endif
