@@ -1,0 +1,144 @@
+/* Initial state: inside the box, no overlaps, speed 100, fails fast. */
+#include "test_util.h"
+
+static void test_placed_disks_are_inside_and_disjoint(void **state)
+{
+    (void)state;
+    /* 2000 disks of R = 5 cover 0.157 of the box: dense enough that the
+     * grid rejects many draws, small enough for an all-pairs check. */
+    const size_t n = 2000;
+    const double r = 5.0;
+    ds_sim *sim = test_create(n, r, 11, DS_SAP);
+    for (size_t i = 0; i < n; ++i) {
+        ds_disk a = ds_get(sim, i);
+        assert_true(a.x >= r && a.x < 1000.0 - r);
+        assert_true(a.y >= r && a.y < 1000.0 - r);
+        for (size_t j = i + 1; j < n; ++j) {
+            ds_disk b = ds_get(sim, j);
+            double dx = a.x - b.x, dy = a.y - b.y;
+            assert_true(dx * dx + dy * dy >= 4.0 * r * r);
+        }
+    }
+    ds_destroy(sim);
+}
+
+static void test_initial_speed_is_100_in_uniform_directions(void **state)
+{
+    (void)state;
+    const size_t n = 20000;
+    ds_sim *sim = test_create(n, 1.0, 5, DS_SAP);
+    double sum_cos = 0.0, sum_sin = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        ds_disk d = ds_get(sim, i);
+        double speed = sqrt(d.vx * d.vx + d.vy * d.vy);
+        assert_true(fabs(speed - 100.0) < 1e-12 * 100.0);
+        sum_cos += d.vx / 100.0;
+        sum_sin += d.vy / 100.0;
+    }
+    /* Uniform angle: cos and sin have mean 0, variance 1/2, so each mean
+     * over n has sd sqrt(0.5/n) = 0.005; 6 sd = 0.03. */
+    assert_true(fabs(sum_cos / n) < 0.03);
+    assert_true(fabs(sum_sin / n) < 0.03);
+    ds_destroy(sim);
+}
+
+static void test_same_seed_places_the_same_disks(void **state)
+{
+    (void)state;
+    ds_sim *a = test_create(500, 4.0, 77, DS_SAP);
+    ds_sim *b = test_create(500, 4.0, 77, DS_BRUTE_FORCE);
+    ds_sim *c = test_create(500, 4.0, 78, DS_SAP);
+    int differs = 0;
+    for (size_t i = 0; i < 500; ++i) {
+        ds_disk da = ds_get(a, i), db = ds_get(b, i), dc = ds_get(c, i);
+        assert_memory_equal(&da, &db, sizeof da);
+        differs |= da.x != dc.x;
+    }
+    assert_true(differs);
+    ds_destroy(a);
+    ds_destroy(b);
+    ds_destroy(c);
+}
+
+static void test_large_placement_completes(void **state)
+{
+    (void)state;
+    /* 10^5 disks at area fraction 0.3: all-pairs placement would take
+     * minutes; the grid makes it linear. Only completion is asserted. */
+    const size_t n = 100000;
+    double r = sqrt(0.3 * 1e6 / (3.141592653589793 * (double)n));
+    ds_sim *sim = test_create(n, r, 3, DS_BRUTE_FORCE);
+    assert_int_equal(ds_count(sim), n);
+    ds_destroy(sim);
+}
+
+static void test_impossible_packing_is_refused_at_once(void **state)
+{
+    (void)state;
+    /* 5 disks of R = 200 would cover 0.63 of the box, beyond the ~0.547
+     * jamming limit of random sequential placement. */
+    ds_params p = ds_default_params(5, 200.0);
+    char dummy;
+    ds_sim *sim = (ds_sim *)(void *)&dummy; /* must be overwritten with NULL */
+    assert_int_equal(ds_check_params(&p, NULL), DS_ERR_PLACEMENT);
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
+    assert_null(sim);
+}
+
+static void test_unreachable_packing_fails_instead_of_hanging(void **state)
+{
+    (void)state;
+    /* Two disks of R = 290 cover only 0.53 of the box, but their centres
+     * live in a 420-wide square and must be 580 apart: only near opposite
+     * corners. Once the first lands elsewhere, no draw can succeed and the
+     * per-disk draw budget must end the search with an error. */
+    ds_params p = ds_default_params(2, 290.0);
+    p.seed = 1;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
+    assert_null(sim);
+}
+
+static void test_bad_parameters_are_rejected(void **state)
+{
+    (void)state;
+    ds_sim *sim = NULL;
+    ds_params p = ds_default_params(10, 5.0);
+    const double bad_radius[] = {0.0, -1.0, 500.0, 600.0, NAN, INFINITY};
+    for (size_t k = 0; k < sizeof bad_radius / sizeof bad_radius[0]; ++k) {
+        p.radius = bad_radius[k];
+        assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+        assert_null(sim);
+    }
+    p = ds_default_params(0, 5.0);
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    p = ds_default_params(10, 5.0);
+    p.box = -1.0;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    p = ds_default_params(10, 5.0);
+    p.dt = NAN;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    p = ds_default_params(10, 5.0);
+    p.broadphase = (ds_broadphase)42;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    assert_int_equal(ds_create(NULL, &sim), DS_ERR_ARG);
+    p = ds_default_params(10, 5.0);
+    assert_int_equal(ds_create(&p, NULL), DS_ERR_ARG);
+    p = ds_default_params((size_t)1 << 40, 1e-6);
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_NOMEM);
+    assert_null(sim);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_placed_disks_are_inside_and_disjoint),
+        cmocka_unit_test(test_initial_speed_is_100_in_uniform_directions),
+        cmocka_unit_test(test_same_seed_places_the_same_disks),
+        cmocka_unit_test(test_large_placement_completes),
+        cmocka_unit_test(test_impossible_packing_is_refused_at_once),
+        cmocka_unit_test(test_unreachable_packing_fails_instead_of_hanging),
+        cmocka_unit_test(test_bad_parameters_are_rejected),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,173 @@
+/* The public API contract: defaults, generation order, ds_set, time,
+ * independence of simulations, NULL safety. */
+#include "test_util.h"
+
+static void test_default_params_are_the_exercise(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(400, 5.0);
+    assert_int_equal(p.n, 400);
+    assert_true(p.radius == 5.0);
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_true(ds_box(sim) == 1000.0);
+    assert_true(ds_dt(sim) == 0.001);
+    assert_true(ds_radius(sim) == 5.0);
+    assert_int_equal(ds_count(sim), 400);
+    assert_true(ds_broadphase_used(sim) != DS_AUTO);
+    assert_true(ds_time(sim) == 0.0);
+    ds_destroy(sim);
+}
+
+static void test_time_is_steps_times_dt(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(10, 5.0, 1, DS_AUTO);
+    ds_run(sim, 12345);
+    ds_step(sim);
+    assert_int_equal(ds_steps(sim), 12346);
+    assert_true(ds_time(sim) == 12346 * 0.001);
+    ds_run(sim, 0); /* no-op */
+    assert_int_equal(ds_steps(sim), 12346);
+    ds_destroy(sim);
+}
+
+static void test_get_follows_each_disk_through_the_sort(void **state)
+{
+    (void)state;
+    /* Free flight between collisions: where no collision happened, each
+     * disk must be exactly where its own velocity took it, whatever order
+     * the broad phase put the arrays in. Dilute gas, one step at a time. */
+    const size_t n = 200;
+    ds_sim *sim = test_create(n, 1.0, 4, DS_SAP);
+    ds_disk before[200];
+    for (int s = 0; s < 200; ++s) {
+        for (size_t i = 0; i < n; ++i)
+            before[i] = ds_get(sim, i);
+        uint64_t walls = ds_wall_count(sim), hits = ds_collision_count(sim);
+        ds_step(sim);
+        if (ds_wall_count(sim) != walls || ds_collision_count(sim) != hits)
+            continue;
+        for (size_t i = 0; i < n; ++i) {
+            ds_disk d = ds_get(sim, i);
+            assert_true(d.x == before[i].x + before[i].vx * 0.001);
+            assert_true(d.vx == before[i].vx && d.vy == before[i].vy);
+        }
+    }
+    ds_destroy(sim);
+}
+
+static void test_set_replaces_one_disk_and_checks_bounds(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(20, 5.0, 1, DS_SAP);
+    ds_run(sim, 10);
+    ds_disk d = {5.0, 995.0, -3.0, 4.0}; /* on the band's corner: allowed */
+    assert_int_equal(ds_set(sim, 7, d), DS_OK);
+    ds_disk got = ds_get(sim, 7);
+    assert_memory_equal(&got, &d, sizeof d);
+
+    ds_disk outside = {4.9, 500.0, 0.0, 0.0};
+    assert_int_equal(ds_set(sim, 7, outside), DS_ERR_ARG);
+    ds_disk nan_v = {500.0, 500.0, NAN, 0.0};
+    assert_int_equal(ds_set(sim, 7, nan_v), DS_ERR_ARG);
+    assert_int_equal(ds_set(sim, 20, d), DS_ERR_ARG);
+    assert_int_equal(ds_set(NULL, 0, d), DS_ERR_ARG);
+    got = ds_get(sim, 7);
+    assert_memory_equal(&got, &d, sizeof d); /* failed sets changed nothing */
+
+    ds_disk zero = ds_get(sim, 20); /* out of range reads as zeros */
+    assert_true(zero.x == 0.0 && zero.vx == 0.0);
+    ds_destroy(sim);
+}
+
+static void test_two_simulations_do_not_interfere(void **state)
+{
+    (void)state;
+    /* Stepping two simulations interleaved gives the same result as
+     * stepping each alone: no shared state. */
+    ds_sim *a = test_create(300, 5.0, 8, DS_SAP);
+    ds_sim *b = test_create(300, 5.0, 9, DS_SAP);
+    ds_sim *ref = test_create(300, 5.0, 8, DS_SAP);
+    for (int s = 0; s < 50; ++s) {
+        ds_run(a, 20);
+        ds_run(b, 20);
+    }
+    ds_run(ref, 1000);
+    for (size_t i = 0; i < 300; ++i) {
+        ds_disk da = ds_get(a, i), dr = ds_get(ref, i);
+        assert_memory_equal(&da, &dr, sizeof da);
+    }
+    assert_int_equal(ds_collision_count(a), ds_collision_count(ref));
+    ds_destroy(a);
+    ds_destroy(b);
+    ds_destroy(ref);
+}
+
+static void test_collision_timer_and_counters_advance(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(400, 5.0, 1, DS_SAP);
+    assert_true(ds_collision_seconds(sim) == 0.0);
+    ds_run(sim, 5000);
+    assert_true(ds_collision_seconds(sim) > 0.0);
+    assert_true(ds_collision_count(sim) > 0);
+    assert_true(ds_pairs_tested(sim) > 0);
+    ds_destroy(sim);
+}
+
+static void test_null_simulation_is_harmless(void **state)
+{
+    (void)state;
+    ds_destroy(NULL);
+    ds_step(NULL);
+    ds_run(NULL, 10);
+    assert_int_equal(ds_count(NULL), 0);
+    assert_true(ds_time(NULL) == 0.0);
+    assert_int_equal(ds_write_frame(NULL, stdout), DS_ERR_ARG);
+    double px = 1.0, py = 1.0;
+    ds_momentum(NULL, &px, &py);
+    assert_true(px == 0.0 && py == 0.0);
+}
+
+static void test_every_status_has_a_description(void **state)
+{
+    (void)state;
+    for (int s = DS_OK; s <= DS_ERR_FORMAT; ++s) {
+        const char *text = ds_status_str((ds_status)s);
+        assert_non_null(text);
+        assert_true(strlen(text) > 0);
+        assert_string_not_equal(text, "unknown status");
+    }
+    assert_string_equal(ds_version(), DS_VERSION_STRING);
+}
+
+static void test_tunneling_warning_for_tiny_radius(void **state)
+{
+    (void)state;
+    /* Head-on at 3x the initial speed the gap closes by 2*300*dt = 0.6 per
+     * step; the overlap band is 4R wide, so R below 0.15 can be skipped. */
+    unsigned w = 0;
+    ds_params p = ds_default_params(100, 0.1);
+    assert_int_equal(ds_check_params(&p, &w), DS_OK);
+    assert_true(w & DS_WARN_TUNNELING);
+    p.radius = 5.0;
+    assert_int_equal(ds_check_params(&p, &w), DS_OK);
+    assert_int_equal(w, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_default_params_are_the_exercise),
+        cmocka_unit_test(test_time_is_steps_times_dt),
+        cmocka_unit_test(test_get_follows_each_disk_through_the_sort),
+        cmocka_unit_test(test_set_replaces_one_disk_and_checks_bounds),
+        cmocka_unit_test(test_two_simulations_do_not_interfere),
+        cmocka_unit_test(test_collision_timer_and_counters_advance),
+        cmocka_unit_test(test_null_simulation_is_harmless),
+        cmocka_unit_test(test_every_status_has_a_description),
+        cmocka_unit_test(test_tunneling_warning_for_tiny_radius),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
