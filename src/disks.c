@@ -58,11 +58,18 @@ static void die(int code, const char *fmt, ...)
     exit(code);
 }
 
+/* strtod also reads hexadecimal ("0x10"), "nan" and "infinity": a number
+ * on our command line is decimal, so anything else is refused up front. */
+static int is_decimal_text(const char *s)
+{
+    return *s && strspn(s, "0123456789.eE+-") == strlen(s);
+}
+
 /* A non-negative integer: digits only, or an exact integer in decimal
  * scientific notation (1e5), no sign, no trailing text. */
 static int parse_count(const char *s, uint64_t max, uint64_t *out)
 {
-    if (!*s || *s == '-' || *s == '+' || *s == ' ')
+    if (!is_decimal_text(s) || *s == '-' || *s == '+')
         return 0;
     char *end;
     errno = 0;
@@ -99,9 +106,11 @@ static double radius_arg(const char *s)
     char *end;
     errno = 0;
     double r = strtod(s, &end);
-    if (end == s || *end != '\0' || *s == ' ')
-        die(EXIT_USAGE, "R must be a number, got '%s'", s);
-    if (!isfinite(r) || errno == ERANGE)
+    if (!is_decimal_text(s) || end == s || *end != '\0')
+        die(EXIT_USAGE, "R must be a decimal number, got '%s'", s);
+    /* ERANGE on underflow (1e-400) leaves r tiny: the range check below
+     * names it better than "not finite". */
+    if (!isfinite(r) || (errno == ERANGE && fabs(r) > 1.0))
         die(EXIT_USAGE, "R must be a finite number, got '%s'", s);
     if (!(r > 0.0 && r < 500.0))
         die(EXIT_USAGE, "R must be > 0 and < 500 (half the box), got '%s'", s);
@@ -291,6 +300,55 @@ static int write_file_atomic(const char *dir, const char *name, const char *data
     return 0;
 }
 
+/* --stats may name a device or a pipe (/dev/stdout, /dev/full, a FIFO):
+ * renaming a temporary over it would replace the device node itself, so
+ * such a path is written in place, with the same error checks. */
+static int is_special_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+static int write_file_in_place(const char *path, const char *data, size_t len,
+                               const char **why)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+        *why = strerror(errno);
+        return -1;
+    }
+    size_t put = fwrite(data, 1, len, f);
+    int failed = put != len || fflush(f) != 0 || ferror(f);
+    int saved = errno;
+    if (fclose(f) != 0 && !failed) {
+        failed = 1;
+        saved = errno;
+    }
+    if (failed)
+        *why = strerror(saved ? saved : EIO);
+    return failed ? -1 : 0;
+}
+
+/* Splits --stats into directory and base name, refusing at once (before
+ * any simulation time is spent) a path that cannot become a file. */
+static const char *stats_split(const char *path, char *dir, size_t dir_cap)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    if (!slash)
+        snprintf(dir, dir_cap, ".");
+    else if (slash == path)
+        snprintf(dir, dir_cap, "/");
+    else
+        snprintf(dir, dir_cap, "%.*s", (int)(slash - path), path);
+    struct stat st;
+    if (!*base || (stat(path, &st) == 0 && S_ISDIR(st.st_mode)))
+        die(EXIT_USAGE, "--stats needs a file name, got directory '%s'", path);
+    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+        die(EXIT_RUN, "cannot write --stats %s: '%s' is not a directory", path, dir);
+    return base;
+}
+
 typedef struct progress {
     int enabled;
     double started;
@@ -341,6 +399,9 @@ int main(int argc, char **argv)
     p.seed = o.seed;
     p.broadphase = o.broadphase;
     check_request(&o, &p);
+    char stats_dir[4096];
+    const char *stats_base =
+        o.stats_path ? stats_split(o.stats_path, stats_dir, sizeof stats_dir) : NULL;
     make_dirs(o.out_dir);
 
     ds_sim *sim = NULL;
@@ -400,15 +461,11 @@ int main(int argc, char **argv)
     progress_clear(&pr);
     if (stats) {
         const char *why = "";
-        const char *slash = strrchr(o.stats_path, '/');
-        char dir[4096];
-        const char *base = slash ? slash + 1 : o.stats_path;
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - o.stats_path) : 1,
-                 slash ? o.stats_path : ".");
-        if (slash == o.stats_path)
-            snprintf(dir, sizeof dir, "/");
-        if (!*base || write_file_atomic(dir, base, stats, stats_len, &why) != 0)
-            die(EXIT_RUN, "cannot write %s: %s", o.stats_path, *base ? why : "not a file name");
+        int failed = is_special_file(o.stats_path)
+                         ? write_file_in_place(o.stats_path, stats, stats_len, &why)
+                         : write_file_atomic(stats_dir, stats_base, stats, stats_len, &why);
+        if (failed)
+            die(EXIT_RUN, "cannot write %s: %s", o.stats_path, why);
     }
     if (!o.quiet) {
         printf("collision processing time: %.6f s (sorting, pruning, testing and resolving "

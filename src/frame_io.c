@@ -111,7 +111,10 @@ static ds_status write_frame(const ds_sim *sim, int velocities, FILE *out)
     if (!buf)
         return DS_ERR_NOMEM;
     ds_status st = ds_format_frame(sim, velocities, buf, cap, &len);
-    if (st == DS_OK && fwrite(buf, 1, len, out) != len)
+    /* fwrite into stdio's buffer succeeds even on a full disk: only the
+     * flush reaches the file, so its result (and the sticky error flag, set
+     * by any earlier failed write on this stream) decides. */
+    if (st == DS_OK && (fwrite(buf, 1, len, out) != len || fflush(out) != 0 || ferror(out)))
         st = DS_ERR_IO;
     free(buf);
     return st;

@@ -1,0 +1,237 @@
+/* Frame I/O under bad input and failing files: every malformed frame is
+ * refused with the line that is wrong, every failed write is reported, and
+ * the library answers bad arguments with DS_ERR_ARG instead of crashing. */
+#include "test_util.h"
+
+#include <errno.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* Parses text and expects DS_ERR_FORMAT at the given line, with a message
+ * containing want, and an empty frame left behind. */
+static void expect_format_error(const char *text, size_t len, size_t line, const char *want)
+{
+    ds_frame frame = {(ds_frame_disk *)&frame, 99, 3}; /* garbage to be reset */
+    ds_frame_error err;
+    assert_int_equal(ds_parse_frame(text, len, &frame, &err), DS_ERR_FORMAT);
+    assert_int_equal(err.line, line);
+    if (!strstr(err.message, want))
+        fail_msg("message '%s' does not contain '%s'", err.message, want);
+    assert_null(frame.disks);
+    assert_int_equal(frame.count, 0);
+}
+
+static void expect_text_error(const char *text, size_t line, const char *want)
+{
+    expect_format_error(text, strlen(text), line, want);
+}
+
+static void test_a_nan_coordinate_is_refused_at_its_line(void **state)
+{
+    (void)state;
+    expect_text_error("1 2 3\nnan 2 3\n", 2, "not finite");
+}
+
+static void test_an_infinite_coordinate_is_refused_at_its_line(void **state)
+{
+    (void)state;
+    expect_text_error("1 2 3\n4 5 6\n1 inf 3\n", 3, "not finite");
+    expect_text_error("1e400 2 3\n", 1, "not finite");
+}
+
+static void test_a_negative_or_zero_radius_is_refused(void **state)
+{
+    (void)state;
+    expect_text_error("1 2 -3\n", 1, "radius must be positive");
+    expect_text_error("1 2 3\n1 2 0\n", 2, "radius must be positive");
+}
+
+static void test_a_line_with_four_numbers_is_refused(void **state)
+{
+    (void)state;
+    expect_text_error("1 2 3 4\n", 1, "expected 3 or 5 numbers");
+    expect_text_error("1 2 3 4 5 6\n", 1, "expected 3 or 5 numbers");
+}
+
+static void test_a_frame_mixing_column_counts_is_refused(void **state)
+{
+    (void)state;
+    expect_text_error("1 2 3\n1 2 3 4 5\n", 2, "expected 3 numbers like the first line");
+}
+
+static void test_trailing_garbage_after_a_number_is_refused(void **state)
+{
+    (void)state;
+    expect_text_error("1 2 3x\n", 1, "not a number");
+}
+
+static void test_binary_garbage_is_refused_without_reading_past_the_buffer(void **state)
+{
+    (void)state;
+    /* Not NUL-terminated on purpose: ASan catches any read past len. */
+    char *bytes = malloc(7);
+    assert_non_null(bytes);
+    memcpy(bytes, "\x89PNG\r\n\x1a", 7);
+    expect_format_error(bytes, 7, 1, "not a number");
+    memcpy(bytes, "1 2 3\0\n", 7);
+    expect_format_error(bytes, 7, 1, "NUL");
+    memcpy(bytes, "1 2 3.5", 7); /* the last number runs up to the end */
+    ds_frame frame;
+    assert_int_equal(ds_parse_frame(bytes, 7, &frame, NULL), DS_OK);
+    assert_int_equal(frame.count, 1);
+    assert_true(frame.disks[0].r == 3.5);
+    ds_frame_free(&frame);
+    free(bytes);
+}
+
+static void test_an_overlong_line_is_refused(void **state)
+{
+    (void)state;
+    char text[2048];
+    memset(text, ' ', sizeof text);
+    memcpy(text, "1 2 3", 5);
+    expect_format_error(text, sizeof text, 1, "line too long");
+}
+
+static void test_an_empty_or_comment_only_frame_is_refused(void **state)
+{
+    (void)state;
+    expect_text_error("", 0, "empty");
+    expect_text_error("# only a comment\n\n   \n", 0, "empty");
+}
+
+static void test_a_missing_file_is_an_io_error(void **state)
+{
+    (void)state;
+    ds_frame frame;
+    ds_frame_error err;
+    assert_int_equal(ds_read_frame("/nonexistent/frame_0000.txt", &frame, &err), DS_ERR_IO);
+    assert_non_null(strstr(err.message, strerror(ENOENT)));
+    assert_null(frame.disks);
+}
+
+static void test_a_directory_is_an_io_error(void **state)
+{
+    (void)state;
+    ds_frame frame;
+    ds_frame_error err;
+    /* fopen succeeds on a directory under Linux; the read then fails. */
+    assert_int_equal(ds_read_frame("/", &frame, &err), DS_ERR_IO);
+    assert_null(frame.disks);
+}
+
+static void test_writing_a_frame_to_a_full_disk_reports_io_error(void **state)
+{
+    (void)state;
+    FILE *full = fopen("/dev/full", "w");
+    if (!full)
+        skip(); /* not Linux: no /dev/full */
+    ds_sim *sim = test_create(50, 5.0, 1, DS_SAP);
+    /* 50 lines fit in stdio's buffer: only the flush can see ENOSPC. */
+    assert_int_equal(ds_write_frame(sim, full), DS_ERR_IO);
+    clearerr(full);
+    assert_int_equal(ds_write_frame_velocities(sim, full), DS_ERR_IO);
+    fclose(full);
+    ds_destroy(sim);
+}
+
+static void test_a_written_frame_reads_back_exactly(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(30, 4.0, 7, DS_SAP);
+    char path[] = "/tmp/ds_frame_errors_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    assert_non_null(f);
+    assert_int_equal(ds_write_frame_velocities(sim, f), DS_OK);
+    assert_int_equal(fclose(f), 0);
+    ds_frame frame;
+    assert_int_equal(ds_read_frame(path, &frame, NULL), DS_OK);
+    unlink(path);
+    assert_int_equal(frame.count, 30);
+    assert_int_equal(frame.columns, 5);
+    for (size_t i = 0; i < frame.count; ++i) {
+        ds_disk d = ds_get(sim, i);
+        /* Six decimals are written: the round trip is exact to 5e-7. */
+        assert_true(fabs(frame.disks[i].x - d.x) <= 5e-7);
+        assert_true(fabs(frame.disks[i].vy - d.vy) <= 5e-7);
+        assert_true(frame.disks[i].r == 4.0);
+    }
+    ds_frame_free(&frame);
+    ds_destroy(sim);
+}
+
+static void test_null_arguments_are_refused_not_dereferenced(void **state)
+{
+    (void)state;
+    ds_frame frame;
+    assert_int_equal(ds_parse_frame(NULL, 5, &frame, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_parse_frame("1 2 3", 5, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_read_frame(NULL, &frame, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_write_frame(NULL, stdout), DS_ERR_ARG);
+    assert_int_equal(ds_create(NULL, NULL), DS_ERR_ARG);
+    ds_frame_free(NULL);
+    ds_destroy(NULL);
+}
+
+static void test_bad_parameters_are_refused_with_arg_error(void **state)
+{
+    (void)state;
+    ds_sim *sim = NULL;
+    ds_params p = ds_default_params(10, 5.0);
+    p.radius = NAN;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    p.radius = 500.0; /* a disk as wide as the box has nowhere to go */
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    p = ds_default_params(0, 5.0);
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    p = ds_default_params(100000, 50.0);
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
+    assert_null(sim);
+}
+
+static void test_two_simulations_in_one_process_do_not_interfere(void **state)
+{
+    (void)state;
+    /* Same seed: a and c must stay identical while b, stepped in between,
+     * must not disturb them (no hidden shared state). */
+    ds_sim *a = test_create(100, 5.0, 3, DS_SAP);
+    ds_sim *b = test_create(200, 3.0, 4, DS_BRUTE_FORCE);
+    ds_sim *c = test_create(100, 5.0, 3, DS_SAP);
+    for (int k = 0; k < 50; ++k) {
+        ds_step(a);
+        ds_run(b, 3);
+        ds_step(c);
+    }
+    for (size_t i = 0; i < 100; ++i) {
+        ds_disk da = ds_get(a, i), dc = ds_get(c, i);
+        assert_true(da.x == dc.x && da.y == dc.y && da.vx == dc.vx && da.vy == dc.vy);
+    }
+    ds_destroy(a);
+    ds_destroy(b);
+    ds_destroy(c);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_a_nan_coordinate_is_refused_at_its_line),
+        cmocka_unit_test(test_an_infinite_coordinate_is_refused_at_its_line),
+        cmocka_unit_test(test_a_negative_or_zero_radius_is_refused),
+        cmocka_unit_test(test_a_line_with_four_numbers_is_refused),
+        cmocka_unit_test(test_a_frame_mixing_column_counts_is_refused),
+        cmocka_unit_test(test_trailing_garbage_after_a_number_is_refused),
+        cmocka_unit_test(test_binary_garbage_is_refused_without_reading_past_the_buffer),
+        cmocka_unit_test(test_an_overlong_line_is_refused),
+        cmocka_unit_test(test_an_empty_or_comment_only_frame_is_refused),
+        cmocka_unit_test(test_a_missing_file_is_an_io_error),
+        cmocka_unit_test(test_a_directory_is_an_io_error),
+        cmocka_unit_test(test_writing_a_frame_to_a_full_disk_reports_io_error),
+        cmocka_unit_test(test_a_written_frame_reads_back_exactly),
+        cmocka_unit_test(test_null_arguments_are_refused_not_dereferenced),
+        cmocka_unit_test(test_bad_parameters_are_refused_with_arg_error),
+        cmocka_unit_test(test_two_simulations_in_one_process_do_not_interfere),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
