@@ -106,12 +106,14 @@ static double radius_arg(const char *s)
     char *end;
     errno = 0;
     double r = strtod(s, &end);
-    if (!is_decimal_text(s) || end == s || *end != '\0')
-        die(EXIT_USAGE, "R must be a decimal number, got '%s'", s);
+    if (end == s || *end != '\0')
+        die(EXIT_USAGE, "R must be a number, got '%s'", s);
     /* ERANGE on underflow (1e-400) leaves r tiny: the range check below
      * names it better than "not finite". */
     if (!isfinite(r) || (errno == ERANGE && fabs(r) > 1.0))
         die(EXIT_USAGE, "R must be a finite number, got '%s'", s);
+    if (!is_decimal_text(s))
+        die(EXIT_USAGE, "R must be a decimal number, got '%s'", s);
     if (!(r > 0.0 && r < 500.0))
         die(EXIT_USAGE, "R must be > 0 and < 500 (half the box), got '%s'", s);
     return r;
@@ -199,7 +201,10 @@ static options parse_args(int argc, char **argv)
             }
             continue;
         }
-        if (a[0] == '-' && a[1] != '\0' && !(a[1] >= '0' && a[1] <= '9') && a[1] != '.')
+        /* "-5" and "-inf" are (bad) numbers, reported as such below. */
+        char *num_end;
+        (void)strtod(a, &num_end);
+        if (a[0] == '-' && a[1] != '\0' && num_end == a)
             die(EXIT_USAGE, "unknown option '%s' (try --help)", a);
         if (npos == 2)
             die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
