@@ -63,5 +63,132 @@ test: all $(TEST_BIN)
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
 
+# ---------------------------------------------------------------- hardening
+.PHONY: fuzz check-symbols bad-input-table
+
+# libFuzzer over the frame reader, seeded from tests/corpus/ (crashes are
+# written there as crash-<sha1>: commit them, test_frame_corpus replays them).
+# The library sources are compiled into the harness so they are instrumented.
+FUZZ_CC      ?= clang
+FUZZ_SECONDS ?= 30
+build-fuzz/fuzz_frame: tests/fuzz_frame.c $(LIB_SRC) include/disk_sim.h src/sim_internal.h
+	@mkdir -p build-fuzz/found
+	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -Isrc -g -O1 -fsanitize=fuzzer,address,undefined \
+	    -fno-sanitize-recover=all -o $@ tests/fuzz_frame.c $(LIB_SRC) -lm
+
+fuzz: build-fuzz/fuzz_frame
+	./build-fuzz/fuzz_frame -max_total_time=$(FUZZ_SECONDS) -max_len=2048 -timeout=10 \
+	    -rss_limit_mb=1024 -print_final_stats=1 -artifact_prefix=tests/corpus/ \
+	    build-fuzz/found tests/corpus
+
+# Library hygiene: every exported symbol starts with ds_, and the library
+# never prints or ends the process (it returns a ds_status instead).
+check-symbols: $(LIB)
+	@bad=$$(nm -g --defined-only $(LIB) | awk 'NF == 3 && $$3 !~ /^ds_/ { print $$3 }'); \
+	if [ -n "$$bad" ]; then echo "check-symbols: exported without ds_ prefix:" $$bad; exit 1; fi; \
+	calls=$$(nm -u $(LIB) | awk '{ print $$2 }' | grep -E '^(exit|_exit|_Exit|abort|__assert_fail|printf|vprintf|fprintf|vfprintf|puts|fputs|putchar|fputc|perror)$$' | sort -u); \
+	if [ -n "$$calls" ]; then echo "check-symbols: the library calls" $$calls; exit 1; fi; \
+	echo "check-symbols: $$(nm -g --defined-only $(LIB) | awk 'NF == 3' | wc -l) exported symbols, all ds_*, no printing or exit"
+
+# Regenerates the README "Bad input" table from tests/cli_cases.txt.
+bad-input-table: all $(BUILD)/tests/test_cli
+	sh tests/bad_input_table.sh $(BUILD)/tests/test_cli README.md
+
 clean:
 	rm -rf build build-san build-fuzz libdisksim.a disks
+
+# ---------------------------------------------------------------- packaging
+# The shared library beside the static one, disksim.pc, `make examples`,
+# `make install` and `make uninstall` (PREFIX, default /usr/local, and
+# DESTDIR for staging). The version, the .pc Version and the soname all come
+# from the DS_VERSION_* macros in disk_sim.h, the one place they are written.
+VERSION   := $(shell sed -n 's/^.define DS_VERSION_STRING "\(.*\)"/\1/p' include/disk_sim.h)
+SOVERSION := $(shell sed -n 's/^.define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' include/disk_sim.h)
+SONAME    := libdisksim.so.$(SOVERSION)
+SHLIB     := libdisksim.so.$(VERSION)
+PIC_OBJ   := $(LIB_SRC:src/%.c=$(BUILD)/pic/%.o)
+EXAMPLES  := $(OUT)examples/minimal $(OUT)examples/stream_frames
+
+PREFIX       ?= /usr/local
+BINDIR       = $(PREFIX)/bin
+LIBDIR       = $(PREFIX)/lib
+INCLUDEDIR   = $(PREFIX)/include
+DATADIR      = $(PREFIX)/share
+MANDIR       = $(DATADIR)/man
+PKGCONFIGDIR = $(LIBDIR)/pkgconfig
+INSTALL      ?= install
+# The gnuplot scripts, wherever they live in the tree (share/disksim/).
+PLT_FILES     = $(wildcard animate_disk.plt tools/*.plt)
+
+.PHONY: examples install uninstall clean-packaging FORCE
+all: $(OUT)libdisksim.so disksim.pc
+clean: clean-packaging
+
+# Position-independent copies of the library objects: the static library
+# keeps the plain ones, which are a little faster without -fPIC.
+$(BUILD)/pic/%.o: src/%.c include/disk_sim.h src/sim_internal.h
+	@mkdir -p $(BUILD)/pic
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
+
+# Internal functions shared between src/ files are also named ds_*, so the
+# export list is every function declared in the public header, no more.
+$(BUILD)/exports.map: include/disk_sim.h | $(BUILD)
+	{ echo '{ global:'; \
+	  sed -n '/^[a-z]/s/^[^(]*[ *]\(ds_[a-z0-9_]*\)(.*/    \1;/p' include/disk_sim.h; \
+	  echo '  local: *; };'; } > $@
+
+$(OUT)$(SHLIB): $(PIC_OBJ) $(BUILD)/exports.map
+	$(CC) $(CFLAGS) $(LDFLAGS) -shared -Wl,-soname,$(SONAME) \
+	    -Wl,--version-script,$(BUILD)/exports.map -o $@ $(PIC_OBJ) -lm
+
+$(OUT)$(SONAME): $(OUT)$(SHLIB)
+	ln -sf $(SHLIB) $@
+
+$(OUT)libdisksim.so: $(OUT)$(SONAME)
+	ln -sf $(SONAME) $@
+
+# Regenerated when PREFIX changes (FORCE), but rewritten only if different,
+# so `make install PREFIX=/usr` after `make` installs the right paths.
+disksim.pc: disksim.pc.in include/disk_sim.h FORCE
+	@sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
+	     -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+	     disksim.pc.in > $@.tmp
+	@if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; \
+	     echo "disksim.pc: prefix $(PREFIX), version $(VERSION)"; fi
+
+FORCE:
+
+examples: $(EXAMPLES)
+
+$(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+# disks-render is installed when the renderer has been built (`make render`).
+install: all
+	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
+	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim
+	$(INSTALL) -m 755 $(DISKS) $(DESTDIR)$(BINDIR)/disks
+	if [ -x $(OUT)tools/render ]; then \
+	    $(INSTALL) -m 755 $(OUT)tools/render $(DESTDIR)$(BINDIR)/disks-render; fi
+	$(INSTALL) -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libdisksim.a
+	$(INSTALL) -m 755 $(OUT)$(SHLIB) $(DESTDIR)$(LIBDIR)/$(SHLIB)
+	ln -sf $(SHLIB) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libdisksim.so
+	$(INSTALL) -m 644 include/disk_sim.h $(DESTDIR)$(INCLUDEDIR)/disk_sim.h
+	$(INSTALL) -m 644 disksim.pc $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc
+	$(INSTALL) -m 644 man/disks.1 $(DESTDIR)$(MANDIR)/man1/disks.1
+	$(INSTALL) -m 644 $(PLT_FILES) $(DESTDIR)$(DATADIR)/disksim/
+
+uninstall:
+	rm -f $(DESTDIR)$(BINDIR)/disks $(DESTDIR)$(BINDIR)/disks-render \
+	    $(DESTDIR)$(LIBDIR)/libdisksim.a $(DESTDIR)$(LIBDIR)/libdisksim.so \
+	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(SHLIB) \
+	    $(DESTDIR)$(INCLUDEDIR)/disk_sim.h $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc \
+	    $(DESTDIR)$(MANDIR)/man1/disks.1 \
+	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(notdir $(PLT_FILES)))
+	rmdir $(DESTDIR)$(DATADIR)/disksim 2>/dev/null || true
+
+clean-packaging:
+	rm -f libdisksim.so libdisksim.so.* disksim.pc disksim.pc.tmp \
+	    examples/minimal examples/stream_frames
