@@ -46,7 +46,8 @@ $(DISKS): $(BUILD)/disks.o $(LIB)
 # ---------------------------------------------------------------- tests
 CMOCKA_CFLAGS := $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS   := $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
-TEST_SRC := $(wildcard tests/test_*.c)
+# test_render needs GL and libpng: its own rule, in the renderer section.
+TEST_SRC := $(filter-out tests/test_render.c,$(wildcard tests/test_*.c))
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 # test_cli runs the disks of this build (paths relative to the top directory).
 TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"'
@@ -192,3 +193,70 @@ uninstall:
 clean-packaging:
 	rm -f libdisksim.so libdisksim.so.* disksim.pc disksim.pc.tmp \
 	    examples/minimal examples/stream_frames
+
+# ---------------------------------------------------------------- renderer
+# tools/render (frames to PNG, tools/render*.c) draws through one small
+# backend interface with two implementations: OSMesa (pkg-config osmesa) and
+# surfaceless EGL (egl + gl). Each backend gets its own binary,
+# $(BUILD)/tools/render-osmesa and -egl, because libOSMesa and libGL both
+# export the gl* functions and one binary cannot link both; tools/render is
+# a copy of the one BACKEND names: OSMesa when present, else EGL, or forced
+# with BACKEND=osmesa|egl. `make all` and `make test` build every backend
+# pkg-config finds (test_render compares them) and skip the renderer with a
+# one-line note when there is none.
+RENDER_PKGS_osmesa := osmesa libpng
+RENDER_PKGS_egl    := egl gl libpng
+RENDER_BACKENDS := $(foreach b,osmesa egl,$(if $(shell pkg-config --exists $(RENDER_PKGS_$(b)) && echo y),$(b)))
+BACKEND ?= $(firstword $(RENDER_BACKENDS))
+RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
+RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png
+RENDER_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
+RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
+RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)
+.SECONDARY: $(RENDER_OBJ) # kept between builds, not intermediate
+RENDER_DEPS := include/disk_sim.h $(wildcard tools/render*.h)
+
+.PHONY: render render-skipped clean-render
+ifneq ($(RENDER_BACKENDS),)
+all: render $(RENDER_BIN)
+TEST_BIN += $(BUILD)/tests/test_render
+test: $(BUILD)/tests/test_render $(RENDER_BIN)
+else
+all: render-skipped
+test: render-skipped
+endif
+
+$(BUILD)/tools/%.o: tools/%.c $(RENDER_DEPS)
+	@mkdir -p $(BUILD)/tools
+	$(CC) $(WARN) $(CPPFLAGS) $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/tools/render-%: $(RENDER_COMMON:%=$(BUILD)/tools/%.o) $(BUILD)/tools/render_%.o $(LIB)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(shell pkg-config --libs $(RENDER_PKGS_$*)) -lpthread $(LDLIBS)
+
+# A copy, refreshed whenever it differs, so switching BACKEND takes effect.
+ifneq ($(BACKEND),)
+render: $(BUILD)/tools/render-$(BACKEND)
+	@cmp -s $< $(OUT)tools/render || { mkdir -p $(OUT)tools && cp -f $< $(OUT)tools/render && \
+	    echo "$(OUT)tools/render: $(BACKEND) backend"; }
+else
+render:
+	@echo "make render: $(RENDER_HINT)"; exit 1
+endif
+
+clean: clean-render
+clean-render:
+	rm -f tools/render
+
+render-skipped:
+	@echo "renderer skipped: pkg-config finds neither osmesa nor egl+gl with libpng ($(RENDER_HINT))"
+
+# The test runs each backend's binary (their paths are compiled in) and
+# links the GL-free parts (colour map, layout) to compute expected pixels.
+$(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDER_DEPS) \
+                            $(BUILD)/tools/render_colormap.o $(BUILD)/tools/render_layout.o
+	@mkdir -p $(BUILD)/tests
+	$(CC) $(WARN) $(CPPFLAGS) -Itools $(RENDER_CFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) \
+	    $(foreach b,$(RENDER_BACKENDS),-DRENDER_$(b)='"$(BUILD)/tools/render-$(b)"') \
+	    -DRENDER_DISKS='"$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
+	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
+	    $(shell pkg-config --libs libpng 2>/dev/null) $(LDLIBS)

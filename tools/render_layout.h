@@ -1,0 +1,28 @@
+/* Where things go in the image, in pixels with the origin at the
+ * bottom-left corner and y up (GL window coordinates; the PNG writer flips
+ * the rows). GL-free, so the tests compute the same positions. */
+#ifndef RENDER_LAYOUT_H
+#define RENDER_LAYOUT_H
+
+typedef struct rl_layout {
+    int size;                          /* the image is size x size pixels */
+    double box;                        /* side of the simulation box in frame units */
+    double scale;                      /* pixels per frame unit */
+    double x0, y0;                     /* pixel position of the box corner (0, 0) */
+    double outline;                    /* width of the box outline, centred on the box edge */
+    int legend;                        /* a speed legend is drawn right of the box */
+    double bar_x, bar_y, bar_w, bar_h; /* the legend's colour bar */
+    double text_px;                    /* size of one font pixel */
+} rl_layout;
+
+/* size >= RL_MIN_SIZE. The box is square and keeps a margin on every side
+ * so its outline is always visible; a legend takes a strip on the right. */
+#define RL_MIN_SIZE 32
+#define RL_MAX_SIZE 16384
+void rl_make(rl_layout *l, int size, double box, int legend);
+
+/* Frame coordinates to pixels. */
+static inline double rl_px(const rl_layout *l, double x) { return l->x0 + x * l->scale; }
+static inline double rl_py(const rl_layout *l, double y) { return l->y0 + y * l->scale; }
+
+#endif
