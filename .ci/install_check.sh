@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Installs into a temporary stage the way a distribution package is built
+# (make install DESTDIR=stage PREFIX=/usr), checks every installed file, then
+# builds examples/minimal.c and the README's library example against the
+# staged copy through pkg-config, once with the shared and once with the
+# static library, runs them, and checks that make uninstall removes it all.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+header=include/disk_sim.h
+version=$(sed -n 's/^#define DS_VERSION_STRING "\(.*\)"/\1/p' "$header")
+major=$(sed -n 's/^#define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' "$header")
+stage=$(mktemp -d)
+work=$(mktemp -d)
+trap 'rm -rf "$stage" "$work"' EXIT
+fail() { echo "install check: $*" >&2; exit 1; }
+
+make -s install DESTDIR="$stage" PREFIX=/usr
+
+for f in usr/bin/disks usr/lib/libdisksim.a "usr/lib/libdisksim.so.$version" \
+         usr/include/disk_sim.h usr/lib/pkgconfig/disksim.pc \
+         usr/share/man/man1/disks.1 usr/share/disksim/animate_disk.plt; do
+    [ -f "$stage/$f" ] || fail "missing $f"
+done
+[ "$(readlink "$stage/usr/lib/libdisksim.so.$major")" = "libdisksim.so.$version" ] ||
+    fail "libdisksim.so.$major does not point to libdisksim.so.$version"
+[ "$(readlink "$stage/usr/lib/libdisksim.so")" = "libdisksim.so.$major" ] ||
+    fail "libdisksim.so does not point to libdisksim.so.$major"
+readelf -d "$stage/usr/lib/libdisksim.so.$version" | grep -q "SONAME.*\[libdisksim.so.$major\]" ||
+    fail "soname is not libdisksim.so.$major"
+if [ -x tools/render ]; then
+    [ -x "$stage/usr/bin/disks-render" ] || fail "tools/render is built but not installed"
+fi
+"$stage/usr/bin/disks" --version | grep -qx "disks $version" || fail "installed disks --version"
+
+# The shared library exports exactly the functions of the public header.
+nm -D --defined-only "$stage/usr/lib/libdisksim.so.$version" | awk '$2 == "T" { print $3 }' |
+    sort > "$work/exported"
+sed -n '/^[a-z]/s/^[^(]*[ *]\(ds_[a-z0-9_]*\)(.*/\1/p' "$header" | sort > "$work/declared"
+diff -u "$work/declared" "$work/exported" || fail "libdisksim.so exports differ from $header"
+
+# Only the staged copy is visible to pkg-config, with paths under the stage.
+export PKG_CONFIG_LIBDIR="$stage/usr/lib/pkgconfig" PKG_CONFIG_PATH=""
+export PKG_CONFIG_SYSROOT_DIR="$stage"
+[ "$(pkg-config --modversion disksim)" = "$version" ] || fail "disksim.pc version"
+grep -qx 'prefix=/usr' "$stage/usr/lib/pkgconfig/disksim.pc" || fail "disksim.pc prefix"
+grep -qx 'Libs.private: -lm' "$stage/usr/lib/pkgconfig/disksim.pc" || fail "disksim.pc Libs.private"
+
+# The library example of the README, as a reader would copy it.
+awk '/^## Use the library/ { on = 1; next } /^## / { on = 0 }
+     on && /^```c/ { code = 1; next } code && /^```/ { exit } code' README.md > "$work/readme.c"
+[ -s "$work/readme.c" ] || fail "no C example under README's \"## Use the library\""
+
+for prog in examples/minimal.c "$work/readme.c"; do
+    name=$(basename "$prog" .c)
+    # Shared: the program records libdisksim.so.MAJOR and finds it at run time.
+    # shellcheck disable=SC2046
+    cc -std=c99 -Wall -Wextra -Werror -o "$work/$name-shared" "$prog" \
+        $(pkg-config --cflags --libs disksim)
+    readelf -d "$work/$name-shared" | grep -q "NEEDED.*\[libdisksim.so.$major\]" ||
+        fail "$name-shared does not link libdisksim.so.$major"
+    LD_LIBRARY_PATH="$stage/usr/lib" "$work/$name-shared" > "$work/$name-shared.out"
+    # Static: --static adds Libs.private (-lm) for a fully static program.
+    # shellcheck disable=SC2046
+    cc -std=c99 -Wall -Wextra -Werror -static -o "$work/$name-static" "$prog" \
+        $(pkg-config --cflags --libs --static disksim)
+    "$work/$name-static" > "$work/$name-static.out"
+    for out in "$work/$name-shared.out" "$work/$name-static.out"; do
+        grep -q "collision" "$out" || fail "$(basename "$out" .out) printed no collision time"
+    done
+    echo "install check: $prog built against the staged copy, shared and static: OK"
+done
+
+make -s uninstall DESTDIR="$stage" PREFIX=/usr
+left=$(find "$stage" ! -type d)
+[ -z "$left" ] || fail "make uninstall left: $left"
+echo "install check: layout, pkg-config, shared and static examples, uninstall: OK"
