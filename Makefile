@@ -49,8 +49,8 @@ CMOCKA_LIBS   := $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 # test_render needs GL and libpng: its own rule, in the renderer section.
 TEST_SRC := $(filter-out tests/test_render.c,$(wildcard tests/test_*.c))
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
-# test_cli runs the disks of this build (paths relative to the top directory).
-TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"'
+# test_cli runs the disks and render of this build (relative to the top).
+TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"' -DDS_TEST_RENDER='"$(OUT)tools/render"'
 
 $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) include/disk_sim.h src/sim_internal.h
 	@mkdir -p $(BUILD)/tests
