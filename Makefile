@@ -166,6 +166,8 @@ $(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 # disks-render is installed when the renderer has been built (`make render`).
+# The man page names the gnuplot scripts by their path under the default
+# prefix; the installed copy names them where they really are.
 install: all
 	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
 	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim
@@ -178,8 +180,10 @@ install: all
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libdisksim.so
 	$(INSTALL) -m 644 include/disk_sim.h $(DESTDIR)$(INCLUDEDIR)/disk_sim.h
 	$(INSTALL) -m 644 disksim.pc $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc
-	$(INSTALL) -m 644 man/disks.1 $(DESTDIR)$(MANDIR)/man1/disks.1
-	$(INSTALL) -m 644 $(PLT_FILES) $(DESTDIR)$(DATADIR)/disksim/
+	sed 's|/usr/local/share/disksim|$(DATADIR)/disksim|g' man/disks.1 \
+	    > $(DESTDIR)$(MANDIR)/man1/disks.1
+	chmod 644 $(DESTDIR)$(MANDIR)/man1/disks.1
+	$(if $(PLT_FILES),$(INSTALL) -m 644 $(PLT_FILES) $(DESTDIR)$(DATADIR)/disksim/)
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/disks $(DESTDIR)$(BINDIR)/disks-render \

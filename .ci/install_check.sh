@@ -31,6 +31,10 @@ readelf -d "$stage/usr/lib/libdisksim.so.$version" | grep -q "SONAME.*\[libdisks
 if [ -x tools/render ]; then
     [ -x "$stage/usr/bin/disks-render" ] || fail "tools/render is built but not installed"
 fi
+grep -q '^\.I /usr/share/disksim/animate_disk\.plt$' "$stage/usr/share/man/man1/disks.1" ||
+    fail "installed disks.1 does not name /usr/share/disksim/animate_disk.plt"
+groff -man -Tutf8 -ww -z "$stage/usr/share/man/man1/disks.1" 2>&1 | { ! grep .; } ||
+    fail "installed disks.1 has groff warnings"
 "$stage/usr/bin/disks" --version | grep -qx "disks $version" || fail "installed disks --version"
 
 # The shared library exports exactly the functions of the public header.
