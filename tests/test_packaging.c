@@ -76,8 +76,8 @@ static void test_man_page_renders_without_any_groff_warning(void **state)
 static void test_man_page_has_the_sections_a_reader_expects(void **state)
 {
     (void)state;
-    const char *sections[] = {"NAME",    "SYNOPSIS",    "DESCRIPTION", "OPTIONS",
-                              "FILES",   "EXIT STATUS", "EXAMPLES"};
+    const char *sections[] = {"NAME",  "SYNOPSIS",    "DESCRIPTION", "OPTIONS",
+                              "FILES", "EXIT STATUS", "EXAMPLES"};
     char *page = read_text(MAN_PAGE);
     for (size_t k = 0; k < sizeof sections / sizeof sections[0]; ++k) {
         char heading[64];
@@ -129,8 +129,7 @@ static void test_man_page_and_version_option_show_the_header_version(void **stat
     assert_non_null(th);
     *strchr(th + 1, '\n') = '\0';
     if (!strstr(th, "\"disksim " DS_VERSION_STRING "\""))
-        fail_msg("the .TH line of " MAN_PAGE " does not name disksim " DS_VERSION_STRING
-                 ": %s",
+        fail_msg("the .TH line of " MAN_PAGE " does not name disksim " DS_VERSION_STRING ": %s",
                  th + 1);
     free(version);
     free(page);
@@ -149,11 +148,11 @@ static int run_disks_with_stderr(int fd, const char *extra)
         dup2(devnull, STDOUT_FILENO);
         dup2(fd, STDERR_FILENO);
         if (extra)
-            execl(DS_TEST_DISKS, DS_TEST_DISKS, "20", "5", "--frames", "4",
-                  "--steps-per-frame", "10", "--out", dir, extra, (char *)NULL);
+            execl(DS_TEST_DISKS, DS_TEST_DISKS, "20", "5", "--frames", "4", "--steps-per-frame",
+                  "10", "--out", dir, extra, (char *)NULL);
         else
-            execl(DS_TEST_DISKS, DS_TEST_DISKS, "20", "5", "--frames", "4",
-                  "--steps-per-frame", "10", "--out", dir, (char *)NULL);
+            execl(DS_TEST_DISKS, DS_TEST_DISKS, "20", "5", "--frames", "4", "--steps-per-frame",
+                  "10", "--out", dir, (char *)NULL);
         _exit(127);
     }
     int status = 0;
