@@ -8,8 +8,9 @@
  *
  * Paths: DS_DISKS / DS_RENDER / DS_CLI_CASES in the environment override
  * the paths the Makefile compiled in (relative to the starting directory). */
-/* realpath() is X/Open, not plain POSIX. */
+/* realpath() is X/Open and setgroups() BSD, not plain POSIX. */
 #define _XOPEN_SOURCE 700
+#define _DEFAULT_SOURCE
 #include "test_util.h"
 
 #include <dirent.h>
@@ -17,6 +18,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <grp.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -157,9 +159,13 @@ static int write_bytes(const char *path, const char *data, size_t len)
     return fclose(f) != 0 || bad ? -1 : 0;
 }
 
-/* Applies the setup steps inside dir; sets *fsize for the child. Returns 0,
- * 1 to skip (reason in o), -1 on a broken setup. */
-static int apply_setup(const cli_case *c, const char *dir, long *fsize, outcome *o)
+/* Root ignores permissions, so a permission case run as root drops to this
+ * unprivileged user (nobody) in the child instead. */
+#define UNPRIVILEGED_ID 65534
+
+/* Applies the setup steps inside dir; sets *fsize and *drop for the child.
+ * Returns 0, or -1 on a broken setup. */
+static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop)
 {
     char steps[sizeof c->setup];
     snprintf(steps, sizeof steps, "%s", c->setup);
@@ -190,13 +196,14 @@ static int apply_setup(const cli_case *c, const char *dir, long *fsize, outcome 
             if (mkdir(path, 0755) != 0)
                 return -1;
         } else if (strcmp(step, "readonly") == 0 || strcmp(step, "unreadable") == 0) {
-            if (geteuid() == 0) {
-                snprintf(o->skip_reason, sizeof o->skip_reason,
-                         "skipped: root ignores directory permissions");
-                return 1;
-            }
-            if (mkdir(path, strcmp(step, "readonly") == 0 ? 0555 : 0) != 0)
+            if (mkdir(path, 0) != 0 || chmod(path, strcmp(step, "readonly") == 0 ? 0555 : 0))
                 return -1;
+            if (geteuid() == 0) {
+                /* nobody must reach the case directory but not write ro/. */
+                if (chmod(dir, 0777) != 0)
+                    return -1;
+                *drop = 1;
+            }
         } else if (strcmp(step, "fsize") == 0) {
             *fsize = atol(arg);
         } else {
@@ -326,10 +333,9 @@ static void run_case(const cli_case *c, outcome *o)
         return;
     }
     long fsize = -1;
-    int setup = apply_setup(c, dir, &fsize, o);
-    if (setup != 0) {
-        if (setup < 0)
-            snprintf(o->problem, sizeof o->problem, "bad setup '%.400s'", c->setup);
+    int drop = 0;
+    if (apply_setup(c, dir, &fsize, &drop) != 0) {
+        snprintf(o->problem, sizeof o->problem, "bad setup '%.400s'", c->setup);
         remove_tree(dir);
         return;
     }
@@ -360,6 +366,9 @@ static void run_case(const cli_case *c, outcome *o)
             signal(SIGXFSZ, SIG_IGN);
             setrlimit(RLIMIT_FSIZE, &rl);
         }
+        if (drop && (setgroups(0, NULL) != 0 || setgid(UNPRIVILEGED_ID) != 0 ||
+                     setuid(UNPRIVILEGED_ID) != 0))
+            _exit(124);
         alarm(CASE_TIMEOUT_SECONDS); /* survives exec: SIGALRM ends a hang */
         argv[0] = (char *)program;
         execv(program, argv);
