@@ -261,6 +261,6 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 	@mkdir -p $(BUILD)/tests
 	$(CC) $(WARN) $(CPPFLAGS) -Itools $(RENDER_CFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) \
 	    $(foreach b,$(RENDER_BACKENDS),-DRENDER_$(b)='"$(BUILD)/tools/render-$(b)"') \
-	    -DRENDER_DISKS='"$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
+	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
 	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
 	    $(shell pkg-config --libs libpng 2>/dev/null) $(LDLIBS)

@@ -1,0 +1,565 @@
+/* tools/render, tested from the outside: each backend's binary renders
+ * hand-written frames and the PNGs are read back with libpng. Expected
+ * pixel positions come from the renderer's own layout (render_layout.c),
+ * expected colours from its colour map; what is tested is that the image
+ * shows them where the frame says, with y up and antialiased edges. */
+#include "test_util.h"
+
+#include <dirent.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <png.h>
+
+#include "render_colormap.h"
+#include "render_layout.h"
+
+/* ------------------------------------------------------------------ */
+/* Helpers                                                             */
+/* ------------------------------------------------------------------ */
+
+typedef struct image {
+    int width, height;
+    unsigned char *rgb;
+} image;
+
+typedef struct rgb8 {
+    int r, g, b;
+} rgb8;
+
+static char scratch[64];
+
+static int make_scratch(void **state)
+{
+    (void)state;
+    snprintf(scratch, sizeof scratch, "/tmp/test_render_XXXXXX");
+    return mkdtemp(scratch) ? 0 : -1;
+}
+
+static int remove_scratch(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", scratch);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static char *path_in(const char *dir, const char *name)
+{
+    static char buf[4][512];
+    static int next;
+    char joined[sizeof buf[0]]; /* dir may be one of buf's entries */
+    if ((size_t)snprintf(joined, sizeof joined, "%s/%s", dir, name) >= sizeof joined)
+        fail_msg("path too long: %s/%s", dir, name);
+    char *p = buf[next++ % 4];
+    memcpy(p, joined, sizeof joined);
+    return p;
+}
+
+/* A fresh empty directory under the scratch directory. */
+static const char *fresh_dir(const char *name)
+{
+    char *dir = path_in(scratch, name);
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s", dir, dir);
+    assert_int_equal(system(cmd), 0);
+    return dir;
+}
+
+static void write_bytes(const char *path, const char *bytes, size_t len)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(bytes, 1, len, f), len);
+    assert_int_equal(fclose(f), 0);
+}
+
+static void write_text(const char *path, const char *text)
+{
+    write_bytes(path, text, strlen(text));
+}
+
+/* Runs "BINARY ARGS", stderr kept in scratch/stderr.txt; the exit status. */
+static int run(const char *binary, const char *args)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "%s %s >%s/stdout.txt 2>%s/stderr.txt", binary, args, scratch,
+             scratch);
+    int st = system(cmd);
+    assert_true(WIFEXITED(st));
+    return WEXITSTATUS(st);
+}
+
+static const char *last_stderr(void)
+{
+    static char text[4096];
+    FILE *f = fopen(path_in(scratch, "stderr.txt"), "rb");
+    assert_non_null(f);
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    return text;
+}
+
+static image read_png(const char *path)
+{
+    png_image png;
+    memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, path))
+        fail_msg("cannot read %s: %s", path, png.message);
+    png.format = PNG_FORMAT_RGB;
+    image img = {(int)png.width, (int)png.height, malloc(PNG_IMAGE_SIZE(png))};
+    assert_non_null(img.rgb);
+    if (!png_image_finish_read(&png, NULL, img.rgb, 0, NULL))
+        fail_msg("cannot decode %s: %s", path, png.message);
+    return img;
+}
+
+/* The pixel whose centre is nearest (px, py), in the renderer's pixel
+ * coordinates: origin bottom-left, y up (the PNG stores the top row first). */
+static rgb8 pixel(const image *img, double px, double py)
+{
+    int col = (int)floor(px), row = img->height - 1 - (int)floor(py);
+    assert_true(col >= 0 && col < img->width && row >= 0 && row < img->height);
+    const unsigned char *p = img->rgb + 3 * ((size_t)row * (size_t)img->width + (size_t)col);
+    rgb8 c = {p[0], p[1], p[2]};
+    return c;
+}
+
+static rgb8 to8(rc_rgb c)
+{
+    rgb8 o = {(int)lround(c.r * 255.0), (int)lround(c.g * 255.0), (int)lround(c.b * 255.0)};
+    return o;
+}
+
+/* Colours match within one 8-bit step: GL converts floats to bytes with
+ * its own rounding, which may differ from lround by one. */
+static int near(rgb8 a, rgb8 b)
+{
+    return abs(a.r - b.r) <= 1 && abs(a.g - b.g) <= 1 && abs(a.b - b.b) <= 1;
+}
+
+static void assert_colour(rgb8 got, rc_rgb want, const char *what)
+{
+    rgb8 w = to8(want);
+    if (!near(got, w))
+        fail_msg("%s: got (%d,%d,%d), want (%d,%d,%d)", what, got.r, got.g, got.b, w.r, w.g, w.b);
+}
+
+/* Renders text as DIR/frame_0000.txt into a PNG at size px; returns it. */
+static image render_text(const char *binary, const char *text, int size, const char *extra)
+{
+    const char *dir = fresh_dir("frame");
+    write_text(path_in(dir, "frame_0000.txt"), text);
+    char args[1024];
+    snprintf(args, sizeof args, "--quiet --size %d %s %s", size, extra ? extra : "",
+             path_in(dir, "frame_0000.txt"));
+    int st = run(binary, args);
+    if (st != 0)
+        fail_msg("render exited with %d: %s", st, last_stderr());
+    return read_png(path_in(dir, "frame_0000.png"));
+}
+
+static size_t count_files(const char *dir)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    size_t n = 0;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        n += e->d_name[0] != '.';
+    closedir(d);
+    return n;
+}
+
+/* ------------------------------------------------------------------ */
+/* The colour map (no GL needed)                                       */
+/* ------------------------------------------------------------------ */
+
+static void test_viridis_gets_lighter_from_slow_to_fast(void **state)
+{
+    (void)state;
+    /* Perceptual maps order speeds by lightness; Rec. 709 luma is a fair
+     * stand-in for lightness and must rise at every step of 1/64. */
+    double previous = -1.0;
+    for (int k = 0; k <= 64; ++k) {
+        rc_rgb c = rc_viridis(k / 64.0);
+        double luma = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+        assert_true(luma > previous);
+        previous = luma;
+    }
+    /* Matplotlib's end points, within the fit's documented 0.015. */
+    rc_rgb lo = rc_viridis(0.0), hi = rc_viridis(1.0);
+    assert_true(fabs(lo.r - 0.267) < 0.015 && fabs(lo.g - 0.005) < 0.015 &&
+                fabs(lo.b - 0.329) < 0.015);
+    assert_true(fabs(hi.r - 0.993) < 0.015 && fabs(hi.g - 0.906) < 0.015 &&
+                fabs(hi.b - 0.144) < 0.015);
+}
+
+static void test_speed_scale_is_two_and_a_half_rms_speeds(void **state)
+{
+    (void)state;
+    ds_frame_disk d[2] = {{0, 0, 1, 100, 0}, {0, 0, 1, 0, -100}};
+    ds_frame f = {d, 2, 5};
+    assert_true(rc_speed_scale(&f) == 250.0);
+    d[0].vx = 0.0;
+    d[1].vy = 0.0;
+    assert_true(rc_speed_scale(&f) == 1.0); /* all at rest: any scale, not 0 */
+}
+
+/* ------------------------------------------------------------------ */
+/* One backend: drawing                                                */
+/* ------------------------------------------------------------------ */
+
+static void test_image_has_the_requested_size(void **state)
+{
+    image img = render_text(*state, "500 500 10\n", 123, NULL);
+    assert_int_equal(img.width, 123);
+    assert_int_equal(img.height, 123);
+    free(img.rgb);
+    img = render_text(*state, "500 500 10\n", 800, NULL);
+    assert_int_equal(img.width, 800); /* the default is --size 800 */
+    free(img.rgb);
+}
+
+static void test_disk_centres_have_the_disk_colour_and_empty_space_the_background(void **state)
+{
+    image img = render_text(*state, "250 250 100\n750 600 50\n", 200, NULL);
+    rl_layout l;
+    rl_make(&l, 200, 1000.0, 0);
+    assert_colour(pixel(&img, rl_px(&l, 250), rl_py(&l, 250)), RC_DISK, "centre of disk 1");
+    assert_colour(pixel(&img, rl_px(&l, 750), rl_py(&l, 600)), RC_DISK, "centre of disk 2");
+    assert_colour(pixel(&img, rl_px(&l, 600), rl_py(&l, 150)), RC_BACKGROUND, "empty box");
+    assert_colour(pixel(&img, 1, 1), RC_BACKGROUND, "margin outside the box");
+    free(img.rgb);
+}
+
+static void test_y_axis_points_up(void **state)
+{
+    image img = render_text(*state, "500 850 60\n", 200, NULL);
+    rl_layout l;
+    rl_make(&l, 200, 1000.0, 0);
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 850)), RC_DISK, "disk near the top");
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 150)), RC_BACKGROUND, "its mirror image");
+    /* And the disk is in the top rows of the PNG file itself. */
+    assert_true(rl_py(&l, 850) > 0.75 * 200);
+    free(img.rgb);
+}
+
+/* A disk of radius 76 px, every pixel around its rim: full colour a pixel
+ * inside the rim, background a pixel outside, and a blend of the two for
+ * pixels whose centre is within a quarter pixel of the rim (so between a
+ * quarter and three quarters of the pixel is covered). Polygons without
+ * antialiasing would give only the two pure colours. */
+static void test_disk_edges_are_antialiased(void **state)
+{
+    const int size = 400;
+    image img = render_text(*state, "500 500 200\n", size, NULL);
+    rl_layout l;
+    rl_make(&l, size, 1000.0, 0);
+    const double cx = rl_px(&l, 500), cy = rl_py(&l, 500), r = 200 * l.scale;
+    int inside = 0, outside = 0, blended = 0;
+    rgb8 disk = to8(RC_DISK), bg = to8(RC_BACKGROUND);
+    for (int y = (int)(cy - r - 2); y <= (int)(cy + r + 2); ++y)
+        for (int x = (int)(cx - r - 2); x <= (int)(cx + r + 2); ++x) {
+            double d = hypot(x + 0.5 - cx, y + 0.5 - cy);
+            rgb8 c = pixel(&img, x + 0.5, y + 0.5);
+            if (d <= r - 1.0 && d >= r - 2.0) {
+                assert_true(near(c, disk));
+                ++inside;
+            } else if (d >= r + 1.0) {
+                assert_true(near(c, bg));
+                ++outside;
+            } else if (fabs(d - r) < 0.25) {
+                /* Red goes from 42 (disk) to 255 (background). */
+                if (!(c.r > disk.r + 40 && c.r < bg.r - 40))
+                    fail_msg("pixel %d,%d at %.3f px from the rim: red %d", x, y, d - r, c.r);
+                ++blended;
+            }
+        }
+    /* The rim is 2 pi 76 = 478 px long: about that many pixels in each
+     * one-pixel band, half as many in the half-pixel band. */
+    if (!(inside > 400 && outside > 400 && blended > 150))
+        fail_msg("inside %d, outside %d, blended %d", inside, outside, blended);
+    free(img.rgb);
+}
+
+static void test_box_outline_is_drawn_on_the_box_edges(void **state)
+{
+    image img = render_text(*state, "100 100 5\n", 400, NULL);
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 0);
+    const double mid = rl_px(&l, 500);
+    const double edges[4][2] = {
+        {rl_px(&l, 0), mid}, {rl_px(&l, 1000), mid}, {mid, rl_py(&l, 0)}, {mid, rl_py(&l, 1000)}};
+    for (int k = 0; k < 4; ++k) {
+        /* The outline straddles the edge; a step of outline + 1 px either
+         * side of it is clear. */
+        const double dx = k < 2 ? l.outline + 1.0 : 0.0, dy = k < 2 ? 0.0 : l.outline + 1.0;
+        const double x = edges[k][0], y = edges[k][1];
+        assert_colour(pixel(&img, x - 0.25 * l.outline + 0.01, y - 0.25 * l.outline + 0.01),
+                      RC_OUTLINE, "on the box edge");
+        assert_colour(pixel(&img, x + dx, y + dy), RC_BACKGROUND, "beside the edge");
+        assert_colour(pixel(&img, x - dx, y - dy), RC_BACKGROUND, "beside the edge");
+    }
+    free(img.rgb);
+}
+
+static void test_speeds_colour_slow_and_fast_disks_differently(void **state)
+{
+    image img = render_text(*state, "300 500 60 10 0\n700 500 60 0 -240\n", 400, "--vmax 250");
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 1);
+    rgb8 slow = pixel(&img, rl_px(&l, 300), rl_py(&l, 500));
+    rgb8 fast = pixel(&img, rl_px(&l, 700), rl_py(&l, 500));
+    assert_colour(slow, rc_viridis(10.0 / 250.0), "slow disk");
+    assert_colour(fast, rc_viridis(240.0 / 250.0), "fast disk");
+    assert_true(abs(slow.r - fast.r) + abs(slow.g - fast.g) + abs(slow.b - fast.b) > 200);
+    /* The legend's bar shows the map: its middle is the middle colour. */
+    assert_colour(pixel(&img, l.bar_x + 0.5 * l.bar_w, l.bar_y + 0.5 * l.bar_h), rc_viridis(0.5),
+                  "legend middle");
+    free(img.rgb);
+}
+
+static void test_dir_renders_every_frame_of_a_disks_run(void **state)
+{
+    char frames[512], pngs[512];
+    snprintf(frames, sizeof frames, "%s", fresh_dir("run"));
+    snprintf(pngs, sizeof pngs, "%s", fresh_dir("pngs"));
+    char args[1200];
+    snprintf(args, sizeof args, "20 5 --frames 6 --quiet --velocities --out %s", frames);
+    assert_int_equal(run(RENDER_DISKS, args), 0);
+    snprintf(args, sizeof args, "--quiet -j 3 --size 64 --dir %s --out %s", frames, pngs);
+    assert_int_equal(run(*state, args), 0);
+    assert_int_equal(count_files(pngs), 6); /* no temporary left behind */
+    for (int k = 0; k < 6; ++k) {
+        char name[32];
+        snprintf(name, sizeof name, "frame_%04d.png", k);
+        image img = read_png(path_in(pngs, name));
+        assert_int_equal(img.width, 64);
+        free(img.rgb);
+    }
+    /* Without --out the PNGs go next to the frames. */
+    snprintf(args, sizeof args, "--quiet --size 64 --dir %s", frames);
+    assert_int_equal(run(*state, args), 0);
+    assert_int_equal(count_files(frames), 12);
+}
+
+static void test_version_names_the_backend_and_the_gl_renderer(void **state)
+{
+    assert_int_equal(run(*state, "--version"), 0);
+    FILE *f = fopen(path_in(scratch, "stdout.txt"), "rb");
+    assert_non_null(f);
+    char text[1024];
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    assert_non_null(strstr(text, "backend"));
+    assert_non_null(strstr(text, "GL renderer: "));
+}
+
+/* ------------------------------------------------------------------ */
+/* One backend: bad input                                              */
+/* ------------------------------------------------------------------ */
+
+/* Renders the files named in args (relative to scratch/bad) into
+ * scratch/bad-out: must fail with `message` on stderr and write nothing. */
+static void expect_failure(const char *binary, const char *args, const char *message)
+{
+    const char *out = fresh_dir("bad-out");
+    char full[1500];
+    snprintf(full, sizeof full, "--quiet --size 64 --out %s %s", out, args);
+    int st = run(binary, full);
+    const char *err = last_stderr();
+    if (st == 0 || !strstr(err, message))
+        fail_msg("render %s: status %d, stderr \"%s\", want \"%s\"", args, st, err, message);
+    assert_int_equal(count_files(out), 0);
+}
+
+static const char *bad_file(const char *name, const char *bytes, size_t len)
+{
+    const char *dir = path_in(scratch, "bad");
+    mkdir(dir, 0777);
+    char *p = path_in(dir, name);
+    write_bytes(p, bytes, len);
+    return p;
+}
+
+static void test_a_short_line_is_reported_with_file_and_line(void **state)
+{
+    char text[2048] = "";
+    for (int k = 0; k < 36; ++k)
+        strcat(text, "500 500 5\n");
+    strcat(text, "1 2\n");
+    const char *p = bad_file("frame_0012.txt", text, strlen(text));
+    expect_failure(*state, p, "frame_0012.txt:37: expected 3 or 5 numbers");
+}
+
+static void test_an_empty_file_is_refused(void **state)
+{
+    expect_failure(*state, bad_file("empty.txt", "", 0), "empty.txt: empty frame");
+}
+
+static void test_nan_and_infinity_are_refused(void **state)
+{
+    const char nan_text[] = "1 2 3\nnan 5 5\n", inf_text[] = "1 2 inf\n";
+    expect_failure(*state, bad_file("nan.txt", nan_text, strlen(nan_text)),
+                   "nan.txt:2: number is not finite");
+    expect_failure(*state, bad_file("inf.txt", inf_text, strlen(inf_text)),
+                   "inf.txt:1: number is not finite");
+}
+
+static void test_a_negative_radius_is_refused(void **state)
+{
+    const char text[] = "1 2 3\n4 5 -3\n";
+    expect_failure(*state, bad_file("neg.txt", text, strlen(text)),
+                   "neg.txt:2: radius must be positive");
+}
+
+static void test_binary_garbage_is_refused(void **state)
+{
+    const char bytes[] = {'\x7f', 'E', 'L', 'F', '\x02', '\0', '\x01', '\xff', '\n'};
+    expect_failure(*state, bad_file("garbage.txt", bytes, sizeof bytes), "garbage.txt:1: ");
+}
+
+static void test_a_missing_file_is_refused(void **state)
+{
+    expect_failure(*state, path_in(scratch, "no_such_frame.txt"),
+                   "no_such_frame.txt: cannot open: No such file or directory");
+}
+
+static void test_a_bad_frame_among_good_ones_fails_the_run(void **state)
+{
+    const char *good = bad_file("frame_0001.txt", "1 2 3\n", 6);
+    char args[1200];
+    snprintf(args, sizeof args, "-j 1 %s %s", good, path_in(scratch, "bad/neg.txt"));
+    const char text[] = "1 2 3\n4 5 -3\n";
+    bad_file("neg.txt", text, strlen(text));
+    const char *out = fresh_dir("bad-out");
+    char full[1500];
+    snprintf(full, sizeof full, "--quiet --out %s %s", out, args);
+    assert_int_not_equal(run(*state, full), 0);
+    assert_non_null(strstr(last_stderr(), "neg.txt:2: radius must be positive"));
+    /* The good frame rendered before the bad one is complete, the bad one
+     * has no file at all. */
+    assert_int_equal(count_files(out), 1);
+    free(read_png(path_in(out, "frame_0001.png")).rgb);
+}
+
+static void test_directories_that_cannot_be_read_are_refused(void **state)
+{
+    char args[600];
+    snprintf(args, sizeof args, "--dir %s", path_in(scratch, "no_such_dir"));
+    expect_failure(*state, args, "no_such_dir: cannot open directory: No such file or directory");
+    /* A file where a directory should be. */
+    snprintf(args, sizeof args, "--dir %s", bad_file("plain.txt", "1 2 3\n", 6));
+    expect_failure(*state, args, "plain.txt: cannot open directory: Not a directory");
+    /* A directory where a frame should be. */
+    expect_failure(*state, fresh_dir("a_dir.txt"), "a_dir.txt: read error: Is a directory");
+    /* A directory with no frames. */
+    snprintf(args, sizeof args, "--dir %s", fresh_dir("no_frames"));
+    expect_failure(*state, args, "no_frames: no frame_*.txt files");
+    /* Permissions: only meaningful when not root, who reads anything. */
+    if (geteuid() != 0) {
+        const char *locked = fresh_dir("locked");
+        assert_int_equal(chmod(locked, 0), 0);
+        snprintf(args, sizeof args, "--dir %s", locked);
+        expect_failure(*state, args, "locked: cannot open directory: Permission denied");
+        chmod(locked, 0755);
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Backends agree                                                      */
+/* ------------------------------------------------------------------ */
+
+#if defined(RENDER_osmesa) && defined(RENDER_egl)
+/* Both backends run the same shaders on the same rasterizer (llvmpipe on
+ * Mesa), so the images are expected to be identical. The tolerance allows
+ * what a different rasterizer could legitimately change: pixels on an
+ * antialiased edge (within 1.5 px of a disk's rim) may differ by 2 steps. */
+static void test_osmesa_and_egl_draw_the_same_image(void **state)
+{
+    (void)state;
+    const char text[] = "250 250 100 10 0\n750 600 50 -200 30\n510.3 500.7 3.3 0 90\n"
+                        "990 10 8 5 5\n";
+    image a = render_text(RENDER_osmesa, text, 300, NULL);
+    image b = render_text(RENDER_egl, text, 300, NULL);
+    assert_int_equal(a.width, b.width);
+    assert_int_equal(a.height, b.height);
+    rl_layout l;
+    rl_make(&l, 300, 1000.0, 1);
+    size_t differing = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            rgb8 pa = pixel(&a, x + 0.5, y + 0.5), pb = pixel(&b, x + 0.5, y + 0.5);
+            if (pa.r == pb.r && pa.g == pb.g && pa.b == pb.b)
+                continue;
+            ++differing;
+            int on_edge = 0;
+            for (const char *s = text; *s;) {
+                double dx, dy, r;
+                assert_int_equal(sscanf(s, "%lf %lf %lf", &dx, &dy, &r), 3);
+                double d = hypot(x + 0.5 - rl_px(&l, dx), y + 0.5 - rl_py(&l, dy));
+                on_edge |= fabs(d - r * l.scale) < 1.5;
+                s = strchr(s, '\n') + 1;
+            }
+            if (!on_edge || abs(pa.r - pb.r) > 2 || abs(pa.g - pb.g) > 2 || abs(pa.b - pb.b) > 2)
+                fail_msg("pixel (%d,%d): osmesa (%d,%d,%d), egl (%d,%d,%d)", x, y, pa.r, pa.g, pa.b,
+                         pb.r, pb.g, pb.b);
+        }
+    print_message("osmesa and egl: %zu of %d pixels differ\n", differing, a.width * a.height);
+    free(a.rgb);
+    free(b.rgb);
+}
+#endif
+
+/* ------------------------------------------------------------------ */
+
+#define BACKEND_TESTS(binary)                                                                      \
+    cmocka_unit_test_prestate(test_image_has_the_requested_size, binary),                          \
+        cmocka_unit_test_prestate(                                                                 \
+            test_disk_centres_have_the_disk_colour_and_empty_space_the_background, binary),        \
+        cmocka_unit_test_prestate(test_y_axis_points_up, binary),                                  \
+        cmocka_unit_test_prestate(test_disk_edges_are_antialiased, binary),                        \
+        cmocka_unit_test_prestate(test_box_outline_is_drawn_on_the_box_edges, binary),             \
+        cmocka_unit_test_prestate(test_speeds_colour_slow_and_fast_disks_differently, binary),     \
+        cmocka_unit_test_prestate(test_dir_renders_every_frame_of_a_disks_run, binary),            \
+        cmocka_unit_test_prestate(test_version_names_the_backend_and_the_gl_renderer, binary),     \
+        cmocka_unit_test_prestate(test_a_short_line_is_reported_with_file_and_line, binary),       \
+        cmocka_unit_test_prestate(test_an_empty_file_is_refused, binary),                          \
+        cmocka_unit_test_prestate(test_nan_and_infinity_are_refused, binary),                      \
+        cmocka_unit_test_prestate(test_a_negative_radius_is_refused, binary),                      \
+        cmocka_unit_test_prestate(test_binary_garbage_is_refused, binary),                         \
+        cmocka_unit_test_prestate(test_a_missing_file_is_refused, binary),                         \
+        cmocka_unit_test_prestate(test_a_bad_frame_among_good_ones_fails_the_run, binary),         \
+        cmocka_unit_test_prestate(test_directories_that_cannot_be_read_are_refused, binary)
+
+int main(void)
+{
+    const struct CMUnitTest colours[] = {
+        cmocka_unit_test(test_viridis_gets_lighter_from_slow_to_fast),
+        cmocka_unit_test(test_speed_scale_is_two_and_a_half_rms_speeds),
+    };
+    int failed = cmocka_run_group_tests_name("render colour map", colours, NULL, NULL);
+#ifdef RENDER_osmesa
+    const struct CMUnitTest osmesa[] = {BACKEND_TESTS((void *)RENDER_osmesa)};
+    failed +=
+        cmocka_run_group_tests_name("render, osmesa backend", osmesa, make_scratch, remove_scratch);
+#endif
+#ifdef RENDER_egl
+    const struct CMUnitTest egl[] = {BACKEND_TESTS((void *)RENDER_egl)};
+    failed += cmocka_run_group_tests_name("render, egl backend", egl, make_scratch, remove_scratch);
+#endif
+#if defined(RENDER_osmesa) && defined(RENDER_egl)
+    const struct CMUnitTest both[] = {
+        cmocka_unit_test(test_osmesa_and_egl_draw_the_same_image),
+    };
+    failed +=
+        cmocka_run_group_tests_name("render, backends agree", both, make_scratch, remove_scratch);
+#else
+    print_message("render: one backend only, the cross-backend comparison is skipped\n");
+#endif
+    return failed ? 1 : 0;
+}
