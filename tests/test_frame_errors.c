@@ -4,8 +4,20 @@
 #include "test_util.h"
 
 #include <errno.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+/* AddressSanitizer reserves terabytes of shadow memory, so an address-space
+ * limit cannot be used under it. */
+#if defined(__SANITIZE_ADDRESS__)
+#define DS_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define DS_ASAN 1
+#endif
+#endif
 
 /* Parses text and expects DS_ERR_FORMAT at the given line, with a message
  * containing want, and an empty frame left behind. */
@@ -191,6 +203,35 @@ static void test_bad_parameters_are_refused_with_arg_error(void **state)
     assert_null(sim);
 }
 
+static void test_an_allocation_failure_is_reported_not_fatal(void **state)
+{
+    (void)state;
+#ifdef DS_ASAN
+    skip();
+#endif
+    const char *preload = getenv("LD_PRELOAD");
+    if (preload && strstr(preload, "vgpreload"))
+        skip(); /* valgrind replaces malloc and ignores the limit */
+    /* In a child limited to 256 MiB of address space, 20 million disks
+     * (~900 MB of arrays) cannot be allocated: ds_create must say so. */
+    fflush(NULL);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        struct rlimit rl = {(rlim_t)256 << 20, (rlim_t)256 << 20};
+        if (setrlimit(RLIMIT_AS, &rl) != 0)
+            _exit(2);
+        ds_params p = ds_default_params(20000000, 0.01);
+        ds_sim *sim = NULL;
+        ds_status st = ds_create(&p, &sim);
+        _exit(st == DS_ERR_NOMEM && sim == NULL ? 0 : 1);
+    }
+    int ws = 0;
+    assert_int_equal(waitpid(pid, &ws, 0), pid);
+    assert_true(WIFEXITED(ws));
+    assert_int_equal(WEXITSTATUS(ws), 0);
+}
+
 static void test_two_simulations_in_one_process_do_not_interfere(void **state)
 {
     (void)state;
@@ -231,6 +272,7 @@ int main(void)
         cmocka_unit_test(test_a_written_frame_reads_back_exactly),
         cmocka_unit_test(test_null_arguments_are_refused_not_dereferenced),
         cmocka_unit_test(test_bad_parameters_are_refused_with_arg_error),
+        cmocka_unit_test(test_an_allocation_failure_is_reported_not_fatal),
         cmocka_unit_test(test_two_simulations_in_one_process_do_not_interfere),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
