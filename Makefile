@@ -17,6 +17,8 @@ ifeq ($(SANITIZE),1)
   BUILD   ?= build-san
   CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
   LDFLAGS += -fsanitize=address,undefined
+  # Mesa never frees its per-process driver state: only that is suppressed.
+  export LSAN_OPTIONS := suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 endif
 BUILD ?= build
 OUT   := $(if $(filter build,$(BUILD)),,$(BUILD)/)
