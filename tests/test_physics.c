@@ -249,10 +249,12 @@ static void test_speeds_start_equal_and_fail_the_rayleigh_ks_test(void **state)
 static void test_speeds_relax_to_rayleigh_within_20_time_units(void **state)
 {
     (void)state;
-    /* N = 2000, R = 3: mean free path 1 / (sqrt2 n 2R) ~ 59 at speed ~ 90,
-     * so 20 s is ~30 collisions per disk, many times the few a speed needs
-     * to forget its start. Quick mode keeps the area fraction and the 20 s
-     * with 500 disks of R = 6 (mean free path 118, still ~15 collisions). */
+    /* N = 2000, R = 3: two disks meet when their centres pass within 2R,
+     * a target 4R wide, so the mean free path is 1 / (sqrt2 n 4R) ~ 29 at
+     * mean speed ~ 89: ~3.4 collisions per disk per time unit (the run
+     * counts 3.3), ~60 by t = 20, many times the few a speed needs to
+     * forget its start. Quick mode keeps the area fraction and the 20 time
+     * units with 500 disks of R = 6 (mean free path 59, still ~30). */
     const size_t n = quick_mode() ? 500 : 2000;
     const double r = quick_mode() ? 6.0 : 3.0;
     ds_sim *sim = test_create(n, r, 2, DS_AUTO);
