@@ -302,7 +302,7 @@ static void test_dilute_gas_pressure_matches_the_ideal_gas_law(void **state)
     (void)state;
     /* N = 200, R = 1: area fraction 6e-4, second virial correction 2 eta
      * ~ 1e-3. A late reflection lengthens each crossing by ~v dt, 1e-4 of
-     * the 990-unit span. Both are far below the statistical tolerance, 4
+     * the 998-unit span. Both are far below the statistical tolerance, 4
      * sigma of the hit count (a fresh seed fails with probability < 1e-4). */
     uint64_t hits = 0;
     double ratio = pressure_over_ideal(200, 1.0, 20000, long_run(500000), &hits);
