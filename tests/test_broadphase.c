@@ -1,0 +1,299 @@
+/* Broad phases: every one reports exactly the overlapping pairs the
+ * all-pairs reference reports, each once, over random configurations
+ * (sparse, dense, on the walls, with many equal coordinates), before and
+ * after the disks move; and the insertion sort keeps every disk's data
+ * together while it sorts. */
+#include "test_util.h"
+
+#include "sim_internal.h"
+
+/* ------------------------------------------------------------ helpers */
+
+typedef struct pair_list {
+    uint64_t *pairs; /* (min id << 32) | max id */
+    size_t count, cap;
+} pair_list;
+
+static void record_pair(ds_sim *sim, size_t a, size_t b, void *ctx)
+{
+    pair_list *list = ctx;
+    assert_true(a != b);
+    assert_true(a < sim->n && b < sim->n);
+    uint64_t ia = sim->id[a], ib = sim->id[b];
+    if (list->count == list->cap) {
+        list->cap = list->cap ? 2 * list->cap : 256;
+        list->pairs = realloc(list->pairs, list->cap * sizeof *list->pairs);
+        assert_non_null(list->pairs);
+    }
+    list->pairs[list->count++] = ia < ib ? ia << 32 | ib : ib << 32 | ia;
+}
+
+static int compare_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* The pairs the simulation's own broad phase reports, sorted by id. */
+static pair_list pairs_found(ds_sim *sim, ds_broadphase bp)
+{
+    pair_list list = {NULL, 0, 0};
+    ds_broadphase own = sim->broadphase;
+    sim->broadphase = bp; /* brute force works on any slot order */
+    ds_bp_find_pairs(sim, record_pair, &list);
+    sim->broadphase = own;
+    ds_rebuild_slots(sim);
+    if (list.count)
+        qsort(list.pairs, list.count, sizeof *list.pairs, compare_u64);
+    return list;
+}
+
+/* The broad phase under test against brute force on the current state;
+ * returns the number of pairs so callers can check a case is not empty. */
+static size_t assert_same_pairs_as_brute_force(ds_sim *sim)
+{
+    pair_list got = pairs_found(sim, sim->broadphase);
+    pair_list want = pairs_found(sim, DS_BRUTE_FORCE);
+    assert_int_equal(got.count, want.count);
+    for (size_t k = 0; k < want.count; ++k)
+        assert_true(got.pairs[k] == want.pairs[k]); /* also: no pair twice */
+    free(got.pairs);
+    free(want.pairs);
+    return want.count;
+}
+
+typedef enum layout {
+    UNIFORM,      /* anywhere in [R, box-R]^2, overlaps allowed */
+    ON_WALLS,     /* every coordinate exactly R or box-R, or uniform */
+    COARSE_GRID,  /* coordinates on a grid of step R/2: many equal x and y */
+    CLUSTERED     /* all in a small square: every disk overlaps ~20 */
+} layout;
+
+/* Places every disk by ds_set (velocities random, speed ~100). */
+static void scatter(ds_sim *sim, layout how, ds_rng *rng)
+{
+    const double r = ds_radius(sim), box = ds_box(sim), lo = r, hi = box - r;
+    /* Clusters sized for ~20 overlapping neighbours per disk. */
+    const double spread = 3.0 * r * sqrt((double)ds_count(sim) / 50.0 + 1.0);
+    for (size_t i = 0; i < ds_count(sim); ++i) {
+        ds_disk d;
+        d.x = ds_rng_uniform(rng, lo, hi);
+        d.y = ds_rng_uniform(rng, lo, hi);
+        switch (how) {
+        case UNIFORM:
+            break;
+        case ON_WALLS:
+            if (ds_rng_next(rng) & 1u)
+                d.x = (ds_rng_next(rng) & 1u) ? lo : hi;
+            if (ds_rng_next(rng) & 1u)
+                d.y = (ds_rng_next(rng) & 1u) ? lo : hi;
+            break;
+        case COARSE_GRID:
+            d.x = lo + 0.5 * r * floor((d.x - lo) / (0.5 * r));
+            d.y = lo + 0.5 * r * floor((d.y - lo) / (0.5 * r));
+            break;
+        case CLUSTERED:
+            d.x = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
+            d.y = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
+            break;
+        }
+        d.vx = ds_rng_uniform(rng, -100.0, 100.0);
+        d.vy = ds_rng_uniform(rng, -100.0, 100.0);
+        assert_int_equal(ds_set(sim, i, d), DS_OK);
+    }
+}
+
+/* Sizes and radii from sparse (a few pairs) to dense (thousands). */
+static const struct {
+    size_t n;
+    double radius;
+} CASES[] = {{1, 5.0}, {2, 300.0}, {9, 5.0}, {50, 40.0}, {400, 5.0}, {400, 20.0},
+             {1000, 1.0}, {1500, 12.0}, {2000, 3.0}};
+
+static void check_broad_phase(ds_broadphase bp)
+{
+    ds_rng rng;
+    ds_rng_seed(&rng, 42 + (uint64_t)bp);
+    size_t total = 0;
+    for (size_t c = 0; c < sizeof CASES / sizeof CASES[0]; ++c) {
+        ds_sim *sim = test_create(CASES[c].n, 1e-3, 7 + c, bp);
+        /* ds_create refuses overlapping packings; these tests want any
+         * configuration, so create small disks and widen them here. */
+        sim->radius = CASES[c].radius;
+        if (bp == DS_SAP_STRIPS) { /* strip geometry depends on R: rebuild */
+            ds_strips_destroy(sim);
+            assert_int_equal(ds_strips_create(sim), DS_OK);
+            ds_rebuild_slots(sim);
+        }
+        for (int how = UNIFORM; how <= CLUSTERED; ++how)
+            for (int rep = 0; rep < 4; ++rep) {
+                scatter(sim, (layout)how, &rng);
+                total += assert_same_pairs_as_brute_force(sim);
+                /* Let them move (and collide) from there: the broad phase
+                 * now works from its previous order, as in a run. */
+                for (int s = 0; s < 3; ++s) {
+                    ds_run(sim, 7);
+                    total += assert_same_pairs_as_brute_force(sim);
+                }
+            }
+        ds_destroy(sim);
+    }
+    assert_true(total > 10000); /* the cases are not all empty */
+}
+
+/* ------------------------------------------------------------ tests */
+
+static void test_sap_finds_exactly_the_brute_force_pairs(void **state)
+{
+    (void)state;
+    check_broad_phase(DS_SAP);
+}
+
+static void test_strips_find_exactly_the_brute_force_pairs(void **state)
+{
+    (void)state;
+    check_broad_phase(DS_SAP_STRIPS);
+}
+
+/* A long run at the seed's density: strips keep agreeing with brute force
+ * while disks cross strip boundaries thousands of times. */
+static void test_strips_agree_with_brute_force_over_a_long_run(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(3000, 2.0, 11, DS_SAP_STRIPS);
+    size_t pairs = 0;
+    for (int k = 0; k < 40; ++k) {
+        ds_run(sim, 50);
+        pairs += assert_same_pairs_as_brute_force(sim);
+    }
+    assert_true(pairs > 0);
+    ds_destroy(sim);
+}
+
+/* Every disk keeps its own state through the strips' merges and sorts:
+ * teleport all disks (most change strip), find pairs, read them back. */
+static void test_strips_keep_each_disk_with_its_own_data(void **state)
+{
+    (void)state;
+    enum { N = 2000 };
+    ds_sim *sim = test_create(N, 2.0, 3, DS_SAP_STRIPS);
+    ds_rng rng;
+    ds_rng_seed(&rng, 9);
+    static ds_disk want[N];
+    for (int round = 0; round < 5; ++round) {
+        for (size_t i = 0; i < N; ++i) {
+            /* Small moves in some rounds, jumps across the box in others. */
+            ds_disk d = ds_get(sim, i);
+            double jump = round % 2 ? 900.0 : 3.0;
+            d.x = fmin(fmax(d.x + ds_rng_uniform(&rng, -jump, jump), 2.0), 998.0);
+            d.y = fmin(fmax(d.y + ds_rng_uniform(&rng, -jump, jump), 2.0), 998.0);
+            d.vx = -(double)i;
+            d.vy = (double)i + 0.5 * round;
+            want[i] = d;
+            assert_int_equal(ds_set(sim, i, d), DS_OK);
+        }
+        pair_list list = pairs_found(sim, DS_SAP_STRIPS); /* records, resolves nothing */
+        free(list.pairs);
+        for (size_t i = 0; i < N; ++i) {
+            ds_disk d = ds_get(sim, i);
+            assert_true(d.x == want[i].x && d.y == want[i].y);
+            assert_true(d.vx == want[i].vx && d.vy == want[i].vy);
+        }
+    }
+    ds_destroy(sim);
+}
+
+typedef enum order { SORTED, REVERSED, TIED, RANDOM } order;
+
+/* Fills slots with x in the given order, and y, vx, vy derived from the
+ * disk's id so a separated record shows up. */
+static void fill_for_sort(ds_sim *sim, order how, ds_rng *rng)
+{
+    const size_t n = sim->n;
+    for (size_t k = 0; k < n; ++k) {
+        double x = 0.0;
+        switch (how) {
+        case SORTED:
+            x = (double)k;
+            break;
+        case REVERSED:
+            x = (double)(n - k);
+            break;
+        case TIED:
+            x = (double)(ds_rng_next(rng) % 4u); /* four distinct values */
+            break;
+        case RANDOM:
+            x = ds_rng_uniform(rng, 0.0, 1000.0);
+            break;
+        }
+        sim->x[k] = x;
+        sim->id[k] = (uint32_t)k;
+        sim->y[k] = 1000.0 + (double)k;
+        sim->vx[k] = 2000.0 + (double)k;
+        sim->vy[k] = 3000.0 + (double)k;
+    }
+}
+
+static void assert_sorted_and_consistent(const ds_sim *sim)
+{
+    const size_t n = sim->n;
+    unsigned char *seen = calloc(n, 1);
+    assert_non_null(seen);
+    for (size_t k = 0; k < n; ++k) {
+        if (k > 0)
+            assert_true(sim->x[k - 1] <= sim->x[k]);
+        uint32_t i = sim->id[k];
+        assert_true(i < n);
+        assert_false(seen[i]); /* a permutation: every id exactly once */
+        seen[i] = 1;
+        assert_true(sim->y[k] == 1000.0 + (double)i);
+        assert_true(sim->vx[k] == 2000.0 + (double)i);
+        assert_true(sim->vy[k] == 3000.0 + (double)i);
+    }
+    assert_true(isinf(sim->x[n])); /* the sentinel is left alone */
+    free(seen);
+}
+
+static void test_insertion_sort_keeps_records_together(void **state)
+{
+    (void)state;
+    ds_rng rng;
+    ds_rng_seed(&rng, 5);
+    static const size_t sizes[] = {1, 2, 3, 17, 500};
+    for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s)
+        for (int how = SORTED; how <= RANDOM; ++how) {
+            ds_sim *sim = test_create(sizes[s], 1.0, 1, DS_SAP);
+            fill_for_sort(sim, (order)how, &rng);
+            ds_bp_insertion_sort_x(sim);
+            assert_sorted_and_consistent(sim);
+            ds_destroy(sim);
+        }
+}
+
+static void test_insertion_sort_is_stable_for_equal_x(void **state)
+{
+    (void)state;
+    ds_rng rng;
+    ds_rng_seed(&rng, 6);
+    ds_sim *sim = test_create(300, 1.0, 1, DS_SAP);
+    fill_for_sort(sim, TIED, &rng);
+    ds_bp_insertion_sort_x(sim);
+    /* Equal keys keep their earlier order: ids ascend within each tie. */
+    for (size_t k = 1; k < sim->n; ++k)
+        if (sim->x[k - 1] == sim->x[k])
+            assert_true(sim->id[k - 1] < sim->id[k]);
+    ds_destroy(sim);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sap_finds_exactly_the_brute_force_pairs),
+        cmocka_unit_test(test_strips_find_exactly_the_brute_force_pairs),
+        cmocka_unit_test(test_strips_agree_with_brute_force_over_a_long_run),
+        cmocka_unit_test(test_strips_keep_each_disk_with_its_own_data),
+        cmocka_unit_test(test_insertion_sort_keeps_records_together),
+        cmocka_unit_test(test_insertion_sort_is_stable_for_equal_x),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
