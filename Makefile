@@ -35,7 +35,7 @@ all: $(LIB) $(DISKS)
 $(BUILD):
 	@mkdir -p $(BUILD)
 
-$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h | $(BUILD)
+$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/sweep_block.h | $(BUILD)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)

@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "sim_internal.h"
+#include "sweep_block.h"
 
 void ds_bp_insertion_sort_x(ds_sim *sim)
 {
@@ -74,56 +75,13 @@ static size_t sweep_window(ds_sim *sim, size_t i, size_t j, double xlim, ds_pair
     return j;
 }
 
-#if defined(__SSE2__)
-/* The window after disk i holds ~ n 2R / box disks (4 in the seed case)
- * and its length varies from disk to disk, so a loop that exits on
- * x[j] >= xlim mispredicts its exit about once per disk, which costs more
- * than the tests themselves. Instead a fixed block of BLOCK candidates is
- * tested two at a time, each hit masked by x[j] < xlim: no data-dependent
- * branch unless the whole block lies inside the window (then the scalar
- * loop takes over; ~5% of disks in the seed case) or a pair overlaps.
- * Same arithmetic as the scalar test (separate multiply and add, no fused
- * multiply-add), so the same pairs to the last bit. */
-#include <emmintrin.h>
-
+/* Blocks of BLOCK = 8 candidates per disk, tested four at a time without
+ * a data-dependent branch (see sweep_block.h): the window after disk i
+ * holds ~ n 2R / box disks (4 in the seed case), so the scalar loop takes
+ * over only for the ~5% of disks whose window fills the whole block. */
 #define BLOCK 8
 
-/* Tests candidates j .. j+3 against disk i: bit k of *inside says
- * x[j+k] < xlim, bit k of the result says the pair overlaps. */
-static inline unsigned test_four(const double *x, const double *y, size_t j, __m128d xi,
-                                 __m128d yi, __m128d lim, __m128d d2max, unsigned *inside)
-{
-    const __m128d xa = _mm_loadu_pd(x + j), xb = _mm_loadu_pd(x + j + 2);
-    const __m128d dxa = _mm_sub_pd(xa, xi), dxb = _mm_sub_pd(xb, xi);
-    const __m128d dya = _mm_sub_pd(_mm_loadu_pd(y + j), yi);
-    const __m128d dyb = _mm_sub_pd(_mm_loadu_pd(y + j + 2), yi);
-    const __m128d closea = _mm_cmplt_pd(_mm_add_pd(_mm_mul_pd(dxa, dxa), _mm_mul_pd(dya, dya)), d2max);
-    const __m128d closeb = _mm_cmplt_pd(_mm_add_pd(_mm_mul_pd(dxb, dxb), _mm_mul_pd(dyb, dyb)), d2max);
-    /* Each 64-bit mask lane is all ones or all zeros: take one 32-bit half
-     * of each to pack four lanes into one movemask. */
-    const __m128 in4 = _mm_shuffle_ps(_mm_castpd_ps(_mm_cmplt_pd(xa, lim)),
-                                      _mm_castpd_ps(_mm_cmplt_pd(xb, lim)), _MM_SHUFFLE(2, 0, 2, 0));
-    const __m128 close4 = _mm_shuffle_ps(_mm_castpd_ps(closea), _mm_castpd_ps(closeb),
-                                         _MM_SHUFFLE(2, 0, 2, 0));
-    *inside = (unsigned)_mm_movemask_ps(in4);
-    return (unsigned)_mm_movemask_ps(close4);
-}
-
-/* Disks inside the window among the block: x is sorted, so the inside
- * bits are a prefix and their count is the number of trailing ones. */
-static inline unsigned prefix_length(unsigned mask)
-{
-#if defined(__GNUC__)
-    return (unsigned)__builtin_ctz(~mask); /* one instruction (bsf/tzcnt) */
-#else
-    unsigned c = 0;
-    for (; mask & 1u; mask >>= 1)
-        ++c;
-    return c;
-#endif
-}
-
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#if defined(__GNUC__) && defined(__x86_64__)
 /* The same block test with 256-bit AVX registers, four candidates per
  * instruction, compiled for AVX whatever the build flags and used only on
  * a CPU that has it. Same arithmetic (no FMA), so the same pairs. */
@@ -160,7 +118,7 @@ __attribute__((target("avx"))) static uint64_t sweep_sap_avx(ds_sim *sim, ds_pai
         for (size_t j = i + 1; hit; ++j, hit >>= 1)
             if (hit & 1u)
                 on_pair(sim, i, j, ctx);
-        size_t end = i + 1 + prefix_length(inside_bits);
+        size_t end = i + 1 + ds_prefix_length(inside_bits);
         if (inside_bits == (1u << BLOCK) - 1u)
             end = sweep_window(sim, i, end, xlim, on_pair, ctx);
         tested += end - i - 1;
@@ -173,12 +131,11 @@ __attribute__((target("avx"))) static uint64_t sweep_sap_avx(ds_sim *sim, ds_pai
 }
 #endif
 
-static uint64_t sweep_sap_sse2(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
+static uint64_t sweep_sap_blocks(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
 {
     const size_t n = sim->n;
     const double *restrict x = sim->x, *restrict y = sim->y;
-    const double diameter = 2.0 * sim->radius;
-    const __m128d d2max = _mm_set1_pd(diameter * diameter);
+    const double diameter = 2.0 * sim->radius, d2max = diameter * diameter;
     uint64_t tested = 0;
 
     /* x[n] = +inf is a sentinel: no window runs past it. A block reads
@@ -186,18 +143,16 @@ static uint64_t sweep_sap_sse2(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
     const size_t block_end = n >= BLOCK ? n - BLOCK + 1 : 0;
     size_t i = 0;
     for (; i < block_end; ++i) {
-        const double xlim = x[i] + diameter;
-        const __m128d xi = _mm_set1_pd(x[i]), yi = _mm_set1_pd(y[i]);
-        const __m128d lim = _mm_set1_pd(xlim);
+        const double xi = x[i], yi = y[i], xlim = xi + diameter;
         unsigned in_lo, in_hi;
-        const unsigned close_lo = test_four(x, y, i + 1, xi, yi, lim, d2max, &in_lo);
-        const unsigned close_hi = test_four(x, y, i + 5, xi, yi, lim, d2max, &in_hi);
+        const unsigned close_lo = ds_test_four(x, y, i + 1, xi, yi, xlim, d2max, &in_lo);
+        const unsigned close_hi = ds_test_four(x, y, i + 5, xi, yi, xlim, d2max, &in_hi);
         const unsigned inside_bits = in_lo | in_hi << 4;
         unsigned hit = inside_bits & (close_lo | close_hi << 4);
         for (size_t j = i + 1; hit; ++j, hit >>= 1)
             if (hit & 1u)
                 on_pair(sim, i, j, ctx);
-        size_t end = i + 1 + prefix_length(inside_bits);
+        size_t end = i + 1 + ds_prefix_length(inside_bits);
         if (inside_bits == (1u << BLOCK) - 1u)
             end = sweep_window(sim, i, end, xlim, on_pair, ctx);
         tested += end - i - 1;
@@ -215,21 +170,8 @@ static uint64_t sweep_sap(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
     if (__builtin_cpu_supports("avx"))
         return sweep_sap_avx(sim, on_pair, ctx);
 #endif
-    return sweep_sap_sse2(sim, on_pair, ctx);
+    return sweep_sap_blocks(sim, on_pair, ctx);
 }
-#else
-static uint64_t sweep_sap(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
-{
-    const size_t n = sim->n;
-    const double diameter = 2.0 * sim->radius;
-    uint64_t tested = 0;
-    for (size_t i = 0; i < n; ++i) {
-        const size_t end = sweep_window(sim, i, i + 1, sim->x[i] + diameter, on_pair, ctx);
-        tested += end - i - 1;
-    }
-    return tested;
-}
-#endif
 
 static uint64_t sweep_brute_force(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
 {

@@ -29,12 +29,23 @@
 #include <string.h>
 
 #include "sim_internal.h"
+#include "sweep_block.h"
+
+/* The per-disk helpers of the hot loops must inline; gcc's size heuristic
+ * otherwise keeps them out of line at their two call sites. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
 
 /* Strip height as a multiple of 2R. Taller strips mean fewer crossings
  * (each one costs a merge pass) but more candidates per disk (6 n R h /
  * box^2, all rejected cheaply); 2 was the fastest from 10^3 to 10^6 disks
  * at area fraction 0.1 in `make bench`. */
+#ifndef STRIP_HEIGHT_DIAMETERS
 #define STRIP_HEIGHT_DIAMETERS 2.0
+#endif
 
 struct ds_strips {
     size_t count;           /* S */
@@ -112,7 +123,7 @@ static void swap_u32(uint32_t **a, uint32_t **b)
     *b = t;
 }
 
-/* Makes the second set of arrays current, and next_start the layout. */
+/* Exchanges the simulation's arrays with the second set. */
 static void swap_buffers(ds_sim *sim, struct ds_strips *st)
 {
     swap_double(&sim->x, &st->x);
@@ -120,16 +131,18 @@ static void swap_buffers(ds_sim *sim, struct ds_strips *st)
     swap_double(&sim->vx, &st->vx);
     swap_double(&sim->vy, &st->vy);
     swap_u32(&sim->id, &st->id);
-    swap_u32(&st->start, &st->next_start);
 }
 
-static void copy_disk(const ds_sim *sim, struct ds_strips *st, size_t from, size_t to)
+/* Copies slot `from` of the previous arrays (st, after swap_buffers) to
+ * slot `to` of the current ones. */
+static ALWAYS_INLINE void copy_disk(ds_sim *restrict sim, const struct ds_strips *restrict st,
+                                    size_t from, size_t to)
 {
-    st->x[to] = sim->x[from];
-    st->y[to] = sim->y[from];
-    st->vx[to] = sim->vx[from];
-    st->vy[to] = sim->vy[from];
-    st->id[to] = sim->id[from];
+    sim->x[to] = st->x[from];
+    sim->y[to] = st->y[from];
+    sim->vx[to] = st->vx[from];
+    sim->vy[to] = st->vy[from];
+    sim->id[to] = st->id[from];
 }
 
 /* Insertion sort of the slot list [lo, hi) by x. The lists are short
@@ -166,39 +179,38 @@ static void bucket_movers(const ds_sim *sim, struct ds_strips *st, size_t nm)
         sort_slots_by_x(st->incoming, b[t], b[t + 1], sim->x);
 }
 
-/* Merges, strip by strip, the disks that stay (slots not in mover[],
- * in their current order) with the bucket of incoming disks, by x, into
- * the second arrays; then swaps. */
-static void merge_strips(ds_sim *sim, struct ds_strips *st, size_t nm)
+/* Writes strip t of the new layout at w: the disks that stay (slots of
+ * the previous arrays not in mover[], in their previous order) merged by x
+ * with the bucket of incoming disks. *mp walks mover[], which is in slot
+ * order. Returns the end of the strip. */
+static size_t merge_strip(ds_sim *sim, struct ds_strips *st, size_t t, size_t w, size_t nm,
+                          size_t *mp)
 {
-    const double *x = sim->x;
-    size_t w = 0, mp = 0;
-    for (size_t t = 0; t < st->count; ++t) {
-        st->next_start[t] = (uint32_t)w;
-        size_t k = st->start[t];
-        const size_t end = st->start[t + 1];
-        size_t in = st->bucket_start[t];
-        const size_t in_end = st->bucket_start[t + 1];
-        for (;;) {
-            while (k < end && mp < nm && st->mover[mp] == k) { /* leaving: skip */
-                ++k;
-                ++mp;
-            }
-            if (k < end && (in == in_end || !(x[st->incoming[in]] < x[k])))
-                copy_disk(sim, st, k++, w++);
-            else if (in < in_end)
-                copy_disk(sim, st, st->incoming[in++], w++);
-            else
-                break;
+    const double *x = st->x; /* previous arrays */
+    size_t k = st->start[t], m = *mp;
+    const size_t end = st->start[t + 1];
+    size_t in = st->bucket_start[t];
+    const size_t in_end = st->bucket_start[t + 1];
+    st->next_start[t] = (uint32_t)w;
+    for (;;) {
+        while (k < end && m < nm && st->mover[m] == k) { /* leaving: skip */
+            ++k;
+            ++m;
         }
+        if (k < end && (in == in_end || !(x[st->incoming[in]] < x[k])))
+            copy_disk(sim, st, k++, w++);
+        else if (in < in_end)
+            copy_disk(sim, st, st->incoming[in++], w++);
+        else
+            break;
     }
-    st->next_start[st->count] = (uint32_t)w;
-    swap_buffers(sim, st);
+    *mp = m;
+    return w;
 }
 
-/* Finds the disks outside their strip's band and moves them to the strip
- * their centre is in. */
-static void restripe(ds_sim *sim, struct ds_strips *st)
+/* Lists the disks outside their strip's band, with the strip their
+ * centre is now in, and buckets them; returns how many. */
+static size_t find_movers(ds_sim *sim, struct ds_strips *st)
 {
     const double *y = sim->y;
     size_t nm = 0;
@@ -213,41 +225,37 @@ static void restripe(ds_sim *sim, struct ds_strips *st)
             ++nm;
         }
     }
-    if (nm == 0)
-        return;
-    bucket_movers(sim, st, nm);
-    merge_strips(sim, st, nm);
+    if (nm)
+        bucket_movers(sim, st, nm);
+    return nm;
 }
 
-/* Insertion sort by x inside each strip (all arrays move together). */
-static void sort_strips(ds_sim *sim, const struct ds_strips *st)
+/* Insertion sort by x of the slots [lo, hi) (all arrays move together). */
+static void sort_range(ds_sim *sim, size_t lo, size_t hi)
 {
     double *restrict x = sim->x, *restrict y = sim->y;
     double *restrict vx = sim->vx, *restrict vy = sim->vy;
     uint32_t *restrict id = sim->id;
-    for (size_t t = 0; t < st->count; ++t) {
-        const size_t lo = st->start[t], hi = st->start[t + 1];
-        for (size_t k = lo + 1; k < hi; ++k) {
-            const double xk = x[k];
-            if (!(xk < x[k - 1]))
-                continue;
-            const double yk = y[k], vxk = vx[k], vyk = vy[k];
-            const uint32_t idk = id[k];
-            size_t j = k;
-            do {
-                x[j] = x[j - 1];
-                y[j] = y[j - 1];
-                vx[j] = vx[j - 1];
-                vy[j] = vy[j - 1];
-                id[j] = id[j - 1];
-                --j;
-            } while (j > lo && xk < x[j - 1]);
-            x[j] = xk;
-            y[j] = yk;
-            vx[j] = vxk;
-            vy[j] = vyk;
-            id[j] = idk;
-        }
+    for (size_t k = lo + 1; k < hi; ++k) {
+        const double xk = x[k];
+        if (!(xk < x[k - 1]))
+            continue;
+        const double yk = y[k], vxk = vx[k], vyk = vy[k];
+        const uint32_t idk = id[k];
+        size_t j = k;
+        do {
+            x[j] = x[j - 1];
+            y[j] = y[j - 1];
+            vx[j] = vx[j - 1];
+            vy[j] = vy[j - 1];
+            id[j] = id[j - 1];
+            --j;
+        } while (j > lo && xk < x[j - 1]);
+        x[j] = xk;
+        y[j] = yk;
+        vx[j] = vxk;
+        vy[j] = vyk;
+        id[j] = idk;
     }
 }
 
@@ -286,12 +294,13 @@ static void initial_layout(ds_sim *sim, struct ds_strips *st)
     for (size_t m = 0; m < n; ++m)
         st->incoming[b[st->mover_strip[m] + 1]++] = st->mover[m];
 
+    swap_buffers(sim, st);
     for (size_t w = 0; w < n; ++w)
         copy_disk(sim, st, st->incoming[w], w);
-    memcpy(st->next_start, b, st->count * sizeof *b);
-    st->next_start[st->count] = (uint32_t)n;
-    swap_buffers(sim, st);
-    sort_strips(sim, st);
+    memcpy(st->start, b, st->count * sizeof *b);
+    st->start[st->count] = (uint32_t)n;
+    for (size_t t = 0; t < st->count; ++t)
+        sort_range(sim, st->start[t], st->start[t + 1]);
 }
 
 ds_status ds_strips_create(ds_sim *sim)
@@ -379,31 +388,80 @@ static size_t sweep_range(ds_sim *sim, size_t i, size_t j, size_t end, double xl
     return j;
 }
 
+/* Reports the pairs of disk i with the disks of [j, end) that have
+ * x < xlim (a prefix: the range is sorted by x); returns where that prefix
+ * ends. A block of four first, branch-free (see sweep_block.h); the loop
+ * only for longer windows, or near the end of the arrays. */
+static ALWAYS_INLINE size_t sweep_block(ds_sim *sim, size_t i, size_t j, size_t end, double xlim,
+                                 double d2max, ds_pair_fn on_pair, void *ctx)
+{
+    const double *x = sim->x, *y = sim->y;
+    if (j + 3 > sim->n) /* the block would read past the sentinel */
+        return sweep_range(sim, i, j, end, xlim, on_pair, ctx);
+    unsigned inside;
+    const unsigned close = ds_test_four(x, y, j, x[i], y[i], xlim, d2max, &inside);
+    const size_t avail = end - j;
+    inside &= avail >= 4 ? 0xFu : (1u << avail) - 1u;
+    for (unsigned hit = inside & close, k = 0; hit; ++k, hit >>= 1)
+        if (hit & 1u)
+            on_pair(sim, i, j + k, ctx);
+    if (inside == 0xFu)
+        return sweep_range(sim, i, j + 4, end, xlim, on_pair, ctx);
+    return j + ds_prefix_length(inside);
+}
+
+/* Sweeps strip t against itself and against strip t + 1 (if any). */
+static uint64_t sweep_strip(ds_sim *sim, const uint32_t *start, size_t t, size_t strips,
+                            ds_pair_fn on_pair, void *ctx)
+{
+    const double *x = sim->x;
+    const double diameter = 2.0 * sim->radius, d2max = diameter * diameter;
+    const size_t lo = start[t], hi = start[t + 1];
+    const size_t up_hi = t + 1 < strips ? start[t + 2] : hi; /* empty above the top */
+    size_t up = hi; /* first disk above with x > xi - 2R: only moves right */
+    uint64_t tested = 0;
+    for (size_t i = lo; i < hi; ++i) {
+        const double xi = x[i], xlim = xi + diameter, xlow = xi - diameter;
+        size_t end = sweep_block(sim, i, i + 1, hi, xlim, d2max, on_pair, ctx);
+        tested += end - i - 1;
+        /* up advances about one disk per disk: two branch-free steps
+         * (x[up_hi] is readable: the next strip or the sentinel), then a
+         * loop for the rare longer jump. */
+        up += up < up_hi && !(x[up] > xlow);
+        up += up < up_hi && !(x[up] > xlow);
+        while (up < up_hi && !(x[up] > xlow))
+            ++up;
+        end = sweep_block(sim, i, up, up_hi, xlim, d2max, on_pair, ctx);
+        tested += end - up;
+    }
+    return tested;
+}
+
+/* One pass over the strips, bottom to top, while each is in cache: build
+ * strip t (merge, if disks changed strip), sort it, then sweep strip t - 1,
+ * whose own disks and those above are now final. At 10^6 disks this reads
+ * and writes the arrays once per step instead of once per phase. */
 uint64_t ds_strips_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
 {
     struct ds_strips *st = sim->strips;
     if (!st)
         return 0;
-    restripe(sim, st);
-    sort_strips(sim, st);
-
-    const double *x = sim->x;
-    const double diameter = 2.0 * sim->radius;
+    const size_t strips = st->count, nm = find_movers(sim, st);
+    if (nm)
+        swap_buffers(sim, st); /* sim: arrays to fill; st: previous ones */
+    const uint32_t *start = nm ? st->next_start : st->start;
     uint64_t tested = 0;
-    for (size_t t = 0; t < st->count; ++t) {
-        const size_t lo = st->start[t], hi = st->start[t + 1];
-        /* The strip above (none for the top strip: an empty range). */
-        const size_t up_hi = t + 1 < st->count ? st->start[t + 2] : hi;
-        size_t up = hi; /* first disk above with x > xi - 2R; moves right only */
-        for (size_t i = lo; i < hi; ++i) {
-            const double xi = x[i], xlim = xi + diameter, xlow = xi - diameter;
-            size_t end = sweep_range(sim, i, i + 1, hi, xlim, on_pair, ctx);
-            tested += end - i - 1;
-            while (up < up_hi && !(x[up] > xlow))
-                ++up;
-            end = sweep_range(sim, i, up, up_hi, xlim, on_pair, ctx);
-            tested += end - up;
+    size_t w = 0, mp = 0;
+    for (size_t t = 0; t < strips; ++t) {
+        if (nm) {
+            w = merge_strip(sim, st, t, w, nm, &mp);
+            st->next_start[t + 1] = (uint32_t)w; /* strip t's end, for its sweep */
         }
+        sort_range(sim, start[t], start[t + 1]);
+        if (t > 0)
+            tested += sweep_strip(sim, start, t - 1, strips, on_pair, ctx);
     }
-    return tested;
+    if (nm)
+        swap_u32(&st->start, &st->next_start);
+    return tested + sweep_strip(sim, st->start, strips - 1, strips, on_pair, ctx);
 }
