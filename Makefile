@@ -100,6 +100,21 @@ bad-input-table: all $(BUILD)/tests/test_cli
 clean:
 	rm -rf build build-san build-fuzz libdisksim.a disks
 
+# ---------------------------------------------------------------- bench
+# `make bench` prints the performance table of the README (under a minute
+# on 2 cores; run it on an otherwise idle machine).
+.PHONY: bench
+$(OUT)tools/bench: tools/bench.c $(LIB) include/disk_sim.h
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+bench: $(OUT)tools/bench
+	./$(OUT)tools/bench
+
+clean: clean-bench
+clean-bench:
+	rm -f tools/bench
+
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,
 # `make install` and `make uninstall` (PREFIX, default /usr/local, and

@@ -1,0 +1,269 @@
+/* bench: how fast the broad phases are, how they scale, what placement and
+ * output cost. Uses the public API only; prints a table and asserts
+ * nothing (timings depend on the machine and its load).
+ *
+ *   tools/bench            every case (under a minute on 2 cores)
+ *   tools/bench scale N    one scaling case, e.g. under /usr/bin/time -v
+ *
+ * Ratios are between figures measured in the same run, so they are less
+ * sensitive to the machine than the absolute times. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "disk_sim.h"
+
+#define AREA_FRACTION 0.1
+#define BOX 1000.0
+#define PI 3.14159265358979323846
+
+typedef struct result {
+    size_t n;
+    double radius;
+    ds_broadphase bp;
+    unsigned long steps;
+    double collision_seconds;
+    double create_seconds;
+    double pairs_per_step;
+} result;
+
+static double fraction_of(size_t n, double r) { return (double)n * PI * r * r / (BOX * BOX); }
+
+static double radius_for_fraction(size_t n, double fraction)
+{
+    return sqrt(fraction * BOX * BOX / ((double)n * PI));
+}
+
+static double ns_per_disk_step(const result *r)
+{
+    return 1e9 * r->collision_seconds / ((double)r->n * (double)r->steps);
+}
+
+static int run_case(size_t n, double radius, ds_broadphase bp, unsigned long steps, result *out)
+{
+    ds_params p = ds_default_params(n, radius);
+    p.broadphase = bp;
+    ds_sim *sim;
+    double t0 = ds_now();
+    ds_status st = ds_create(&p, &sim);
+    double t1 = ds_now();
+    if (st != DS_OK) {
+        fprintf(stderr, "bench: ds_create(N = %zu, R = %g): %s\n", n, radius, ds_status_str(st));
+        return 0;
+    }
+    ds_run(sim, steps);
+    out->n = n;
+    out->radius = radius;
+    out->bp = ds_broadphase_used(sim);
+    out->steps = steps;
+    out->collision_seconds = ds_collision_seconds(sim);
+    out->create_seconds = t1 - t0;
+    out->pairs_per_step = (double)ds_pairs_tested(sim) / (double)steps;
+    ds_destroy(sim);
+    return 1;
+}
+
+static void print_header(void)
+{
+    printf("%-8s %8s %8s %6s %-7s %7s %10s %10s %12s\n", "case", "N", "R", "phi", "broad",
+           "steps", "coll. s", "ns/disk", "tests/step");
+}
+
+static void print_row(const char *name, const result *r)
+{
+    printf("%-8s %8zu %8.4f %6.3f %-7s %7lu %10.4f %10.2f %12.0f\n", name, r->n, r->radius,
+           fraction_of(r->n, r->radius), ds_broadphase_name(r->bp), r->steps,
+           r->collision_seconds, ns_per_disk_step(r), r->pairs_per_step);
+    fflush(stdout);
+}
+
+/* Steps for a scaling case: about 4e7 disk-steps, so each case takes a
+ * fraction of a second to a second whatever N. */
+static unsigned long scaling_steps(size_t n)
+{
+    unsigned long s = (unsigned long)(4e7 / (double)n);
+    return s < 20 ? 20 : s;
+}
+
+/* ------------------------------------------------------------ disks 400 5 */
+
+/* The work of `disks 400 5`, through the same calls: 500 frames, 100 steps
+ * apart, each formatted into a buffer and written with one fwrite to a
+ * temporary file renamed into place, in a temporary directory. */
+static int disks_run(double *sim_seconds, double *out_seconds)
+{
+    char dir[] = "/tmp/disksim-bench-XXXXXX";
+    if (!mkdtemp(dir)) {
+        perror("bench: mkdtemp");
+        return 0;
+    }
+    ds_params p = ds_default_params(400, 5.0);
+    ds_sim *sim;
+    double t0 = ds_now();
+    if (ds_create(&p, &sim) != DS_OK)
+        return 0;
+    double simulated = ds_now() - t0, written = 0.0;
+    size_t cap = ds_frame_size(sim, 0);
+    char *buf = malloc(cap);
+    char path[64], tmp[64];
+    int ok = buf != NULL;
+    for (int frame = 0; ok && frame < 500; ++frame) {
+        if (frame > 0) {
+            t0 = ds_now();
+            ds_run(sim, 100);
+            simulated += ds_now() - t0;
+        }
+        t0 = ds_now();
+        size_t len = 0;
+        snprintf(path, sizeof path, "%s/frame_%04d.txt", dir, frame);
+        snprintf(tmp, sizeof tmp, "%s/.frame_%04d.tmp", dir, frame);
+        FILE *f = fopen(tmp, "wb");
+        ok = f && ds_format_frame(sim, 0, buf, cap, &len) == DS_OK &&
+             fwrite(buf, 1, len, f) == len;
+        ok = f && fclose(f) == 0 && ok && rename(tmp, path) == 0;
+        written += ds_now() - t0;
+    }
+    for (int frame = 0; frame < 500; ++frame) {
+        snprintf(path, sizeof path, "%s/frame_%04d.txt", dir, frame);
+        remove(path);
+    }
+    rmdir(dir);
+    free(buf);
+    ds_destroy(sim);
+    *sim_seconds = simulated;
+    *out_seconds = written;
+    return ok;
+}
+
+static void print_machine(void)
+{
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    char line[256];
+    while (f && fgets(line, sizeof line, f))
+        if (strncmp(line, "model name", 10) == 0) {
+            char *colon = strchr(line, ':');
+            printf("cpu:%s", colon ? colon + 1 : line);
+            break;
+        }
+    if (f)
+        fclose(f);
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    printf("online cpus: %ld; disksim %s\n", cores, ds_version());
+}
+
+static long peak_rss_kb(void)
+{
+    struct rusage u;
+    return getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_maxrss : -1; /* KB on Linux */
+}
+
+/* The broad phase DS_AUTO resolves to for (n, r). */
+static const char *auto_choice(size_t n, double r)
+{
+    ds_params p = ds_default_params(n, r);
+    ds_sim *sim = NULL;
+    /* Creating places the disks; only done for small n. */
+    const char *name = ds_create(&p, &sim) == DS_OK ? ds_broadphase_name(ds_broadphase_used(sim)) : "?";
+    ds_destroy(sim);
+    return name;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 3 && strcmp(argv[1], "scale") == 0) {
+        size_t n = (size_t)strtoul(argv[2], NULL, 10);
+        result r;
+        if (n < 1 || !run_case(n, radius_for_fraction(n, AREA_FRACTION), DS_AUTO,
+                               scaling_steps(n), &r))
+            return 1;
+        print_header();
+        print_row("scale", &r);
+        printf("create %.3f s (%.0f ns per disk), peak RSS %ld KB\n", r.create_seconds,
+               1e9 * r.create_seconds / (double)n, peak_rss_kb());
+        return 0;
+    }
+    if (argc != 1) {
+        fprintf(stderr, "usage: bench [scale N]\n");
+        return 2;
+    }
+    double started = ds_now();
+    print_machine();
+
+    /* 1. The seed case. Brute force runs fewer steps (it tests all 79,800
+     * pairs every step); every figure is per disk-step, so they compare. */
+    printf("\n1. Seed case: N = 400, R = 5. Brute force runs 5,000 steps, not 50,000:\n"
+           "   compare per disk-step.\n");
+    print_header();
+    result sap, brute, strips;
+    if (!run_case(400, 5.0, DS_SAP, 50000, &sap) ||
+        !run_case(400, 5.0, DS_BRUTE_FORCE, 5000, &brute) ||
+        !run_case(400, 5.0, DS_SAP_STRIPS, 50000, &strips))
+        return 1;
+    print_row("seed", &sap);
+    print_row("seed", &brute);
+    print_row("seed", &strips);
+    printf("   brute / sap = %.1f (target >= 50), strips / sap = %.2f; auto picks %s\n",
+           ns_per_disk_step(&brute) / ns_per_disk_step(&sap),
+           ns_per_disk_step(&strips) / ns_per_disk_step(&sap), auto_choice(400, 5.0));
+
+    /* 2. Scaling at fixed area fraction. Plain SAP only up to 10^4: its
+     * tests per disk grow like N 2R / box (357 at 10^6), and its first
+     * insertion sort, from generation order, is O(N^2). */
+    static const size_t sizes[] = {1000, 10000, 100000, 1000000};
+    enum { SIZES = sizeof sizes / sizeof sizes[0] };
+    result scaled[SIZES], plain[2];
+    printf("\n2. Scaling at area fraction %.1f, R = sqrt(%.1f * 1000^2 / (N pi))\n", AREA_FRACTION,
+           AREA_FRACTION);
+    print_header();
+    for (size_t k = 0; k < SIZES; ++k) {
+        const double r = radius_for_fraction(sizes[k], AREA_FRACTION);
+        if (k < 2) {
+            if (!run_case(sizes[k], r, DS_SAP, scaling_steps(sizes[k]) / (k ? 4 : 1), &plain[k]))
+                return 1;
+            print_row("scale", &plain[k]);
+        }
+        if (!run_case(sizes[k], r, DS_AUTO, scaling_steps(sizes[k]), &scaled[k]))
+            return 1;
+        if (scaled[k].bp != DS_SAP_STRIPS) { /* the row to compare is strips */
+            if (!run_case(sizes[k], r, DS_SAP_STRIPS, scaling_steps(sizes[k]), &scaled[k]))
+                return 1;
+        }
+        print_row("scale", &scaled[k]);
+    }
+    for (size_t k = 0; k < 2; ++k)
+        printf("   N = %-7zu sap / strips = %.2f\n", sizes[k],
+               ns_per_disk_step(&plain[k]) / ns_per_disk_step(&scaled[k]));
+    for (size_t k = 1; k < SIZES; ++k)
+        printf("   strips ns/disk-step, N = %-7zu / N = 1000: %.2f%s\n", sizes[k],
+               ns_per_disk_step(&scaled[k]) / ns_per_disk_step(&scaled[0]),
+               sizes[k] == 1000000 ? " (target <= 2)" : "");
+    printf("   auto picks: N = 1000 %s, N = 10000 %s (both broad phases' rows above)\n",
+           auto_choice(1000, radius_for_fraction(1000, AREA_FRACTION)),
+           auto_choice(10000, radius_for_fraction(10000, AREA_FRACTION)));
+
+    /* 3. Placement: ds_create (random sequential placement on a grid, then
+     * the broad phase's first ordering), per disk, from the runs above. */
+    printf("\n3. Placement (ds_create, broad phase as in 2.) per disk\n");
+    printf("%8s %-7s %10s %12s\n", "N", "broad", "create s", "ns per disk");
+    for (size_t k = 0; k < SIZES; ++k)
+        printf("%8zu %-7s %10.4f %12.0f\n", sizes[k], ds_broadphase_name(scaled[k].bp),
+               scaled[k].create_seconds, 1e9 * scaled[k].create_seconds / (double)sizes[k]);
+    printf("   per disk, N = 10^6 / N = 10^4: %.2f (target <= 3)\n",
+           (scaled[3].create_seconds / 1e6) / (scaled[1].create_seconds / 1e4));
+
+    /* 4. The whole `disks 400 5` run. */
+    double sim_s, out_s;
+    if (!disks_run(&sim_s, &out_s))
+        return 1;
+    printf("\n4. disks 400 5 (500 frames to a temporary directory)\n");
+    printf("   simulation %.3f s, output %.3f s, output / simulation = %.2f (target < 1)\n",
+           sim_s, out_s, out_s / sim_s);
+
+    printf("\npeak RSS of this process %ld KB (the N = 10^6 case); bench took %.0f s\n",
+           peak_rss_kb(), ds_now() - started);
+    return 0;
+}
