@@ -129,6 +129,44 @@ __attribute__((target("avx"))) static uint64_t sweep_sap_avx(ds_sim *sim, ds_pai
     }
     return tested;
 }
+/* With AVX-512 the whole block of eight is one register, and the
+ * comparisons give bit masks directly. */
+#define HAVE_AVX512_SWEEP 1
+
+__attribute__((target("avx512f"))) static uint64_t sweep_sap_avx512(ds_sim *sim,
+                                                                    ds_pair_fn on_pair, void *ctx)
+{
+    const size_t n = sim->n;
+    const double *restrict x = sim->x, *restrict y = sim->y;
+    const double diameter = 2.0 * sim->radius;
+    const __m512d d2max = _mm512_set1_pd(diameter * diameter);
+    uint64_t tested = 0;
+
+    const size_t block_end = n >= BLOCK ? n - BLOCK + 1 : 0;
+    size_t i = 0;
+    for (; i < block_end; ++i) {
+        const double xlim = x[i] + diameter;
+        const __m512d xj = _mm512_loadu_pd(x + i + 1);
+        const __m512d dx = _mm512_sub_pd(xj, _mm512_set1_pd(x[i]));
+        const __m512d dy = _mm512_sub_pd(_mm512_loadu_pd(y + i + 1), _mm512_set1_pd(y[i]));
+        const __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+        const unsigned inside_bits =
+            (unsigned)_mm512_cmp_pd_mask(xj, _mm512_set1_pd(xlim), _CMP_LT_OQ);
+        unsigned hit = inside_bits & (unsigned)_mm512_cmp_pd_mask(d2, d2max, _CMP_LT_OQ);
+        for (size_t j = i + 1; hit; ++j, hit >>= 1)
+            if (hit & 1u)
+                on_pair(sim, i, j, ctx);
+        size_t end = i + 1 + ds_prefix_length(inside_bits);
+        if (inside_bits == (1u << BLOCK) - 1u)
+            end = sweep_window(sim, i, end, xlim, on_pair, ctx);
+        tested += end - i - 1;
+    }
+    for (; i < n; ++i) {
+        const size_t end = sweep_window(sim, i, i + 1, x[i] + diameter, on_pair, ctx);
+        tested += end - i - 1;
+    }
+    return tested;
+}
 #endif
 
 static uint64_t sweep_sap_blocks(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
@@ -166,6 +204,10 @@ static uint64_t sweep_sap_blocks(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
 
 static uint64_t sweep_sap(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
 {
+#if defined(HAVE_AVX512_SWEEP)
+    if (__builtin_cpu_supports("avx512f"))
+        return sweep_sap_avx512(sim, on_pair, ctx);
+#endif
 #if defined(HAVE_AVX_SWEEP)
     if (__builtin_cpu_supports("avx"))
         return sweep_sap_avx(sim, on_pair, ctx);
