@@ -227,30 +227,83 @@ static int print_version(void)
     return 0;
 }
 
+static int add_input(char ***list, size_t *count, size_t *cap, const char *name)
+{
+    if (*count == *cap) {
+        size_t ncap = *cap ? 2 * *cap : 64;
+        char **grown = realloc(*list, ncap * sizeof *grown);
+        if (!grown)
+            return -1;
+        *list = grown;
+        *cap = ncap;
+    }
+    size_t n = strlen(name) + 1;
+    if (!((*list)[*count] = malloc(n)))
+        return -1;
+    memcpy((*list)[*count], name, n);
+    ++*count;
+    return 0;
+}
+
+static void free_list(char **list, size_t count)
+{
+    for (size_t i = 0; list && i < count; ++i)
+        free(list[i]);
+    free(list);
+}
+
+/* Renders every input with the given number of workers; 0 or 1. */
+static int render_all(job *j, size_t workers, int quiet)
+{
+    char why[256];
+    if (rb_open(why, sizeof why) != 0) {
+        fprintf(stderr, "render: %s: %s\n", rb_name(), why);
+        return 1;
+    }
+    const double start = ds_now();
+    pthread_t threads[MAX_WORKERS];
+    size_t started = 0;
+    /* Worker 0 is this thread; the others get a thread each. */
+    for (size_t w = 1; w < workers; ++w, ++started)
+        if (pthread_create(&threads[started], NULL, worker, j) != 0)
+            break;
+    worker(j);
+    for (size_t w = 0; w < started; ++w)
+        pthread_join(threads[w], NULL);
+    rb_close();
+    if (j->failed)
+        return 1;
+    if (!quiet)
+        printf("render: %zu frame%s, %dx%d px, %s backend, %zu worker%s, %.2f s\n", j->count,
+               j->count == 1 ? "" : "s", j->draw.size, j->draw.size, rb_name(), started + 1,
+               started ? "s" : "", ds_now() - start);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     const char *out_dir = NULL;
     double size = 800, box = 1000, vmax = 0, jobs = 0;
-    int quiet = 0;
+    int quiet = 0, rc = 0;
     char **inputs = NULL;
     size_t count = 0, cap = 0;
-    char **dirs = calloc((size_t)argc, sizeof *dirs);
-    size_t ndirs = 0;
-    if (!dirs)
-        return 1;
-    for (int a = 1; a < argc; ++a) {
+    job j;
+    memset(&j, 0, sizeof j);
+    for (int a = 1; a < argc && rc == 0; ++a) {
         const char *s = argv[a], *v = a + 1 < argc ? argv[a + 1] : NULL;
         int bad = 0;
         if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
             printf("%sBackend: %s (render --version names the GL renderer).\n", usage, rb_name());
-            return 0;
+            goto done;
         } else if (!strcmp(s, "--version")) {
-            return print_version();
+            rc = print_version();
+            goto done;
         } else if (!strcmp(s, "--quiet")) {
             quiet = 1;
             continue;
         } else if (!strcmp(s, "--dir") && v) {
-            dirs[ndirs++] = argv[++a];
+            /* Listed now, so files and directories keep the command's order. */
+            rc = list_dir(argv[++a], &inputs, &count, &cap) != 0;
             continue;
         } else if (!strcmp(s, "--out") && v) {
             out_dir = argv[++a];
@@ -265,48 +318,39 @@ int main(int argc, char **argv)
             bad = parse_number(s, v, 1, MAX_WORKERS, &jobs) || jobs != (int)jobs;
         } else if (s[0] == '-' && s[1]) {
             fprintf(stderr, "render: unknown option or missing value: %s\n%s", s, usage);
-            return 2;
+            rc = 2;
+            continue;
         } else {
-            if (count == cap) {
-                cap = cap ? 2 * cap : (size_t)argc;
-                char **grown = realloc(inputs, cap * sizeof *grown);
-                if (!grown)
-                    return 1;
-                inputs = grown;
-            }
-            inputs[count++] = argv[a];
+            rc = add_input(&inputs, &count, &cap, s) != 0;
             continue;
         }
         if (bad) {
             if (size != (int)size || jobs != (int)jobs)
                 fprintf(stderr, "render: %s needs a whole number\n", s);
-            return 2;
+            rc = 2;
         }
         ++a;
     }
-    /* File names are not freed one by one: the process ends right after. */
-    for (size_t d = 0; d < ndirs; ++d)
-        if (list_dir(dirs[d], &inputs, &count, &cap) != 0)
-            return 1;
+    if (rc != 0)
+        goto done;
     if (count == 0) {
         fprintf(stderr, "render: no frame files given\n%s", usage);
-        return 2;
+        rc = 2;
+        goto done;
     }
     if (out_dir && mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "render: %s: cannot create directory: %s\n", out_dir, strerror(errno));
-        return 1;
+        rc = 1;
+        goto done;
     }
-
-    job j;
-    memset(&j, 0, sizeof j);
     j.inputs = inputs;
     j.count = count;
-    j.outputs = malloc(count * sizeof *j.outputs);
-    if (!j.outputs)
-        return 1;
+    rc = 1;
+    if (!(j.outputs = calloc(count, sizeof *j.outputs)))
+        goto done;
     for (size_t i = 0; i < count; ++i)
         if (!(j.outputs[i] = png_path(inputs[i], out_dir)))
-            return 1;
+            goto done;
     j.draw.size = (int)size;
     j.draw.box = box;
     j.draw.vmax = vmax;
@@ -321,28 +365,12 @@ int main(int argc, char **argv)
         workers = MAX_WORKERS;
     if (workers > count)
         workers = count;
-
-    char why[256];
-    if (rb_open(why, sizeof why) != 0) {
-        fprintf(stderr, "render: %s: %s\n", rb_name(), why);
-        return 1;
-    }
-    const double start = ds_now();
-    pthread_t threads[MAX_WORKERS];
-    size_t started = 0;
-    /* Worker 0 is this thread; the others get a thread each. */
-    for (size_t w = 1; w < workers; ++w, ++started)
-        if (pthread_create(&threads[started], NULL, worker, &j) != 0)
-            break;
-    worker(&j);
-    for (size_t w = 0; w < started; ++w)
-        pthread_join(threads[w], NULL);
-    rb_close();
-    if (j.failed)
-        return 1;
-    if (!quiet)
-        printf("render: %zu frame%s, %dx%d px, %s backend, %zu worker%s, %.2f s\n", count,
-               count == 1 ? "" : "s", j.draw.size, j.draw.size, rb_name(), started + 1,
-               started ? "s" : "", ds_now() - start);
-    return 0;
+    rc = render_all(&j, workers, quiet);
+    pthread_mutex_destroy(&j.lock);
+done:
+    if (rc == 1 && !j.failed && count && !j.outputs)
+        fprintf(stderr, "render: out of memory\n");
+    free_list(j.outputs, j.outputs ? count : 0);
+    free_list(inputs, count);
+    return rc;
 }

@@ -20,6 +20,7 @@ const char *rb_name(void);
 /* Process-wide set-up, once, before any worker thread starts (EGL opens
  * its display here). Returns 0, or -1 with a message in err. */
 int rb_open(char *err, size_t errlen);
+/* Releases what rb_open set up, after the last rb_destroy. */
 void rb_close(void);
 
 /* A context drawing into a width x height image, current on the calling
