@@ -12,11 +12,19 @@
  * search would hang; 2e6 draws ~ 0.1 s. */
 #define MAX_DRAWS_PER_DISK 2000000u
 
+/* A placed disk as the grid keeps it: its centre next to its list link,
+ * so visiting it touches one cache line, not three arrays (at 10^6 disks
+ * the lists are scattered over tens of megabytes). */
+typedef struct grid_node {
+    double x, y;
+    uint32_t next; /* next disk in the same cell, UINT32_MAX at the end */
+} grid_node;
+
 typedef struct grid {
     size_t side;   /* cells per row */
     double inv_cell;
     uint32_t *head; /* first disk in each cell, UINT32_MAX when empty */
-    uint32_t *next; /* next disk in the same cell */
+    grid_node *node;
 } grid;
 
 static size_t cell_coord(const grid *g, double v)
@@ -37,12 +45,31 @@ static int overlaps_any(const ds_sim *sim, const grid *g, double px, double py)
 
     for (size_t gy = y0; gy <= y1; ++gy)
         for (size_t gx = x0; gx <= x1; ++gx)
-            for (uint32_t k = g->head[gy * g->side + gx]; k != UINT32_MAX; k = g->next[k]) {
-                double dx = sim->x[k] - px, dy = sim->y[k] - py;
+            for (uint32_t k = g->head[gy * g->side + gx]; k != UINT32_MAX; k = g->node[k].next) {
+                double dx = g->node[k].x - px, dy = g->node[k].y - py;
                 if (dx * dx + dy * dy < d2min)
                     return 1;
             }
     return 0;
+}
+
+/* Asks for the 3 rows of grid heads around (px, py) to be fetched early.
+ * At 10^6 disks the grid is tens of megabytes and every test misses the
+ * cache: fetching the next candidate's cells while this one is tested
+ * overlaps the two waits. */
+static void prefetch_cells(const grid *g, double px, double py)
+{
+#if defined(__GNUC__)
+    size_t cx = cell_coord(g, px), cy = cell_coord(g, py);
+    size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
+    size_t y1 = cy + 1 < g->side ? cy + 1 : cy;
+    for (size_t gy = y0; gy <= y1; ++gy)
+        __builtin_prefetch(&g->head[gy * g->side + x0]);
+#else
+    (void)g;
+    (void)px;
+    (void)py;
+#endif
 }
 
 ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
@@ -60,10 +87,10 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
     g.side = (size_t)side;
     g.inv_cell = side / box;
     g.head = malloc(g.side * g.side * sizeof *g.head);
-    g.next = malloc(sim->n * sizeof *g.next);
-    if (!g.head || !g.next) {
+    g.node = malloc(sim->n * sizeof *g.node);
+    if (!g.head || !g.node) {
         free(g.head);
-        free(g.next);
+        free(g.node);
         return DS_ERR_NOMEM;
     }
     for (size_t c = 0; c < g.side * g.side; ++c)
@@ -72,6 +99,9 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
     ds_rng rng;
     ds_rng_seed(&rng, seed);
     ds_status status = DS_OK;
+    /* Below ~1 MB of heads the grid stays in cache and prefetching the
+     * next candidate's cells only costs (three extra draws per draw). */
+    const int big_grid = g.side * g.side >= ((size_t)1 << 18);
     for (size_t i = 0; i < sim->n; ++i) {
         double px, py;
         unsigned draws = 0;
@@ -82,6 +112,17 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
             }
             px = ds_rng_uniform(&rng, r, box - r);
             py = ds_rng_uniform(&rng, r, box - r);
+            if (big_grid) {
+                /* The next candidate is the next two draws if this one is
+                 * refused, or the two after the direction if it is
+                 * accepted: prefetch both. A copy of the generator peeks. */
+                ds_rng ahead = rng;
+                double u1 = ds_rng_uniform(&ahead, r, box - r);
+                double u2 = ds_rng_uniform(&ahead, r, box - r);
+                double u3 = ds_rng_uniform(&ahead, r, box - r);
+                prefetch_cells(&g, u1, u2);
+                prefetch_cells(&g, u2, u3);
+            }
         } while (overlaps_any(sim, &g, px, py));
 
         /* Direction uniform in [0, 2 pi), drawn after the accepted centre. */
@@ -92,11 +133,13 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
         sim->vy[i] = sim->speed * sin(angle);
 
         size_t c = cell_coord(&g, py) * g.side + cell_coord(&g, px);
-        g.next[i] = g.head[c];
+        g.node[i].x = px;
+        g.node[i].y = py;
+        g.node[i].next = g.head[c];
         g.head[c] = (uint32_t)i;
     }
 done:
     free(g.head);
-    free(g.next);
+    free(g.node);
     return status;
 }
