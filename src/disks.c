@@ -3,6 +3,7 @@
  * printing and exit codes live here, never in the library. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -399,6 +400,11 @@ static void stats_row(char **buf, size_t *len, size_t *cap, long frame, const ds
 
 int main(int argc, char **argv)
 {
+    /* A closed standard descriptor would be handed to the first frame file
+     * by mkstemp, and a later printf would then write into the frame. */
+    for (int fd = 0; fd <= 2; ++fd)
+        if (fcntl(fd, F_GETFD) < 0 && open("/dev/null", fd ? O_WRONLY : O_RDONLY) != fd)
+            return EXIT_RUN;
     options o = parse_args(argc, argv);
     ds_params p = ds_default_params(o.n, o.radius);
     p.seed = o.seed;
@@ -484,5 +490,11 @@ int main(int argc, char **argv)
     free(buf);
     free(stats);
     ds_destroy(sim);
+    /* The timing report is output too: `disks 400 5 > /dev/full` must not
+     * succeed silently with it lost. */
+    int lost = ferror(stdout);
+    if (fflush(stdout) != 0 || lost)
+        die(EXIT_RUN, "cannot write the report to standard output: %s",
+            strerror(errno ? errno : EIO));
     return 0;
 }

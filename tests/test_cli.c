@@ -165,7 +165,8 @@ static int write_bytes(const char *path, const char *data, size_t len)
 
 /* Applies the setup steps inside dir; sets *fsize and *drop for the child.
  * Returns 0, or -1 on a broken setup. */
-static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop)
+static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop,
+                       char *out_path, size_t out_cap)
 {
     char steps[sizeof c->setup];
     snprintf(steps, sizeof steps, "%s", c->setup);
@@ -204,6 +205,8 @@ static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *dro
                     return -1;
                 *drop = 1;
             }
+        } else if (strcmp(step, "stdout") == 0) {
+            snprintf(out_path, out_cap, "%s", arg);
         } else if (strcmp(step, "fsize") == 0) {
             *fsize = atol(arg);
         } else {
@@ -334,7 +337,8 @@ static void run_case(const cli_case *c, outcome *o)
     }
     long fsize = -1;
     int drop = 0;
-    if (apply_setup(c, dir, &fsize, &drop) != 0) {
+    char out_path[256] = "/dev/null";
+    if (apply_setup(c, dir, &fsize, &drop, out_path, sizeof out_path) != 0) {
         snprintf(o->problem, sizeof o->problem, "bad setup '%.400s'", c->setup);
         remove_tree(dir);
         return;
@@ -353,8 +357,9 @@ static void run_case(const cli_case *c, outcome *o)
     pid_t pid = fork();
     if (pid == 0) {
         int devnull = open("/dev/null", O_RDWR);
+        int out = open(out_path, O_WRONLY);
         dup2(devnull, STDIN_FILENO);
-        dup2(devnull, STDOUT_FILENO);
+        dup2(out, STDOUT_FILENO);
         dup2(pipefd[1], STDERR_FILENO);
         close(pipefd[0]);
         if (chdir(dir) != 0)
