@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -268,8 +269,8 @@ static void make_dirs(const char *path)
 
 /* Writes len bytes to dir/name via a temporary file and rename(), so a
  * reader never sees a half-written file. Returns 0 or sets *why. */
-static int write_file_atomic(const char *dir, const char *name, const char *data, size_t len,
-                             const char **why)
+static int write_file_atomic_now(const char *dir, const char *name, const char *data,
+                                 size_t len, const char **why)
 {
     char final_path[4200], tmp_path[4200];
     snprintf(final_path, sizeof final_path, "%s/%s", dir, name);
@@ -304,6 +305,24 @@ static int write_file_atomic(const char *dir, const char *name, const char *data
         return -1;
     }
     return 0;
+}
+
+/* Ctrl-C, kill and hang-up wait while a file is written: the signal is
+ * delivered once the temporary is renamed or removed, so an interrupted run
+ * leaves complete frames and no temporary (only SIGKILL can still strand
+ * one, as a hidden .frame_NNNN.txt.XXXXXX). */
+static int write_file_atomic(const char *dir, const char *name, const char *data, size_t len,
+                             const char **why)
+{
+    sigset_t block, old;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigprocmask(SIG_BLOCK, &block, &old);
+    int rc = write_file_atomic_now(dir, name, data, len, why);
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    return rc;
 }
 
 /* --stats may name a device or a pipe (/dev/stdout, /dev/full, a FIFO):

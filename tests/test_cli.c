@@ -22,6 +22,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #ifndef DS_TEST_DISKS
@@ -444,6 +445,59 @@ static void test_a_good_run_writes_only_complete_frames(void **state)
     assert_int_equal(o.frames, 3);
 }
 
+/* Starts disks writing frames as fast as it can, waits for a few frames,
+ * interrupts it and checks that only complete frames remain. Whether the
+ * signal lands inside a write is luck, so it is tried several times; the
+ * invariant must hold every time. */
+static void interrupt_a_run(int sig)
+{
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    fflush(NULL);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        int devnull = open("/dev/null", O_RDWR);
+        dup2(devnull, STDOUT_FILENO);
+        dup2(devnull, STDERR_FILENO);
+        if (chdir(dir) != 0)
+            _exit(125);
+        alarm(CASE_TIMEOUT_SECONDS);
+        execl(disks_path, disks_path, "3000", "2", "--frames", "10000", "--steps-per-frame", "1",
+              "--quiet", "--out", "out", (char *)NULL);
+        _exit(126);
+    }
+    /* Poll (no timing is asserted: the alarm above bounds a stuck run). */
+    char third[PATH_MAX];
+    snprintf(third, sizeof third, "%s/out/frame_0003.txt", dir);
+    int ws = 0;
+    while (access(third, F_OK) != 0 && waitpid(pid, &ws, WNOHANG) == 0)
+        nanosleep(&(struct timespec){0, 1000000}, NULL);
+    kill(pid, sig);
+    while (waitpid(pid, &ws, 0) < 0 && errno == EINTR)
+        ;
+    assert_true(WIFSIGNALED(ws));
+    assert_int_equal(WTERMSIG(ws), sig);
+
+    cli_case run = {"interrupted", 1, "", "-", "", 0};
+    outcome o;
+    memset(&o, 0, sizeof o);
+    check_leftovers(&run, dir, NULL, 0, &o);
+    remove_tree(dir);
+    if (o.problem[0])
+        fail_msg("after signal %d: %s", sig, o.problem);
+    assert_true(o.frames >= 4);
+}
+
+static void test_an_interrupted_run_leaves_only_complete_frames(void **state)
+{
+    (void)state;
+    for (int k = 0; k < 3; ++k) {
+        interrupt_a_run(SIGINT);
+        interrupt_a_run(SIGTERM);
+    }
+}
+
 static void test_help_documents_the_exit_statuses(void **state)
 {
     (void)state;
@@ -525,10 +579,12 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "--table") == 0)
         return print_table();
 
-    static struct CMUnitTest tests[MAX_CASES + 2];
+    static struct CMUnitTest tests[MAX_CASES + 3];
     size_t n = 0;
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_a_good_run_writes_only_complete_frames);
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_help_documents_the_exit_statuses);
+    tests[n++] =
+        (struct CMUnitTest)cmocka_unit_test(test_an_interrupted_run_leaves_only_complete_frames);
     for (size_t i = 0; i < case_count; ++i) {
         struct CMUnitTest t = cmocka_unit_test_prestate(test_bad_input_case, &cases[i]);
         t.name = cases[i].name;
