@@ -163,6 +163,7 @@ static int write_bytes(const char *path, const char *data, size_t len)
 /* Root ignores permissions, so a permission case run as root drops to this
  * unprivileged user (nobody) in the child instead. */
 #define UNPRIVILEGED_ID 65534
+#define CANNOT_REACH_AS_NOBODY 123
 
 /* Applies the setup steps inside dir; sets *fsize and *drop for the child.
  * Returns 0, or -1 on a broken setup. */
@@ -375,6 +376,8 @@ static void run_case(const cli_case *c, outcome *o)
         if (drop && (setgroups(0, NULL) != 0 || setgid(UNPRIVILEGED_ID) != 0 ||
                      setuid(UNPRIVILEGED_ID) != 0))
             _exit(124);
+        if (drop && access(program, X_OK) != 0)
+            _exit(CANNOT_REACH_AS_NOBODY);
         alarm(CASE_TIMEOUT_SECONDS); /* survives exec: SIGALRM ends a hang */
         argv[0] = (char *)program;
         execv(program, argv);
@@ -391,6 +394,13 @@ static void run_case(const cli_case *c, outcome *o)
     int ws = 0;
     while (waitpid(pid, &ws, 0) < 0 && errno == EINTR)
         ;
+    if (drop && WIFEXITED(ws) && WEXITSTATUS(ws) == CANNOT_REACH_AS_NOBODY) {
+        /* e.g. a checkout under /root: nobody cannot run the binary. */
+        snprintf(o->skip_reason, sizeof o->skip_reason,
+                 "skipped: user nobody cannot run %.80s", program);
+        remove_tree(dir);
+        return;
+    }
     o->ran = 1;
     o->status = WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
 
