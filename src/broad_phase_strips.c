@@ -186,23 +186,38 @@ static void bucket_movers(const ds_sim *sim, struct ds_strips *st, size_t nm)
 static size_t merge_strip(ds_sim *sim, struct ds_strips *st, size_t t, size_t w, size_t nm,
                           size_t *mp)
 {
-    const double *x = st->x; /* previous arrays */
+    /* Locals, so the compiler need not reload the array pointers after
+     * every store (they could alias sim and st otherwise). */
+    const double *restrict x0 = st->x, *restrict y0 = st->y; /* previous arrays */
+    const double *restrict vx0 = st->vx, *restrict vy0 = st->vy;
+    const uint32_t *restrict id0 = st->id;
+    double *restrict x = sim->x, *restrict y = sim->y; /* arrays being built */
+    double *restrict vx = sim->vx, *restrict vy = sim->vy;
+    uint32_t *restrict id = sim->id;
+    const uint32_t *restrict mover = st->mover, *restrict incoming = st->incoming;
     size_t k = st->start[t], m = *mp;
     const size_t end = st->start[t + 1];
     size_t in = st->bucket_start[t];
     const size_t in_end = st->bucket_start[t + 1];
     st->next_start[t] = (uint32_t)w;
     for (;;) {
-        while (k < end && m < nm && st->mover[m] == k) { /* leaving: skip */
+        while (k < end && m < nm && mover[m] == k) { /* leaving: skip */
             ++k;
             ++m;
         }
-        if (k < end && (in == in_end || !(x[st->incoming[in]] < x[k])))
-            copy_disk(sim, st, k++, w++);
+        size_t from;
+        if (k < end && (in == in_end || !(x0[incoming[in]] < x0[k])))
+            from = k++;
         else if (in < in_end)
-            copy_disk(sim, st, st->incoming[in++], w++);
+            from = incoming[in++];
         else
             break;
+        x[w] = x0[from];
+        y[w] = y0[from];
+        vx[w] = vx0[from];
+        vy[w] = vy0[from];
+        id[w] = id0[from];
+        ++w;
     }
     *mp = m;
     return w;
