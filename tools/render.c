@@ -317,7 +317,7 @@ int main(int argc, char **argv)
         } else if (!strcmp(s, "-j")) {
             bad = parse_number(s, v, 1, MAX_WORKERS, &jobs) || jobs != (int)jobs;
         } else if (s[0] == '-' && s[1]) {
-            fprintf(stderr, "render: unknown option or missing value: %s\n%s", s, usage);
+            fprintf(stderr, "render: unknown option or missing value: %s (try --help)\n", s);
             rc = 2;
             continue;
         } else {
@@ -334,13 +334,14 @@ int main(int argc, char **argv)
     if (rc != 0)
         goto done;
     if (count == 0) {
-        fprintf(stderr, "render: no frame files given\n%s", usage);
+        fprintf(stderr, "render: no frame files given (try --help)\n");
         rc = 2;
         goto done;
     }
     if (out_dir && mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "render: %s: cannot create directory: %s\n", out_dir, strerror(errno));
         rc = 1;
+        j.failed = 1; /* reported: not the "out of memory" guess at done */
         goto done;
     }
     j.inputs = inputs;
