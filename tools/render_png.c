@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <png.h>
+#include <zlib.h> /* Z_RLE; libpng-dev depends on zlib1g-dev */
 
 #include "render_png.h"
 
@@ -50,12 +51,15 @@ static int encode(FILE *file, const unsigned char *rgba, int width, int height, 
     png_init_io(png, file);
     png_set_IHDR(png, info, (png_uint_32)width, (png_uint_32)height, 8, PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    /* Frames are large flat areas of a few colours: the "up" filter turns
-     * them into runs of zeros and zlib's fastest level compresses those
-     * about as well as level 6, several times faster. Encoding is most of
-     * the renderer's time. */
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+    /* Encoding is most of the renderer's time. Frames are long runs of
+     * one colour, which zlib's run-length strategy finds without hashing:
+     * with no row filter and a large buffer it is a quarter faster than
+     * level 1 with the "up" filter, and the files are smaller (65 kB for
+     * 400 disks at 800 px). */
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
     png_set_compression_level(png, 1);
+    png_set_compression_strategy(png, Z_RLE);
+    png_set_compression_buffer_size(png, (size_t)1 << 18);
     png_write_info(png, info);
     png_set_filler(png, 0, PNG_FILLER_AFTER); /* drop the alpha byte */
     for (int y = 0; y < height; ++y)          /* PNG rows go top first */
