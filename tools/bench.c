@@ -137,7 +137,7 @@ static unsigned long scaling_steps(size_t n)
 /* The work of `disks 400 5`, through the same calls: 500 frames, 100 steps
  * apart, each formatted into a buffer and written with one fwrite to a
  * temporary file renamed into place, in a temporary directory. */
-static int disks_run(double *sim_seconds, double *out_seconds)
+static int disks_run(double *sim_seconds, double *format_seconds, double *file_seconds)
 {
     char dir[] = "/tmp/disksim-bench-XXXXXX";
     if (!mkdtemp(dir)) {
@@ -149,7 +149,7 @@ static int disks_run(double *sim_seconds, double *out_seconds)
     double t0 = ds_now();
     if (ds_create(&p, &sim) != DS_OK)
         return 0;
-    double simulated = ds_now() - t0, written = 0.0;
+    double simulated = ds_now() - t0, formatted = 0.0, written = 0.0;
     size_t cap = ds_frame_size(sim, 0);
     char *buf = malloc(cap);
     char path[64], tmp[64];
@@ -162,13 +162,15 @@ static int disks_run(double *sim_seconds, double *out_seconds)
         }
         t0 = ds_now();
         size_t len = 0;
+        ok = ds_format_frame(sim, 0, buf, cap, &len) == DS_OK;
+        double t1 = ds_now();
+        formatted += t1 - t0;
         snprintf(path, sizeof path, "%s/frame_%04d.txt", dir, frame);
         snprintf(tmp, sizeof tmp, "%s/.frame_%04d.tmp", dir, frame);
         FILE *f = fopen(tmp, "wb");
-        ok = f && ds_format_frame(sim, 0, buf, cap, &len) == DS_OK &&
-             fwrite(buf, 1, len, f) == len;
+        ok = ok && f && fwrite(buf, 1, len, f) == len;
         ok = f && fclose(f) == 0 && ok && rename(tmp, path) == 0;
-        written += ds_now() - t0;
+        written += ds_now() - t1;
     }
     for (int frame = 0; frame < 500; ++frame) {
         snprintf(path, sizeof path, "%s/frame_%04d.txt", dir, frame);
@@ -178,7 +180,8 @@ static int disks_run(double *sim_seconds, double *out_seconds)
     free(buf);
     ds_destroy(sim);
     *sim_seconds = simulated;
-    *out_seconds = written;
+    *format_seconds = formatted;
+    *file_seconds = written;
     return ok;
 }
 
@@ -301,13 +304,21 @@ int main(int argc, char **argv)
     printf("   per disk, N = 10^6 / N = 10^4: %.2f (target <= 3)\n",
            (create_s[3] / 1e6) / (create_s[1] / 1e4));
 
-    /* 4. The whole `disks 400 5` run. */
-    double sim_s, out_s;
-    if (!disks_run(&sim_s, &out_s))
-        return 1;
-    printf("\n4. disks 400 5 (500 frames to a temporary directory)\n");
-    printf("   simulation %.3f s, output %.3f s, output / simulation = %.2f (target < 1)\n",
-           sim_s, out_s, out_s / sim_s);
+    /* 4. The whole `disks 400 5` run, fastest of three (each part on its
+     * own: the file system's share varies with other disk traffic). */
+    double sim_s = INFINITY, fmt_s = INFINITY, file_s = INFINITY;
+    for (int k = 0; k < REPEATS; ++k) {
+        double a, b, c;
+        if (!disks_run(&a, &b, &c))
+            return 1;
+        sim_s = a < sim_s ? a : sim_s;
+        fmt_s = b < fmt_s ? b : fmt_s;
+        file_s = c < file_s ? c : file_s;
+    }
+    printf("\n4. disks 400 5 (500 frames to a temporary directory), fastest of %d\n", REPEATS);
+    printf("   simulation %.3f s, output %.3f s = formatting %.3f s + files %.3f s\n", sim_s,
+           fmt_s + file_s, fmt_s, file_s);
+    printf("   output / simulation = %.2f (target < 1)\n", (fmt_s + file_s) / sim_s);
 
     printf("\npeak RSS of this process %ld KB (the N = 10^6 case); bench took %.0f s\n",
            peak_rss_kb(), ds_now() - started);
