@@ -128,6 +128,7 @@ int rp_write(const char *path, const unsigned char *rgba, int width, int height,
     if (!tmp || !rows) {
         free(tmp);
         free(rows);
+        free(index);
         snprintf(err, errlen, "%s: out of memory", path);
         return -1;
     }
@@ -138,6 +139,7 @@ int rp_write(const char *path, const unsigned char *rgba, int width, int height,
         snprintf(err, errlen, "%s: cannot create: %s", path, strerror(errno));
         free(tmp);
         free(rows);
+        free(index);
         return -1;
     }
     /* mkstemp makes the file 0600; give it what a plain fopen would. */
