@@ -470,6 +470,15 @@ static void test_directories_that_cannot_be_read_are_refused(void **state)
     }
 }
 
+static void test_an_output_directory_that_is_a_file_is_refused(void **state)
+{
+    const char *frame = bad_file("frame_0002.txt", "1 2 3\n", 6);
+    char args[1200];
+    snprintf(args, sizeof args, "--quiet --out %s %s", frame, frame);
+    assert_int_equal(run(*state, args), 1);
+    assert_non_null(strstr(last_stderr(), "frame_0002.png: cannot create: Not a directory"));
+}
+
 /* ------------------------------------------------------------------ */
 /* Backends agree                                                      */
 /* ------------------------------------------------------------------ */
@@ -534,7 +543,8 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_binary_garbage_is_refused, binary),                         \
         cmocka_unit_test_prestate(test_a_missing_file_is_refused, binary),                         \
         cmocka_unit_test_prestate(test_a_bad_frame_among_good_ones_fails_the_run, binary),         \
-        cmocka_unit_test_prestate(test_directories_that_cannot_be_read_are_refused, binary)
+        cmocka_unit_test_prestate(test_directories_that_cannot_be_read_are_refused, binary),       \
+        cmocka_unit_test_prestate(test_an_output_directory_that_is_a_file_is_refused, binary)
 
 int main(void)
 {
