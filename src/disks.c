@@ -269,8 +269,8 @@ static void make_dirs(const char *path)
 
 /* Writes len bytes to dir/name via a temporary file and rename(), so a
  * reader never sees a half-written file. Returns 0 or sets *why. */
-static int write_file_atomic_now(const char *dir, const char *name, const char *data,
-                                 size_t len, const char **why)
+static int write_file_atomic_now(const char *dir, const char *name, const char *data, size_t len,
+                                 const char **why)
 {
     char final_path[4200], tmp_path[4200];
     snprintf(final_path, sizeof final_path, "%s/%s", dir, name);
@@ -334,8 +334,7 @@ static int is_special_file(const char *path)
     return stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
 }
 
-static int write_file_in_place(const char *path, const char *data, size_t len,
-                               const char **why)
+static int write_file_in_place(const char *path, const char *data, size_t len, const char **why)
 {
     FILE *f = fopen(path, "wb");
     if (!f) {

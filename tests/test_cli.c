@@ -52,12 +52,12 @@ typedef struct cli_case {
 } cli_case;
 
 typedef struct outcome {
-    int ran;             /* 0: skipped, see skip_reason */
+    int ran; /* 0: skipped, see skip_reason */
     char skip_reason[128];
-    int status;          /* exit status, or 128 + signal */
-    char err[4096];      /* everything written to stderr */
-    char problem[512];   /* first broken promise, "" if none */
-    int frames;          /* complete frames left behind */
+    int status;        /* exit status, or 128 + signal */
+    char err[4096];    /* everything written to stderr */
+    char problem[512]; /* first broken promise, "" if none */
+    int frames;        /* complete frames left behind */
 } outcome;
 
 static char disks_path[PATH_MAX], render_path[PATH_MAX];
@@ -105,8 +105,7 @@ static int load_cases(const char *path)
             p = sep + 3;
         }
         if (nf != 5 || case_count == MAX_CASES) {
-            fprintf(stderr, "test_cli: %s:%d: expected 5 fields separated by ' | '\n", path,
-                    line);
+            fprintf(stderr, "test_cli: %s:%d: expected 5 fields separated by ' | '\n", path, line);
             fclose(f);
             return -1;
         }
@@ -167,8 +166,8 @@ static int write_bytes(const char *path, const char *data, size_t len)
 
 /* Applies the setup steps inside dir; sets *fsize and *drop for the child.
  * Returns 0, or -1 on a broken setup. */
-static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop,
-                       char *out_path, size_t out_cap)
+static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop, char *out_path,
+                       size_t out_cap)
 {
     char steps[sizeof c->setup];
     snprintf(steps, sizeof steps, "%s", c->setup);
@@ -300,8 +299,7 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
         else if (c->exit_code == 2)
             snprintf(o->problem, sizeof o->problem, "a usage error wrote '%s'", after[i]);
         else if (!is_frame_name(base))
-            snprintf(o->problem, sizeof o->problem, "unexpected file '%s' left behind",
-                     after[i]);
+            snprintf(o->problem, sizeof o->problem, "unexpected file '%s' left behind", after[i]);
         else if (ds_read_frame(full, &frame, NULL) != DS_OK)
             snprintf(o->problem, sizeof o->problem, "partial frame '%s' left behind", after[i]);
         else {
@@ -327,8 +325,7 @@ static void run_case(const cli_case *c, outcome *o)
     argv[argc] = NULL;
     const char *program = strcmp(argv[0], "render") == 0 ? render_path : disks_path;
     if (access(program, X_OK) != 0) {
-        snprintf(o->skip_reason, sizeof o->skip_reason, "skipped: %.100s is not built",
-                 program);
+        snprintf(o->skip_reason, sizeof o->skip_reason, "skipped: %.100s is not built", program);
         return;
     }
 
@@ -396,8 +393,8 @@ static void run_case(const cli_case *c, outcome *o)
         ;
     if (drop && WIFEXITED(ws) && WEXITSTATUS(ws) == CANNOT_REACH_AS_NOBODY) {
         /* e.g. a checkout under /root: nobody cannot run the binary. */
-        snprintf(o->skip_reason, sizeof o->skip_reason,
-                 "skipped: user nobody cannot run %.80s", program);
+        snprintf(o->skip_reason, sizeof o->skip_reason, "skipped: user nobody cannot run %.80s",
+                 program);
         remove_tree(dir);
         return;
     }
@@ -436,8 +433,8 @@ static void test_bad_input_case(void **state)
         skip();
     }
     if (o.problem[0])
-        fail_msg("cli_cases.txt:%d \"%s\": `%s`: %s; stderr was: %s", c->line, c->name,
-                 c->command, o.problem, o.err);
+        fail_msg("cli_cases.txt:%d \"%s\": `%s`: %s; stderr was: %s", c->line, c->name, c->command,
+                 o.problem, o.err);
 }
 
 /* The control case: the checks above would be hollow if a good run also
@@ -561,8 +558,8 @@ static int print_table(void)
             puts(" |");
         }
         if (o.problem[0]) {
-            fprintf(stderr, "test_cli: cli_cases.txt:%d \"%s\": %s\n", cases[i].line,
-                    cases[i].name, o.problem);
+            fprintf(stderr, "test_cli: cli_cases.txt:%d \"%s\": %s\n", cases[i].line, cases[i].name,
+                    o.problem);
             bad = 1;
         }
     }
