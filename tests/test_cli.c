@@ -31,6 +31,9 @@
 #ifndef DS_TEST_RENDER
 #define DS_TEST_RENDER "tools/render"
 #endif
+#ifndef DS_TEST_README
+#define DS_TEST_README "README.md"
+#endif
 #ifndef DS_TEST_CASES
 #define DS_TEST_CASES "tests/cli_cases.txt"
 #endif
@@ -59,6 +62,8 @@ typedef struct outcome {
     char problem[512]; /* first broken promise, "" if none */
     int frames;        /* complete frames left behind */
 } outcome;
+
+static void row_start(const cli_case *c, char *out, size_t cap);
 
 static char disks_path[PATH_MAX], render_path[PATH_MAX];
 static cli_case cases[MAX_CASES];
@@ -505,6 +510,40 @@ static void test_an_interrupted_run_leaves_only_complete_frames(void **state)
     }
 }
 
+/* The README table is generated from this list (make bad-input-table):
+ * a case added, renamed or removed without regenerating it fails here. */
+static void test_the_readme_table_lists_every_case(void **state)
+{
+    (void)state;
+    const char *path = getenv("DS_README");
+    FILE *f = fopen(path && *path ? path : DS_TEST_README, "r");
+    if (!f) {
+        print_message("skipped: no %s to check\n", DS_TEST_README);
+        skip();
+    }
+    static char text[1 << 18];
+    size_t len = fread(text, 1, sizeof text - 1, f);
+    text[len] = '\0';
+    fclose(f);
+    const char *begin = strstr(text, "<!-- bad-input-table:");
+    const char *end = begin ? strstr(begin, "<!-- end bad-input-table -->") : NULL;
+    assert_non_null(begin);
+    assert_non_null(end);
+    size_t rows = 0;
+    for (const char *p = strstr(begin, "\n| "); p && p < end; p = strstr(p + 1, "\n| "))
+        ++rows;
+    for (size_t i = 0; i < case_count; ++i) {
+        char row[1024];
+        row_start(&cases[i], row, sizeof row);
+        const char *hit = strstr(begin, row);
+        if (!hit || hit > end)
+            fail_msg("README.md has no row for cli_cases.txt:%d \"%s\": run make bad-input-table",
+                     cases[i].line, cases[i].name);
+    }
+    /* Rows = header + one per case: no row for a case that was removed. */
+    assert_int_equal(rows, case_count + 1);
+}
+
 static void test_help_documents_the_exit_statuses(void **state)
 {
     (void)state;
@@ -524,16 +563,27 @@ static void test_help_documents_the_exit_statuses(void **state)
 /* README table                                                        */
 /* ------------------------------------------------------------------ */
 
-static void print_cell(const char *s)
+/* Appends s to out as table cell text: one line, '|' escaped, no '`'. */
+static void append_cell(char *out, size_t cap, const char *s)
 {
-    for (; *s && *s != '\n'; ++s) {
+    size_t n = strlen(out);
+    for (; *s && *s != '\n' && n + 3 < cap; ++s) {
         if (*s == '|')
-            fputs("\\|", stdout);
-        else if (*s == '`')
-            fputs("'", stdout);
-        else
-            putchar(*s);
+            out[n++] = '\\';
+        out[n++] = *s == '`' ? '\'' : *s;
     }
+    out[n] = '\0';
+}
+
+/* "| case | `command` |": the part of a row that does not depend on where
+ * the test runs. */
+static void row_start(const cli_case *c, char *out, size_t cap)
+{
+    snprintf(out, cap, "| ");
+    append_cell(out, cap, c->name);
+    strncat(out, " | `", cap - strlen(out) - 1);
+    append_cell(out, cap, c->command);
+    strncat(out, "` |", cap - strlen(out) - 1);
 }
 
 static int print_table(void)
@@ -544,19 +594,18 @@ static int print_table(void)
     for (size_t i = 0; i < case_count; ++i) {
         outcome o;
         run_case(&cases[i], &o);
-        fputs("| ", stdout);
-        print_cell(cases[i].name);
-        fputs(" | `", stdout);
-        print_cell(cases[i].command);
+        char row[1024];
+        row_start(&cases[i], row, sizeof row);
         if (o.ran) {
-            printf("` | %d | `", o.status);
-            print_cell(o.err);
-            puts("` |");
+            snprintf(row + strlen(row), sizeof row - strlen(row), " %d | `", o.status);
+            append_cell(row, sizeof row, o.err);
+            strncat(row, "` |", sizeof row - strlen(row) - 1);
         } else {
-            fputs("` | - | ", stdout);
-            print_cell(o.problem[0] ? o.problem : o.skip_reason);
-            puts(" |");
+            strncat(row, " - | ", sizeof row - strlen(row) - 1);
+            append_cell(row, sizeof row, o.problem[0] ? o.problem : o.skip_reason);
+            strncat(row, " |", sizeof row - strlen(row) - 1);
         }
+        puts(row);
         if (o.problem[0]) {
             fprintf(stderr, "test_cli: cli_cases.txt:%d \"%s\": %s\n", cases[i].line, cases[i].name,
                     o.problem);
@@ -586,12 +635,13 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "--table") == 0)
         return print_table();
 
-    static struct CMUnitTest tests[MAX_CASES + 3];
+    static struct CMUnitTest tests[MAX_CASES + 4];
     size_t n = 0;
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_a_good_run_writes_only_complete_frames);
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_help_documents_the_exit_statuses);
     tests[n++] =
         (struct CMUnitTest)cmocka_unit_test(test_an_interrupted_run_leaves_only_complete_frames);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_the_readme_table_lists_every_case);
     for (size_t i = 0; i < case_count; ++i) {
         struct CMUnitTest t = cmocka_unit_test_prestate(test_bad_input_case, &cases[i]);
         t.name = cases[i].name;
