@@ -6,8 +6,9 @@
 
 #include "sim_internal.h"
 
-/* Bytes per disk: x, y, vx, vy, id, slot, plus the placement grid's link. */
-#define BYTES_PER_DISK (4 * sizeof(double) + 3 * sizeof(uint32_t))
+/* Bytes per disk: x, y, vx, vy, id, slot, plus the placement grid's node
+ * (centre and link, 24 bytes). DS_SAP_STRIPS adds DS_STRIPS_BYTES_PER_DISK. */
+#define BYTES_PER_DISK (4 * sizeof(double) + 2 * sizeof(uint32_t) + 3 * sizeof(double))
 
 ds_params ds_default_params(size_t n, double radius)
 {
@@ -59,6 +60,8 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
     return DS_OK;
 }
 
+static ds_broadphase choose_broadphase(const ds_params *p, double box);
+
 ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
 {
     ds_status st = ds_check_params(params, NULL);
@@ -67,6 +70,8 @@ ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
     if (st != DS_OK)
         return st;
     *bytes = (params->n + 1) * BYTES_PER_DISK;
+    if (choose_broadphase(params, resolve_defaults(params).box) == DS_SAP_STRIPS)
+        *bytes += (params->n + 2) * DS_STRIPS_BYTES_PER_DISK;
     return DS_OK;
 }
 

@@ -46,6 +46,12 @@ uint64_t ds_bp_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
 /* Sorts slots 0..n-1 by x with insertion sort (all arrays move together). */
 void ds_bp_insertion_sort_x(ds_sim *sim);
 
+/* DS_SAP_STRIPS memory on top of the simulation's arrays, at most: a
+ * second x, y, vx, vy, id (swapped with the first after each merge), three
+ * lists of strip crossers, three per-strip offset arrays (never more strips
+ * than disks). */
+#define DS_STRIPS_BYTES_PER_DISK (4 * sizeof(double) + sizeof(uint32_t) + 6 * sizeof(uint32_t))
+
 /* DS_SAP_STRIPS lifecycle (broad_phase_strips.c). */
 ds_status ds_strips_create(ds_sim *sim);
 void ds_strips_destroy(ds_sim *sim);
