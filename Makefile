@@ -82,6 +82,7 @@ build-fuzz/fuzz_frame: tests/fuzz_frame.c $(LIB_SRC) include/disk_sim.h src/sim_
 fuzz: build-fuzz/fuzz_frame
 	./build-fuzz/fuzz_frame -max_total_time=$(FUZZ_SECONDS) -max_len=2048 -timeout=10 \
 	    -rss_limit_mb=1024 -print_final_stats=1 -artifact_prefix=tests/corpus/ \
+	    -dict=tests/fuzz_frame.dict \
 	    build-fuzz/found tests/corpus
 
 # Library hygiene: every exported symbol starts with ds_, and the library
