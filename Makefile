@@ -228,7 +228,7 @@ clean-packaging:
 # one-line note when there is none.
 RENDER_PKGS_osmesa := osmesa libpng
 RENDER_PKGS_egl    := egl gl libpng
-RENDER_BACKENDS := $(foreach b,osmesa egl,$(if $(shell pkg-config --exists $(RENDER_PKGS_$(b)) && echo y),$(b)))
+RENDER_BACKENDS := $(strip $(foreach b,osmesa egl,$(if $(shell pkg-config --exists $(RENDER_PKGS_$(b)) && echo y),$(b))))
 BACKEND ?= $(firstword $(RENDER_BACKENDS))
 RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
 RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png
