@@ -15,8 +15,10 @@ AR      ?= ar
 # (CI uses that for its -Werror builds under gcc and clang).
 ifeq ($(SANITIZE),1)
   BUILD   ?= build-san
-  CFLAGS  += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
-  LDFLAGS += -fsanitize=address,undefined
+  # gcc leaves float-cast-overflow out of "undefined": (uint64_t)2e19 is UB.
+  CFLAGS  += -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer \
+             -fno-sanitize-recover=all
+  LDFLAGS += -fsanitize=address,undefined,float-cast-overflow
   # Mesa never frees its per-process driver state: only that is suppressed.
   export LSAN_OPTIONS := suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
 endif
@@ -35,7 +37,14 @@ all: $(LIB) $(DISKS)
 $(BUILD):
 	@mkdir -p $(BUILD)
 
-$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/sweep_block.h | $(BUILD)
+# Objects record the flags they were built with: a changed CC, CFLAGS or
+# LDFLAGS (a sanitizer, -Werror) rebuilds them instead of mixing old and new.
+FLAGS_STAMP := $(BUILD)/flags.stamp
+FLAGS_NOW   := $(CC) $(CFLAGS) $(CPPFLAGS) $(LDFLAGS)
+$(shell mkdir -p $(BUILD); [ "$$(cat $(FLAGS_STAMP) 2>/dev/null)" = "$(FLAGS_NOW)" ] || \
+    echo "$(FLAGS_NOW)" > $(FLAGS_STAMP))
+
+$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/sweep_block.h $(FLAGS_STAMP) | $(BUILD)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)

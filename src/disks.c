@@ -85,7 +85,9 @@ static int parse_count(const char *s, uint64_t max, uint64_t *out)
     double d = strtod(s, &end);
     if (*end != '\0' || end == s || !isfinite(d) || d != floor(d) || d < 0.0)
         return errno == ERANGE ? -1 : 0;
-    if (d > (double)max)
+    /* (double)UINT64_MAX rounds up to 2^64, and converting 2^64 to uint64_t
+     * is undefined: test against 2^64 itself, then compare as integers. */
+    if (!(d < 18446744073709551616.0) || (uint64_t)d > max)
         return -1;
     *out = (uint64_t)d;
     return 1;
