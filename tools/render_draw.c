@@ -120,7 +120,7 @@ static int legend(rd_renderer *r, const rl_layout *l, double vmax)
         if (rect(r, l->bar_x, y, l->bar_x + l->bar_w, y + 1.0, rc_viridis((k + 0.5) / rows)))
             return -1;
     }
-    const double line = l->text_px, gap = 3.0 * l->text_px, h = RF_HEIGHT * l->text_px;
+    const double line = l->text_px, gap = 4.0 * l->text_px, h = RF_HEIGHT * l->text_px;
     char top[32];
     snprintf(top, sizeof top, vmax >= 10.0 ? "%.0f" : "%.2g", vmax);
     if (rect(r, l->bar_x - line, l->bar_y - line, l->bar_x + l->bar_w + line, l->bar_y,
