@@ -43,7 +43,7 @@
 #define CASE_TIMEOUT_SECONDS 60
 #define MAX_ARGS 24
 #define MAX_CASES 128
-#define MAX_ENTRIES 64
+#define MAX_ENTRIES 512 /* files a case may leave: more is a failure */
 
 typedef struct cli_case {
     char name[128];
@@ -285,6 +285,8 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
     static char after[MAX_ENTRIES][PATH_MAX];
     size_t nafter = 0;
     list_tree(dir, "", after, &nafter);
+    if (nafter == MAX_ENTRIES)
+        snprintf(o->problem, sizeof o->problem, "more than %d files left behind", MAX_ENTRIES);
     for (size_t i = 0; i < nafter && !o->problem[0]; ++i) {
         int old = 0;
         for (size_t j = 0; j < nbefore; ++j)
