@@ -327,13 +327,14 @@ static int write_file_atomic(const char *dir, const char *name, const char *data
     return rc;
 }
 
-/* --stats may name a device or a pipe (/dev/stdout, /dev/full, a FIFO):
- * renaming a temporary over it would replace the device node itself, so
- * such a path is written in place, with the same error checks. */
+/* --stats may name a device, a pipe or a symbolic link (/dev/full, a FIFO,
+ * /dev/stdout): renaming a temporary over it would replace the device node
+ * or the link itself, so only a regular file (or a new name) is replaced;
+ * anything else is written in place, with the same error checks. */
 static int is_special_file(const char *path)
 {
     struct stat st;
-    return stat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+    return lstat(path, &st) == 0 && !S_ISREG(st.st_mode);
 }
 
 static int write_file_in_place(const char *path, const char *data, size_t len, const char **why)
