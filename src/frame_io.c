@@ -209,12 +209,13 @@ ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame
         const char *nl = memchr(start, '\n', len - pos);
         size_t l = nl ? (size_t)(nl - start) : len - pos;
         pos += l + (nl ? 1 : 0);
-        if (l > LINE_MAX_BYTES) {
-            st = fail(err, line_no, "line too long");
-            goto out;
-        }
+        /* NUL first: binary input is named as such, not as a long line. */
         if (memchr(start, '\0', l)) {
             st = fail(err, line_no, "unexpected NUL byte");
+            goto out;
+        }
+        if (l > LINE_MAX_BYTES) {
+            st = fail(err, line_no, "line too long");
             goto out;
         }
         memcpy(line, start, l);
@@ -303,7 +304,13 @@ ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err)
             cap *= 2;
         }
         size_t got = fread(buf + len, 1, cap - len, f);
+        /* A frame is text: at the first NUL byte stop reading and let the
+         * parser name the line, so binary or endless input (/dev/zero, a
+         * device, a wrong file) is refused at once instead of slurped. */
+        int binary = got && memchr(buf + len, '\0', got) != NULL;
         len += got;
+        if (binary)
+            break;
         if (got == 0) {
             if (ferror(f)) {
                 if (err)

@@ -122,6 +122,18 @@ static void test_a_missing_file_is_an_io_error(void **state)
     assert_null(frame.disks);
 }
 
+static void test_endless_binary_input_is_refused_without_reading_it_all(void **state)
+{
+    (void)state;
+    ds_frame frame;
+    ds_frame_error err;
+    /* /dev/zero never ends: the reader must stop at its first NUL byte. */
+    assert_int_equal(ds_read_frame("/dev/zero", &frame, &err), DS_ERR_FORMAT);
+    assert_int_equal(err.line, 1);
+    assert_non_null(strstr(err.message, "NUL"));
+    assert_null(frame.disks);
+}
+
 static void test_a_directory_is_an_io_error(void **state)
 {
     (void)state;
@@ -267,6 +279,7 @@ int main(void)
         cmocka_unit_test(test_an_overlong_line_is_refused),
         cmocka_unit_test(test_an_empty_or_comment_only_frame_is_refused),
         cmocka_unit_test(test_a_missing_file_is_an_io_error),
+        cmocka_unit_test(test_endless_binary_input_is_refused_without_reading_it_all),
         cmocka_unit_test(test_a_directory_is_an_io_error),
         cmocka_unit_test(test_writing_a_frame_to_a_full_disk_reports_io_error),
         cmocka_unit_test(test_a_written_frame_reads_back_exactly),
