@@ -82,8 +82,9 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box)
     /* Plain SAP tests ~ n 2R / box candidates per disk (those within 2R in
      * x, anywhere in y); strips test a constant few but pay for disks
      * changing strip. Measured (`make bench` and sweeps of N and R at area
-     * fractions 0.03 to 0.1): SAP is 3x faster at 4 candidates per disk
-     * (the seed case), even at ~10, and 1.4x slower at 12. */
+     * fractions 0.01 to 0.1): SAP is 3x faster at 4 candidates per disk
+     * (the seed case), 1.3x faster at 8; they break even near 9-10, and
+     * strips are 1.25x faster at 11, 1.5x at 12. */
     double per_disk = (double)p->n * 2.0 * p->radius / box;
     return per_disk > 10.0 ? DS_SAP_STRIPS : DS_SAP;
 }
