@@ -275,47 +275,55 @@ static void sort_range(ds_sim *sim, size_t lo, size_t hi)
     }
 }
 
-/* The first layout, from disks in generation order: counting sort by a
- * fine x cell, then a stable counting sort by strip, leaves each strip in
- * nearly x order, so the insertion sort that follows is linear. */
+/* The first layout, from disks in generation order: a counting sort by
+ * strip (one sequential pass over y), then inside each strip a counting
+ * sort by an x cell about one disk wide, which leaves the strip in nearly
+ * x order, so the insertion sort that follows is linear. Only two passes
+ * read the arrays in random order: x inside each strip, and the final
+ * gather of every disk into its place. */
 static void initial_layout(ds_sim *sim, struct ds_strips *st)
 {
-    const size_t n = sim->n;
-    /* About one disk per x cell; the second id array (n + 1 counters) is
-     * free until the first merge. */
-    const size_t cells = n;
-    uint32_t *cell_start = st->id;
-    const double cells_per_unit = (double)cells / sim->box;
-    memset(cell_start, 0, (n + 1) * sizeof *cell_start);
-    for (size_t k = 0; k < n; ++k) {
-        double c = floor(sim->x[k] * cells_per_unit);
-        st->mover_strip[k] = c <= 0.0 ? 0u : c >= (double)(cells - 1) ? (uint32_t)(cells - 1) : (uint32_t)c;
-        ++cell_start[st->mover_strip[k] + 1];
-    }
-    for (size_t c = 1; c <= cells; ++c)
-        cell_start[c] += cell_start[c - 1];
-    for (size_t k = 0; k < n; ++k)
-        st->mover[cell_start[st->mover_strip[k]]++] = (uint32_t)k;
-
-    /* mover[] now lists every slot in x-cell order: bucket them by strip
-     * (stable, so x-cell order survives inside each strip). */
-    for (size_t m = 0; m < n; ++m)
-        st->mover_strip[m] = strip_of(st, sim->y[st->mover[m]]);
+    const size_t n = sim->n, strips = st->count;
+    const double *x = sim->x;
     uint32_t *b = st->bucket_start;
-    memset(b, 0, (st->count + 2) * sizeof *b);
-    for (size_t m = 0; m < n; ++m)
-        ++b[st->mover_strip[m] + 2];
-    for (size_t t = 2; t < st->count + 2; ++t)
+    memset(b, 0, (strips + 2) * sizeof *b);
+    for (size_t k = 0; k < n; ++k) {
+        st->mover_strip[k] = strip_of(st, sim->y[k]);
+        ++b[st->mover_strip[k] + 2];
+    }
+    for (size_t t = 2; t < strips + 2; ++t)
         b[t] += b[t - 1];
-    for (size_t m = 0; m < n; ++m)
-        st->incoming[b[st->mover_strip[m] + 1]++] = st->mover[m];
+    for (size_t k = 0; k < n; ++k) /* stable: slots ascend in each strip */
+        st->incoming[b[st->mover_strip[k] + 1]++] = (uint32_t)k;
+
+    /* Strip t's slots are incoming[b[t] .. b[t+1]); sorted into mover[].
+     * The second id array is free until the gather: its entries
+     * b[t] .. b[t+1] (one more than the strip holds) count the cells. */
+    uint32_t *count = st->id;
+    for (size_t t = 0; t < strips; ++t) {
+        const size_t lo = b[t], len = b[t + 1] - lo;
+        if (len == 0)
+            continue;
+        uint32_t *cell_start = count + lo;
+        const double cells_per_unit = (double)len / sim->box;
+        memset(cell_start, 0, (len + 1) * sizeof *cell_start);
+        for (size_t m = lo; m < lo + len; ++m) {
+            double c = floor(x[st->incoming[m]] * cells_per_unit);
+            st->mover_strip[m] = c <= 0.0 ? 0u : c >= (double)(len - 1) ? (uint32_t)(len - 1) : (uint32_t)c;
+            ++cell_start[st->mover_strip[m] + 1];
+        }
+        for (size_t c = 1; c <= len; ++c)
+            cell_start[c] += cell_start[c - 1];
+        for (size_t m = lo; m < lo + len; ++m)
+            st->mover[lo + cell_start[st->mover_strip[m]]++] = st->incoming[m];
+    }
 
     swap_buffers(sim, st);
     for (size_t w = 0; w < n; ++w)
-        copy_disk(sim, st, st->incoming[w], w);
-    memcpy(st->start, b, st->count * sizeof *b);
-    st->start[st->count] = (uint32_t)n;
-    for (size_t t = 0; t < st->count; ++t)
+        copy_disk(sim, st, st->mover[w], w);
+    memcpy(st->start, b, strips * sizeof *b);
+    st->start[strips] = (uint32_t)n;
+    for (size_t t = 0; t < strips; ++t)
         sort_range(sim, st->start[t], st->start[t + 1]);
 }
 
