@@ -53,8 +53,7 @@ static size_t sweep_window(ds_sim *sim, size_t i, size_t j, double xlim, ds_pair
                            void *ctx)
 {
     const double *restrict x = sim->x, *restrict y = sim->y;
-    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius,
-                 d2max = diameter * diameter;
+    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius, d2max = diameter * diameter;
     uint32_t hits[HITS_CAP];
     size_t nh;
     do {
@@ -133,8 +132,8 @@ __attribute__((target("avx"))) static uint64_t sweep_sap_avx(ds_sim *sim, ds_pai
  * comparisons give bit masks directly. */
 #define HAVE_AVX512_SWEEP 1
 
-__attribute__((target("avx512f"))) static uint64_t sweep_sap_avx512(ds_sim *sim,
-                                                                    ds_pair_fn on_pair, void *ctx)
+__attribute__((target("avx512f"))) static uint64_t sweep_sap_avx512(ds_sim *sim, ds_pair_fn on_pair,
+                                                                    void *ctx)
 {
     const size_t n = sim->n;
     const double *restrict x = sim->x, *restrict y = sim->y;

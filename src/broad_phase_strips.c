@@ -309,7 +309,9 @@ static void initial_layout(ds_sim *sim, struct ds_strips *st)
         memset(cell_start, 0, (len + 1) * sizeof *cell_start);
         for (size_t m = lo; m < lo + len; ++m) {
             double c = floor(x[st->incoming[m]] * cells_per_unit);
-            st->mover_strip[m] = c <= 0.0 ? 0u : c >= (double)(len - 1) ? (uint32_t)(len - 1) : (uint32_t)c;
+            st->mover_strip[m] = c <= 0.0                 ? 0u
+                                 : c >= (double)(len - 1) ? (uint32_t)(len - 1)
+                                                          : (uint32_t)c;
             ++cell_start[st->mover_strip[m] + 1];
         }
         for (size_t c = 1; c <= len; ++c)
@@ -390,8 +392,7 @@ static size_t sweep_range(ds_sim *sim, size_t i, size_t j, size_t end, double xl
                           ds_pair_fn on_pair, void *ctx)
 {
     const double *restrict x = sim->x, *restrict y = sim->y;
-    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius,
-                 d2max = diameter * diameter;
+    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius, d2max = diameter * diameter;
     uint32_t hits[HITS_CAP];
     size_t nh;
     do {
@@ -417,7 +418,7 @@ static size_t sweep_range(ds_sim *sim, size_t i, size_t j, size_t end, double xl
  * ends. A block of four first, branch-free (see sweep_block.h); the loop
  * only for longer windows, or near the end of the arrays. */
 static ALWAYS_INLINE size_t sweep_block(ds_sim *sim, size_t i, size_t j, size_t end, double xlim,
-                                 double d2max, ds_pair_fn on_pair, void *ctx)
+                                        double d2max, ds_pair_fn on_pair, void *ctx)
 {
     const double *x = sim->x, *y = sim->y;
     if (j + 3 > sim->n) /* the block would read past the sentinel */

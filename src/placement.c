@@ -21,7 +21,7 @@ typedef struct grid_node {
 } grid_node;
 
 typedef struct grid {
-    size_t side;   /* cells per row */
+    size_t side; /* cells per row */
     double inv_cell;
     uint32_t *head; /* first disk in each cell, UINT32_MAX when empty */
     grid_node *node;

@@ -34,10 +34,11 @@ static inline unsigned ds_test_four(const double *x, const double *y, size_t j, 
     const __m128d closeb = _mm_cmplt_pd(_mm_add_pd(_mm_mul_pd(dxb, dxb), _mm_mul_pd(dyb, dyb)), d2);
     /* Each 64-bit mask lane is all ones or all zeros: one 32-bit half of
      * each packs four lanes into one movemask. */
-    const __m128 in4 = _mm_shuffle_ps(_mm_castpd_ps(_mm_cmplt_pd(xa, lim)),
-                                      _mm_castpd_ps(_mm_cmplt_pd(xb, lim)), _MM_SHUFFLE(2, 0, 2, 0));
-    const __m128 close4 = _mm_shuffle_ps(_mm_castpd_ps(closea), _mm_castpd_ps(closeb),
-                                         _MM_SHUFFLE(2, 0, 2, 0));
+    const __m128 in4 =
+        _mm_shuffle_ps(_mm_castpd_ps(_mm_cmplt_pd(xa, lim)), _mm_castpd_ps(_mm_cmplt_pd(xb, lim)),
+                       _MM_SHUFFLE(2, 0, 2, 0));
+    const __m128 close4 =
+        _mm_shuffle_ps(_mm_castpd_ps(closea), _mm_castpd_ps(closeb), _MM_SHUFFLE(2, 0, 2, 0));
     *inside = (unsigned)_mm_movemask_ps(in4);
     return (unsigned)_mm_movemask_ps(close4);
 #else

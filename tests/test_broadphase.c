@@ -63,10 +63,10 @@ static size_t assert_same_pairs_as_brute_force(ds_sim *sim)
 }
 
 typedef enum layout {
-    UNIFORM,      /* anywhere in [R, box-R]^2, overlaps allowed */
-    ON_WALLS,     /* every coordinate exactly R or box-R, or uniform */
-    COARSE_GRID,  /* coordinates on a grid of step R/2: many equal x and y */
-    CLUSTERED     /* all in a small square: every disk overlaps ~20 */
+    UNIFORM,     /* anywhere in [R, box-R]^2, overlaps allowed */
+    ON_WALLS,    /* every coordinate exactly R or box-R, or uniform */
+    COARSE_GRID, /* coordinates on a grid of step R/2: many equal x and y */
+    CLUSTERED    /* all in a small square: every disk overlaps ~20 */
 } layout;
 
 /* Places every disk by ds_set (velocities random, speed ~100). */
@@ -107,8 +107,8 @@ static void scatter(ds_sim *sim, layout how, ds_rng *rng)
 static const struct {
     size_t n;
     double radius;
-} CASES[] = {{1, 5.0}, {2, 300.0}, {9, 5.0}, {50, 40.0}, {400, 5.0}, {400, 20.0},
-             {1000, 1.0}, {1500, 12.0}, {2000, 3.0}};
+} CASES[] = {{1, 5.0},    {2, 300.0},  {9, 5.0},     {50, 40.0}, {400, 5.0},
+             {400, 20.0}, {1000, 1.0}, {1500, 12.0}, {2000, 3.0}};
 
 static void check_broad_phase(ds_broadphase bp)
 {

@@ -113,15 +113,15 @@ static double best_create_seconds(size_t n, double radius, ds_broadphase bp, int
 
 static void print_header(void)
 {
-    printf("%-8s %8s %8s %6s %-7s %7s %10s %10s %12s\n", "case", "N", "R", "phi", "broad",
-           "steps", "coll. s", "ns/disk", "tests/step");
+    printf("%-8s %8s %8s %6s %-7s %7s %10s %10s %12s\n", "case", "N", "R", "phi", "broad", "steps",
+           "coll. s", "ns/disk", "tests/step");
 }
 
 static void print_row(const char *name, const result *r)
 {
     printf("%-8s %8zu %8.4f %6.3f %-7s %7lu %10.4f %10.2f %12.0f\n", name, r->n, r->radius,
-           fraction_of(r->n, r->radius), ds_broadphase_name(r->bp), r->steps,
-           r->collision_seconds, ns_per_disk_step(r), r->pairs_per_step);
+           fraction_of(r->n, r->radius), ds_broadphase_name(r->bp), r->steps, r->collision_seconds,
+           ns_per_disk_step(r), r->pairs_per_step);
     fflush(stdout);
 }
 
@@ -214,7 +214,8 @@ static const char *auto_choice(size_t n, double r)
     ds_params p = ds_default_params(n, r);
     ds_sim *sim = NULL;
     /* Creating places the disks; only done for small n. */
-    const char *name = ds_create(&p, &sim) == DS_OK ? ds_broadphase_name(ds_broadphase_used(sim)) : "?";
+    const char *name =
+        ds_create(&p, &sim) == DS_OK ? ds_broadphase_name(ds_broadphase_used(sim)) : "?";
     ds_destroy(sim);
     return name;
 }
@@ -224,8 +225,8 @@ int main(int argc, char **argv)
     if (argc == 3 && strcmp(argv[1], "scale") == 0) {
         size_t n = (size_t)strtoul(argv[2], NULL, 10);
         result r;
-        if (n < 1 || !run_case(n, radius_for_fraction(n, AREA_FRACTION), DS_AUTO,
-                               scaling_steps(n), &r))
+        if (n < 1 ||
+            !run_case(n, radius_for_fraction(n, AREA_FRACTION), DS_AUTO, scaling_steps(n), &r))
             return 1;
         print_header();
         print_row("scale", &r);
