@@ -72,6 +72,27 @@ static void prefetch_cells(const grid *g, double px, double py)
 #endif
 }
 
+/* Asks for the first disk of each of the 9 cells around (px, py): their
+ * heads must already be in cache (prefetched one candidate earlier). */
+static void prefetch_nodes(const grid *g, double px, double py)
+{
+#if defined(__GNUC__)
+    size_t cx = cell_coord(g, px), cy = cell_coord(g, py);
+    size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
+    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side ? cy + 1 : cy;
+    for (size_t gy = y0; gy <= y1; ++gy)
+        for (size_t gx = x0; gx <= x1; ++gx) {
+            uint32_t k = g->head[gy * g->side + gx];
+            if (k != UINT32_MAX)
+                __builtin_prefetch(&g->node[k]);
+        }
+#else
+    (void)g;
+    (void)px;
+    (void)py;
+#endif
+}
+
 ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
 {
     const double r = sim->radius, box = sim->box;
@@ -113,15 +134,22 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
             px = ds_rng_uniform(&rng, r, box - r);
             py = ds_rng_uniform(&rng, r, box - r);
             if (big_grid) {
-                /* The next candidate is the next two draws if this one is
-                 * refused, or the two after the direction if it is
-                 * accepted: prefetch both. A copy of the generator peeks. */
+                /* Two candidates ahead, in a pipeline: the next one is the
+                 * next two draws if this one is refused, or the two after
+                 * the direction if accepted; the one after that is one of
+                 * three pairs further on. Fetch the heads of those three,
+                 * and the first disks of the next one's cells (whose heads
+                 * came in one candidate earlier). A copy of the generator
+                 * peeks ahead. */
                 ds_rng ahead = rng;
-                double u1 = ds_rng_uniform(&ahead, r, box - r);
-                double u2 = ds_rng_uniform(&ahead, r, box - r);
-                double u3 = ds_rng_uniform(&ahead, r, box - r);
-                prefetch_cells(&g, u1, u2);
-                prefetch_cells(&g, u2, u3);
+                double u[6];
+                for (int q = 0; q < 6; ++q)
+                    u[q] = ds_rng_uniform(&ahead, r, box - r);
+                prefetch_cells(&g, u[2], u[3]);
+                prefetch_cells(&g, u[3], u[4]);
+                prefetch_cells(&g, u[4], u[5]);
+                prefetch_nodes(&g, u[0], u[1]);
+                prefetch_nodes(&g, u[1], u[2]);
             }
         } while (overlaps_any(sim, &g, px, py));
 
