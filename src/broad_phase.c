@@ -10,14 +10,15 @@
 #include "sim_internal.h"
 #include "sweep_block.h"
 
-void ds_bp_insertion_sort_x(ds_sim *sim)
+void ds_bp_insertion_sort_x(ds_sim *sim) { ds_bp_insertion_sort_range(sim, 0, sim->n); }
+
+void ds_bp_insertion_sort_range(ds_sim *sim, size_t lo, size_t hi)
 {
-    const size_t n = sim->n;
     double *restrict x = sim->x, *restrict y = sim->y;
     double *restrict vx = sim->vx, *restrict vy = sim->vy;
     uint32_t *restrict id = sim->id;
 
-    for (size_t k = 1; k < n; ++k) {
+    for (size_t k = lo + 1; k < hi; ++k) {
         const double xk = x[k];
         if (!(xk < x[k - 1]))
             continue; /* the common case: already in order */
@@ -31,7 +32,7 @@ void ds_bp_insertion_sort_x(ds_sim *sim)
             vy[j] = vy[j - 1];
             id[j] = id[j - 1];
             --j;
-        } while (j > 0 && xk < x[j - 1]);
+        } while (j > lo && xk < x[j - 1]);
         x[j] = xk;
         y[j] = yk;
         vx[j] = vxk;

@@ -246,35 +246,6 @@ static size_t find_movers(ds_sim *sim, struct ds_strips *st)
     return nm;
 }
 
-/* Insertion sort by x of the slots [lo, hi) (all arrays move together). */
-static void sort_range(ds_sim *sim, size_t lo, size_t hi)
-{
-    double *restrict x = sim->x, *restrict y = sim->y;
-    double *restrict vx = sim->vx, *restrict vy = sim->vy;
-    uint32_t *restrict id = sim->id;
-    for (size_t k = lo + 1; k < hi; ++k) {
-        const double xk = x[k];
-        if (!(xk < x[k - 1]))
-            continue;
-        const double yk = y[k], vxk = vx[k], vyk = vy[k];
-        const uint32_t idk = id[k];
-        size_t j = k;
-        do {
-            x[j] = x[j - 1];
-            y[j] = y[j - 1];
-            vx[j] = vx[j - 1];
-            vy[j] = vy[j - 1];
-            id[j] = id[j - 1];
-            --j;
-        } while (j > lo && xk < x[j - 1]);
-        x[j] = xk;
-        y[j] = yk;
-        vx[j] = vxk;
-        vy[j] = vyk;
-        id[j] = idk;
-    }
-}
-
 /* The first layout, from disks in generation order: a counting sort by
  * strip (one sequential pass over y), then inside each strip a counting
  * sort by an x cell about one disk wide, which leaves the strip in nearly
@@ -326,7 +297,7 @@ static void initial_layout(ds_sim *sim, struct ds_strips *st)
     memcpy(st->start, b, strips * sizeof *b);
     st->start[strips] = (uint32_t)n;
     for (size_t t = 0; t < strips; ++t)
-        sort_range(sim, st->start[t], st->start[t + 1]);
+        ds_bp_insertion_sort_range(sim, st->start[t], st->start[t + 1]);
 }
 
 ds_status ds_strips_create(ds_sim *sim)
@@ -482,7 +453,7 @@ uint64_t ds_strips_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
             w = merge_strip(sim, st, t, w, nm, &mp);
             st->next_start[t + 1] = (uint32_t)w; /* strip t's end, for its sweep */
         }
-        sort_range(sim, start[t], start[t + 1]);
+        ds_bp_insertion_sort_range(sim, start[t], start[t + 1]);
         if (t > 0)
             tested += sweep_strip(sim, start, t - 1, strips, on_pair, ctx);
     }

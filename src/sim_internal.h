@@ -45,6 +45,8 @@ uint64_t ds_bp_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
 
 /* Sorts slots 0..n-1 by x with insertion sort (all arrays move together). */
 void ds_bp_insertion_sort_x(ds_sim *sim);
+/* The same for slots [lo, hi) only (one strip of DS_SAP_STRIPS). */
+void ds_bp_insertion_sort_range(ds_sim *sim, size_t lo, size_t hi);
 
 /* DS_SAP_STRIPS memory on top of the simulation's arrays, at most: a
  * second x, y, vx, vy, id (swapped with the first after each merge), three
