@@ -75,11 +75,36 @@ static size_t sweep_window(ds_sim *sim, size_t i, size_t j, double xlim, ds_pair
     return j;
 }
 
+/* The last disks, whose blocks would run past the sentinel, one by one. */
+static uint64_t sweep_rest(ds_sim *sim, size_t i, ds_pair_fn on_pair, void *ctx)
+{
+    const double diameter = 2.0 * sim->radius;
+    uint64_t tested = 0;
+    for (; i < sim->n; ++i)
+        tested += sweep_window(sim, i, i + 1, sim->x[i] + diameter, on_pair, ctx) - i - 1;
+    return tested;
+}
+
 /* Blocks of BLOCK = 8 candidates per disk, tested four at a time without
  * a data-dependent branch (see sweep_block.h): the window after disk i
  * holds ~ n 2R / box disks (4 in the seed case), so the scalar loop takes
  * over only for the ~5% of disks whose window fills the whole block. */
 #define BLOCK 8
+
+/* What every block sweep does with disk i's block once its masks are
+ * known: report the overlapping candidates, continue the window past the
+ * block when all of it was inside, and return the number of tests. */
+static inline uint64_t finish_block(ds_sim *sim, size_t i, unsigned inside_bits, unsigned hit,
+                                    double xlim, ds_pair_fn on_pair, void *ctx)
+{
+    for (size_t j = i + 1; hit; ++j, hit >>= 1)
+        if (hit & 1u)
+            on_pair(sim, i, j, ctx);
+    size_t end = i + 1 + ds_prefix_length(inside_bits);
+    if (inside_bits == (1u << BLOCK) - 1u)
+        end = sweep_window(sim, i, end, xlim, on_pair, ctx);
+    return end - i - 1;
+}
 
 #if defined(__GNUC__) && defined(__x86_64__)
 /* The same block test with 256-bit AVX registers, four candidates per
@@ -115,19 +140,9 @@ __attribute__((target("avx"))) static uint64_t sweep_sap_avx(ds_sim *sim, ds_pai
         unsigned hit = inside_bits &
                        ((unsigned)_mm256_movemask_pd(_mm256_cmp_pd(d2a, d2max, _CMP_LT_OQ)) |
                         (unsigned)_mm256_movemask_pd(_mm256_cmp_pd(d2b, d2max, _CMP_LT_OQ)) << 4);
-        for (size_t j = i + 1; hit; ++j, hit >>= 1)
-            if (hit & 1u)
-                on_pair(sim, i, j, ctx);
-        size_t end = i + 1 + ds_prefix_length(inside_bits);
-        if (inside_bits == (1u << BLOCK) - 1u)
-            end = sweep_window(sim, i, end, xlim, on_pair, ctx);
-        tested += end - i - 1;
+        tested += finish_block(sim, i, inside_bits, hit, xlim, on_pair, ctx);
     }
-    for (; i < n; ++i) {
-        const size_t end = sweep_window(sim, i, i + 1, x[i] + diameter, on_pair, ctx);
-        tested += end - i - 1;
-    }
-    return tested;
+    return tested + sweep_rest(sim, i, on_pair, ctx);
 }
 /* With AVX-512 the whole block of eight is one register, and the
  * comparisons give bit masks directly. */
@@ -153,19 +168,9 @@ __attribute__((target("avx512f"))) static uint64_t sweep_sap_avx512(ds_sim *sim,
         const unsigned inside_bits =
             (unsigned)_mm512_cmp_pd_mask(xj, _mm512_set1_pd(xlim), _CMP_LT_OQ);
         unsigned hit = inside_bits & (unsigned)_mm512_cmp_pd_mask(d2, d2max, _CMP_LT_OQ);
-        for (size_t j = i + 1; hit; ++j, hit >>= 1)
-            if (hit & 1u)
-                on_pair(sim, i, j, ctx);
-        size_t end = i + 1 + ds_prefix_length(inside_bits);
-        if (inside_bits == (1u << BLOCK) - 1u)
-            end = sweep_window(sim, i, end, xlim, on_pair, ctx);
-        tested += end - i - 1;
+        tested += finish_block(sim, i, inside_bits, hit, xlim, on_pair, ctx);
     }
-    for (; i < n; ++i) {
-        const size_t end = sweep_window(sim, i, i + 1, x[i] + diameter, on_pair, ctx);
-        tested += end - i - 1;
-    }
-    return tested;
+    return tested + sweep_rest(sim, i, on_pair, ctx);
 }
 #endif
 
@@ -187,19 +192,9 @@ static uint64_t sweep_sap_blocks(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
         const unsigned close_hi = ds_test_four(x, y, i + 5, xi, yi, xlim, d2max, &in_hi);
         const unsigned inside_bits = in_lo | in_hi << 4;
         unsigned hit = inside_bits & (close_lo | close_hi << 4);
-        for (size_t j = i + 1; hit; ++j, hit >>= 1)
-            if (hit & 1u)
-                on_pair(sim, i, j, ctx);
-        size_t end = i + 1 + ds_prefix_length(inside_bits);
-        if (inside_bits == (1u << BLOCK) - 1u)
-            end = sweep_window(sim, i, end, xlim, on_pair, ctx);
-        tested += end - i - 1;
+        tested += finish_block(sim, i, inside_bits, hit, xlim, on_pair, ctx);
     }
-    for (; i < n; ++i) {
-        const size_t end = sweep_window(sim, i, i + 1, x[i] + diameter, on_pair, ctx);
-        tested += end - i - 1;
-    }
-    return tested;
+    return tested + sweep_rest(sim, i, on_pair, ctx);
 }
 
 static uint64_t sweep_sap(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
