@@ -269,6 +269,19 @@ static void make_dirs(const char *path)
         die(EXIT_RUN, "'%s' is not a directory", path);
 }
 
+/* Writes len bytes to f and closes it, checking every step (fwrite into
+ * stdio's buffer succeeds even on a full disk; only the flush and the
+ * close tell). Returns 0, or the errno of the first failure. */
+static int write_and_close(FILE *f, const char *data, size_t len)
+{
+    size_t put = fwrite(data, 1, len, f);
+    int failed = put != len || fflush(f) != 0 || ferror(f);
+    int saved = failed ? (errno ? errno : EIO) : 0;
+    if (fclose(f) != 0 && !saved)
+        saved = errno ? errno : EIO;
+    return saved;
+}
+
 /* Writes len bytes to dir/name via a temporary file and rename(), so a
  * reader never sees a half-written file. Returns 0 or sets *why. */
 static int write_file_atomic_now(const char *dir, const char *name, const char *data, size_t len,
@@ -290,20 +303,12 @@ static int write_file_atomic_now(const char *dir, const char *name, const char *
         return -1;
     }
     fchmod(fd, 0644);
-    size_t put = fwrite(data, 1, len, f);
-    int failed = put != len || fflush(f) != 0 || ferror(f);
-    int saved = errno;
-    if (fclose(f) != 0 && !failed) {
-        failed = 1;
-        saved = errno;
-    }
-    if (!failed && rename(tmp_path, final_path) != 0) {
-        failed = 1;
-        saved = errno;
-    }
-    if (failed) {
+    int saved = write_and_close(f, data, len);
+    if (!saved && rename(tmp_path, final_path) != 0)
+        saved = errno ? errno : EIO;
+    if (saved) {
         unlink(tmp_path);
-        *why = strerror(saved ? saved : EIO);
+        *why = strerror(saved);
         return -1;
     }
     return 0;
@@ -344,16 +349,10 @@ static int write_file_in_place(const char *path, const char *data, size_t len, c
         *why = strerror(errno);
         return -1;
     }
-    size_t put = fwrite(data, 1, len, f);
-    int failed = put != len || fflush(f) != 0 || ferror(f);
-    int saved = errno;
-    if (fclose(f) != 0 && !failed) {
-        failed = 1;
-        saved = errno;
-    }
-    if (failed)
-        *why = strerror(saved ? saved : EIO);
-    return failed ? -1 : 0;
+    int saved = write_and_close(f, data, len);
+    if (saved)
+        *why = strerror(saved);
+    return saved ? -1 : 0;
 }
 
 /* Splits --stats into directory and base name, refusing at once (before
