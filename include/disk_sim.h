@@ -141,8 +141,8 @@ size_t ds_count(const ds_sim *sim);
 double ds_radius(const ds_sim *sim);
 double ds_box(const ds_sim *sim);
 double ds_dt(const ds_sim *sim);
-double ds_time(const ds_sim *sim);    /* simulated time = steps * dt */
-uint64_t ds_steps(const ds_sim *sim); /* steps taken since creation */
+double ds_time(const ds_sim *sim);                   /* simulated time = steps * dt */
+uint64_t ds_steps(const ds_sim *sim);                /* steps taken since creation */
 ds_broadphase ds_broadphase_used(const ds_sim *sim); /* never DS_AUTO */
 const char *ds_broadphase_name(ds_broadphase bp);
 
@@ -188,8 +188,7 @@ ds_status ds_write_frame_velocities(const ds_sim *sim, FILE *out);
  * returns DS_ERR_ARG; *len receives the bytes needed either way.
  * ds_frame_size() tells the capacity that is always enough. */
 size_t ds_frame_size(const ds_sim *sim, int velocities);
-ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap,
-                          size_t *len);
+ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len);
 
 /* One disk read from a frame file. vx, vy are 0 in 3-column frames. */
 typedef struct ds_frame_disk {

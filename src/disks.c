@@ -100,8 +100,8 @@ static uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_
     if (ok == 0)
         die(EXIT_USAGE, "%s must be a whole number, got '%s'", name, s);
     if (ok < 0 || v < min)
-        die(EXIT_USAGE, "%s must be between %llu and %llu, got '%s'", name,
-            (unsigned long long)min, (unsigned long long)max, s);
+        die(EXIT_USAGE, "%s must be between %llu and %llu, got '%s'", name, (unsigned long long)min,
+            (unsigned long long)max, s);
     return v;
 }
 
@@ -168,8 +168,8 @@ static options parse_args(int argc, char **argv)
             const char *eq = strchr(a, '=');
             size_t len = eq ? (size_t)(eq - a) : strlen(a);
             const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
-            const char *names[] = {"--seed", "--frames", "--steps-per-frame", "--out", "--stats",
-                                   "--broadphase"};
+            const char *names[] = {"--seed", "--frames", "--steps-per-frame",
+                                   "--out",  "--stats",  "--broadphase"};
             int which = -1;
             for (int k = 0; k < 6; ++k)
                 if (strlen(names[k]) == len && strncmp(a, names[k], len) == 0)
@@ -387,8 +387,7 @@ static void progress_show(const progress *pr, long frame, long frames, uint64_t 
     double elapsed = ds_now() - pr->started;
     double rate = elapsed > 0.0 ? (double)steps / elapsed : 0.0;
     double left = frame > 0 ? elapsed * (double)(frames - frame) / (double)frame : 0.0;
-    fprintf(stderr, "\rframe %ld of %ld  %.0f steps/s  %.0f s left  ", frame, frames, rate,
-            left);
+    fprintf(stderr, "\rframe %ld of %ld  %.0f steps/s  %.0f s left  ", frame, frames, rate, left);
 }
 
 static void progress_clear(const progress *pr)
@@ -438,8 +437,8 @@ int main(int argc, char **argv)
     ds_sim *sim = NULL;
     ds_status st = ds_create(&p, &sim);
     if (st == DS_ERR_PLACEMENT)
-        die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s",
-            o.n, o.radius, (unsigned long long)o.seed, "try fewer or smaller disks");
+        die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s", o.n,
+            o.radius, (unsigned long long)o.seed, "try fewer or smaller disks");
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
     if (!o.quiet)
@@ -503,8 +502,7 @@ int main(int argc, char **argv)
                "pairs over %llu steps)\n",
                ds_collision_seconds(sim), (unsigned long long)ds_steps(sim));
         printf("disk-disk collisions: %llu, wall reflections: %llu\n",
-               (unsigned long long)ds_collision_count(sim),
-               (unsigned long long)ds_wall_count(sim));
+               (unsigned long long)ds_collision_count(sim), (unsigned long long)ds_wall_count(sim));
         printf("simulation %.3f s, output %.3f s\n", sim_seconds, out_seconds);
     }
     free(buf);

@@ -29,9 +29,9 @@ static size_t format_fixed6(char *out, double v)
     char *p = out;
     double a = fabs(v);
     double ip = floor(a);
-    double frac = a - ip;                    /* exact */
-    double scaled = frac * 1e6;              /* rounded product... */
-    double err = fma(frac, 1e6, -scaled);    /* ...and its exact error */
+    double frac = a - ip;                        /* exact */
+    double scaled = frac * 1e6;                  /* rounded product... */
+    double err = fma(frac, 1e6, -scaled);        /* ...and its exact error */
     double q = floor(scaled), rest = scaled - q; /* rest exact */
     uint64_t micro = (uint64_t)q;
     /* Round the exact value frac*1e6 = q + rest + err to nearest, ties to
@@ -314,8 +314,7 @@ ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err)
         if (got == 0) {
             if (ferror(f)) {
                 if (err)
-                    snprintf(err->message, sizeof err->message, "read error: %s",
-                             strerror(errno));
+                    snprintf(err->message, sizeof err->message, "read error: %s", strerror(errno));
                 st = DS_ERR_IO;
             }
             break;

@@ -241,8 +241,8 @@ ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
     if (!sim || i >= sim->n)
         return DS_ERR_ARG;
     const double lo = sim->radius, hi = sim->box - sim->radius;
-    if (!(d.x >= lo && d.x <= hi && d.y >= lo && d.y <= hi) || !isfinite(d.vx) ||
-        !isfinite(d.vy) || fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
+    if (!(d.x >= lo && d.x <= hi && d.y >= lo && d.y <= hi) || !isfinite(d.vx) || !isfinite(d.vy) ||
+        fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
         return DS_ERR_ARG;
     size_t k = sim->slot[i];
     sim->x[k] = d.x;

@@ -41,8 +41,7 @@ static char *slurp(const char *path, size_t *len)
 static int run(const char *args)
 {
     char cmd[2048];
-    snprintf(cmd, sizeof cmd, "./disks %s >%s/stdout.txt 2>%s/stderr.txt", args, workdir,
-             workdir);
+    snprintf(cmd, sizeof cmd, "./disks %s >%s/stdout.txt 2>%s/stderr.txt", args, workdir, workdir);
     int rc = system(cmd);
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
@@ -159,8 +158,8 @@ static void test_gnuplot_script_makes_one_gif_image_per_frame(void **state)
     assert_int_equal(run(args), 0);
     char cwd[512];
     assert_non_null(getcwd(cwd, sizeof cwd));
-    snprintf(cmd, sizeof cmd, "cd %s/gif && gnuplot %s/animate_disk.plt >/dev/null 2>&1",
-             workdir, cwd);
+    snprintf(cmd, sizeof cmd, "cd %s/gif && gnuplot %s/animate_disk.plt >/dev/null 2>&1", workdir,
+             cwd);
     assert_int_equal(system(cmd), 0);
     snprintf(path, sizeof path, "%s/gif/animation.gif", workdir);
     size_t len = 0;

@@ -26,8 +26,9 @@ static void test_fixed_six_decimals_match_printf_exactly(void **state)
     /* Random values over the box and beyond, plus the hard cases: exact
      * ties k/128 (7812.5 millionths, printf rounds half to even), values
      * that round up into the next integer, tiny negatives, zero. */
-    double special[] = {0.0, -0.0, 0.0078125, 0.0234375, 1.0000005, 999.9999995, 0.9999999,
-                        -1e-9, -0.0000005, 5.0, 995.0, 123456789.123456789, 1e14 + 0.5};
+    double special[] = {0.0,       -0.0,  0.0078125,  0.0234375, 1.0000005, 999.9999995,
+                        0.9999999, -1e-9, -0.0000005, 5.0,       995.0,     123456789.123456789,
+                        1e14 + 0.5};
     for (size_t k = 0; k < sizeof special / sizeof special[0]; ++k) {
         format_x(sim, special[k], mine, sizeof mine);
         snprintf(ref, sizeof ref, "%.6f", special[k]);
