@@ -41,47 +41,13 @@ void ds_bp_insertion_sort_range(ds_sim *sim, size_t lo, size_t hi)
     }
 }
 
-/* Reports the pairs (i, j) for j from j0 on with x[j] < xlim, scanning
- * until the sentinel-terminated window ends; returns the end of the window.
- * Hits are rare, so the loop only records them and the callback runs once
- * the loop is done: a call inside it would force xi, yi and the limits out
- * of registers (no callee-saved floating-point registers on x86-64). The
- * callback changes velocities only and the sweep reads positions only, so
- * deferring it changes nothing; pairs arrive in the same order. */
-#define HITS_CAP 32
-
-static size_t sweep_window(ds_sim *sim, size_t i, size_t j, double xlim, ds_pair_fn on_pair,
-                           void *ctx)
-{
-    const double *restrict x = sim->x, *restrict y = sim->y;
-    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius, d2max = diameter * diameter;
-    uint32_t hits[HITS_CAP];
-    size_t nh;
-    do {
-        nh = 0;
-        for (; x[j] < xlim; ++j) {
-            const double dx = x[j] - xi, dy = y[j] - yi;
-            if (dx * dx + dy * dy < d2max) {
-                hits[nh++] = (uint32_t)j;
-                if (nh == HITS_CAP) {
-                    ++j; /* full: report these, then resume after j */
-                    break;
-                }
-            }
-        }
-        for (size_t h = 0; h < nh; ++h)
-            on_pair(sim, i, hits[h], ctx);
-    } while (nh == HITS_CAP);
-    return j;
-}
-
 /* The last disks, whose blocks would run past the sentinel, one by one. */
 static uint64_t sweep_rest(ds_sim *sim, size_t i, ds_pair_fn on_pair, void *ctx)
 {
     const double diameter = 2.0 * sim->radius;
     uint64_t tested = 0;
     for (; i < sim->n; ++i)
-        tested += sweep_window(sim, i, i + 1, sim->x[i] + diameter, on_pair, ctx) - i - 1;
+        tested += ds_sweep_range(sim, i, i + 1, sim->n, sim->x[i] + diameter, on_pair, ctx) - i - 1;
     return tested;
 }
 
@@ -102,7 +68,7 @@ static inline uint64_t finish_block(ds_sim *sim, size_t i, unsigned inside_bits,
             on_pair(sim, i, j, ctx);
     size_t end = i + 1 + ds_prefix_length(inside_bits);
     if (inside_bits == (1u << BLOCK) - 1u)
-        end = sweep_window(sim, i, end, xlim, on_pair, ctx);
+        end = ds_sweep_range(sim, i, end, sim->n, xlim, on_pair, ctx);
     return end - i - 1;
 }
 

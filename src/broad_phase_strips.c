@@ -354,36 +354,6 @@ void ds_strips_destroy(ds_sim *sim)
     sim->strips = NULL;
 }
 
-/* Reports the pairs (i, j), j in [j, end), with x[j] < xlim: the callback
- * runs after the loop, for the reason given in broad_phase.c (no calls
- * inside the loop). Returns where the window ended. */
-#define HITS_CAP 32
-
-static size_t sweep_range(ds_sim *sim, size_t i, size_t j, size_t end, double xlim,
-                          ds_pair_fn on_pair, void *ctx)
-{
-    const double *restrict x = sim->x, *restrict y = sim->y;
-    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius, d2max = diameter * diameter;
-    uint32_t hits[HITS_CAP];
-    size_t nh;
-    do {
-        nh = 0;
-        for (; j < end && x[j] < xlim; ++j) {
-            const double dx = x[j] - xi, dy = y[j] - yi;
-            if (dx * dx + dy * dy < d2max) {
-                hits[nh++] = (uint32_t)j;
-                if (nh == HITS_CAP) {
-                    ++j;
-                    break;
-                }
-            }
-        }
-        for (size_t h = 0; h < nh; ++h)
-            on_pair(sim, i, hits[h], ctx);
-    } while (nh == HITS_CAP);
-    return j;
-}
-
 /* Reports the pairs of disk i with the disks of [j, end) that have
  * x < xlim (a prefix: the range is sorted by x); returns where that prefix
  * ends. A block of four first, branch-free (see sweep_block.h); the loop
@@ -393,7 +363,7 @@ static ALWAYS_INLINE size_t sweep_block(ds_sim *sim, size_t i, size_t j, size_t 
 {
     const double *x = sim->x, *y = sim->y;
     if (j + 3 > sim->n) /* the block would read past the sentinel */
-        return sweep_range(sim, i, j, end, xlim, on_pair, ctx);
+        return ds_sweep_range(sim, i, j, end, xlim, on_pair, ctx);
     unsigned inside;
     const unsigned close = ds_test_four(x, y, j, x[i], y[i], xlim, d2max, &inside);
     const size_t avail = end - j;
@@ -402,7 +372,7 @@ static ALWAYS_INLINE size_t sweep_block(ds_sim *sim, size_t i, size_t j, size_t 
         if (hit & 1u)
             on_pair(sim, i, j + k, ctx);
     if (inside == 0xFu)
-        return sweep_range(sim, i, j + 4, end, xlim, on_pair, ctx);
+        return ds_sweep_range(sim, i, j + 4, end, xlim, on_pair, ctx);
     return j + ds_prefix_length(inside);
 }
 

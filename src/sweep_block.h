@@ -1,5 +1,6 @@
-/* The sweeps' inner test on a fixed block of four candidates, without a
- * data-dependent branch (shared by broad_phase.c and broad_phase_strips.c).
+/* The sweeps' inner loops, shared by broad_phase.c and broad_phase_strips.c:
+ * a fixed block of four candidates tested without a
+ * data-dependent branch, and the bounded window walk for the rest.
  *
  * A sweep window holds a few disks and its length varies from disk to
  * disk, so a loop that stops at the first x >= xlim mispredicts its exit
@@ -12,6 +13,8 @@
 #define DS_SWEEP_BLOCK_H
 
 #include <stddef.h>
+
+#include "sim_internal.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -65,6 +68,40 @@ static inline unsigned ds_prefix_length(unsigned mask)
         ++c;
     return c;
 #endif
+}
+
+/* Reports the overlapping pairs (i, j) for j from j on while j < end and
+ * x[j] < xlim, and returns where the window ended. Hits are rare, so the
+ * loop only records them and the callback runs once the loop is done: a
+ * call inside it would force xi, yi and the limits out of registers (no
+ * callee-saved floating-point registers on x86-64). The callback changes
+ * velocities only and the sweep reads positions only, so deferring it
+ * changes nothing; pairs arrive in the same order. */
+#define DS_HITS_CAP 32
+
+static inline size_t ds_sweep_range(ds_sim *sim, size_t i, size_t j, size_t end, double xlim,
+                                    ds_pair_fn on_pair, void *ctx)
+{
+    const double *restrict x = sim->x, *restrict y = sim->y;
+    const double xi = x[i], yi = y[i], diameter = 2.0 * sim->radius, d2max = diameter * diameter;
+    uint32_t hits[DS_HITS_CAP];
+    size_t nh;
+    do {
+        nh = 0;
+        for (; j < end && x[j] < xlim; ++j) {
+            const double dx = x[j] - xi, dy = y[j] - yi;
+            if (dx * dx + dy * dy < d2max) {
+                hits[nh++] = (uint32_t)j;
+                if (nh == DS_HITS_CAP) {
+                    ++j; /* full: report these, then resume after j */
+                    break;
+                }
+            }
+        }
+        for (size_t h = 0; h < nh; ++h)
+            on_pair(sim, i, hits[h], ctx);
+    } while (nh == DS_HITS_CAP);
+    return j;
 }
 
 #endif
