@@ -67,35 +67,68 @@ static int run_case(size_t n, double radius, ds_broadphase bp, unsigned long ste
     return 1;
 }
 
-/* The fastest of `repeats` runs (collision time and creation time each):
- * on a shared machine other work only ever adds time, so the minimum is
- * the least disturbed figure. Every run is identical (same seed). */
-#define REPEATS 3
+/* Every section runs in ROUNDS rounds, each running every case of the
+ * section once (same seed every time). A shared machine's load drifts:
+ * cases of one round see about the same load, so a ratio between two cases
+ * is taken within each round, and the table shows medians over rounds
+ * (of each case's time, and of each ratio). */
+#define ROUNDS 5
 
-static int run_best(size_t n, double radius, ds_broadphase bp, unsigned long steps, result *out)
+static int compare_doubles(const void *a, const void *b)
 {
-    result r;
-    for (int k = 0; k < REPEATS; ++k) {
-        if (!run_case(n, radius, bp, steps, &r))
-            return 0;
-        if (k == 0 || r.collision_seconds < out->collision_seconds)
-            out->collision_seconds = r.collision_seconds;
-        if (k == 0 || r.create_seconds < out->create_seconds)
-            out->create_seconds = r.create_seconds;
-        out->n = r.n;
-        out->radius = r.radius;
-        out->bp = r.bp;
-        out->steps = r.steps;
-        out->pairs_per_step = r.pairs_per_step;
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The median of v[0..count), count odd; v is left sorted. */
+static double median(double *v, int count)
+{
+    qsort(v, (size_t)count, sizeof *v, compare_doubles);
+    return v[count / 2];
+}
+
+typedef struct bench_case {
+    size_t n;
+    double radius;
+    ds_broadphase bp;
+    unsigned long steps;
+} bench_case;
+
+/* Runs the cases in ROUNDS rounds: ns[c][k] is case c's ns per disk-step in
+ * round k, rows[c] case c with its median collision time. */
+static int run_rounds(const bench_case *cases, int count, double ns[][ROUNDS], result *rows)
+{
+    for (int k = 0; k < ROUNDS; ++k)
+        for (int c = 0; c < count; ++c) {
+            if (!run_case(cases[c].n, cases[c].radius, cases[c].bp, cases[c].steps, &rows[c]))
+                return 0;
+            ns[c][k] = ns_per_disk_step(&rows[c]);
+        }
+    for (int c = 0; c < count; ++c) {
+        double t[ROUNDS];
+        for (int k = 0; k < ROUNDS; ++k)
+            t[k] = ns[c][k];
+        rows[c].collision_seconds =
+            median(t, ROUNDS) * 1e-9 * (double)rows[c].n * (double)rows[c].steps;
     }
     return 1;
 }
 
-/* Fastest of several creations: placement alone at small N takes
- * milliseconds, too short for one measurement. */
-static double best_create_seconds(size_t n, double radius, ds_broadphase bp, int repeats)
+/* The median over rounds of a[k] / b[k]. */
+static double median_ratio(const double *a, const double *b)
 {
-    double best = INFINITY;
+    double r[ROUNDS];
+    for (int k = 0; k < ROUNDS; ++k)
+        r[k] = a[k] / b[k];
+    return median(r, ROUNDS);
+}
+
+/* Seconds of one ds_create, the median of `repeats` (odd, at most 64):
+ * placement alone at small N takes well under a millisecond, too short
+ * for one measurement. */
+static double create_seconds(size_t n, double radius, ds_broadphase bp, int repeats)
+{
+    double t[64];
     for (int k = 0; k < repeats; ++k) {
         ds_params p = ds_default_params(n, radius);
         p.broadphase = bp;
@@ -103,12 +136,10 @@ static double best_create_seconds(size_t n, double radius, ds_broadphase bp, int
         double t0 = ds_now();
         if (ds_create(&p, &sim) != DS_OK)
             return NAN;
-        double t = ds_now() - t0;
+        t[k] = ds_now() - t0;
         ds_destroy(sim);
-        if (t < best)
-            best = t;
     }
-    return best;
+    return median(t, repeats);
 }
 
 static void print_header(void)
@@ -243,48 +274,59 @@ int main(int argc, char **argv)
 
     /* 1. The seed case. Brute force runs fewer steps (it tests all 79,800
      * pairs every step); every figure is per disk-step, so they compare. */
-    printf("\nEach row: fastest of %d identical runs.\n", REPEATS);
+    printf("\nEach section runs its cases in %d interleaved rounds; rows show medians\n"
+           "over rounds, ratios the median of the ratios within each round.\n",
+           ROUNDS);
     printf("\n1. Seed case: N = 400, R = 5. Brute force runs 5,000 steps, not 50,000:\n"
            "   compare per disk-step.\n");
     print_header();
-    result sap, brute, strips;
-    if (!run_best(400, 5.0, DS_SAP, 50000, &sap) ||
-        !run_best(400, 5.0, DS_BRUTE_FORCE, 5000, &brute) ||
-        !run_best(400, 5.0, DS_SAP_STRIPS, 50000, &strips))
+    enum { SAP, BRUTE, STRIPS };
+    const bench_case seed[] = {{400, 5.0, DS_SAP, 50000},
+                               {400, 5.0, DS_BRUTE_FORCE, 5000},
+                               {400, 5.0, DS_SAP_STRIPS, 50000}};
+    double seed_ns[3][ROUNDS];
+    result seed_rows[3];
+    if (!run_rounds(seed, 3, seed_ns, seed_rows))
         return 1;
-    print_row("seed", &sap);
-    print_row("seed", &brute);
-    print_row("seed", &strips);
+    for (int c = 0; c < 3; ++c)
+        print_row("seed", &seed_rows[c]);
     printf("   brute / sap = %.1f (target >= 50), strips / sap = %.2f; auto picks %s\n",
-           ns_per_disk_step(&brute) / ns_per_disk_step(&sap),
-           ns_per_disk_step(&strips) / ns_per_disk_step(&sap), auto_choice(400, 5.0));
+           median_ratio(seed_ns[BRUTE], seed_ns[SAP]), median_ratio(seed_ns[STRIPS], seed_ns[SAP]),
+           auto_choice(400, 5.0));
 
     /* 2. Scaling at fixed area fraction. Plain SAP only up to 10^4: its
      * tests per disk grow like N 2R / box (357 at 10^6), and its first
-     * insertion sort, from generation order, is O(N^2). */
+     * insertion sort, from generation order, is O(N^2). Cases: SAP and
+     * strips at 10^3 and 10^4, strips at 10^5 and 10^6. */
     static const size_t sizes[] = {1000, 10000, 100000, 1000000};
-    enum { SIZES = sizeof sizes / sizeof sizes[0] };
-    result scaled[SIZES], plain[2]; /* strips at every N; SAP at the first two */
+    enum { SIZES = sizeof sizes / sizeof sizes[0], SCALE_CASES = SIZES + 2 };
+    bench_case scale[SCALE_CASES];
+    int strips_case[SIZES], sap_case[2], count = 0;
+    for (size_t k = 0; k < SIZES; ++k) {
+        const double r = radius_for_fraction(sizes[k], AREA_FRACTION);
+        const unsigned long steps = scaling_steps(sizes[k]);
+        if (k < 2) {
+            sap_case[k] = count;
+            scale[count++] = (bench_case){sizes[k], r, DS_SAP, steps / (k ? 4 : 1)};
+        }
+        strips_case[k] = count;
+        scale[count++] = (bench_case){sizes[k], r, DS_SAP_STRIPS, steps};
+    }
+    double scale_ns[SCALE_CASES][ROUNDS];
+    result scale_rows[SCALE_CASES];
     printf("\n2. Scaling at area fraction %.1f, R = sqrt(%.1f * 1000^2 / (N pi))\n", AREA_FRACTION,
            AREA_FRACTION);
     print_header();
-    for (size_t k = 0; k < SIZES; ++k) {
-        const double r = radius_for_fraction(sizes[k], AREA_FRACTION);
-        if (k < 2) {
-            if (!run_best(sizes[k], r, DS_SAP, scaling_steps(sizes[k]) / (k ? 4 : 1), &plain[k]))
-                return 1;
-            print_row("scale", &plain[k]);
-        }
-        if (!run_best(sizes[k], r, DS_SAP_STRIPS, scaling_steps(sizes[k]), &scaled[k]))
-            return 1;
-        print_row("scale", &scaled[k]);
-    }
+    if (!run_rounds(scale, SCALE_CASES, scale_ns, scale_rows))
+        return 1;
+    for (int c = 0; c < SCALE_CASES; ++c)
+        print_row("scale", &scale_rows[c]);
     for (size_t k = 0; k < 2; ++k)
         printf("   N = %-7zu sap / strips = %.2f\n", sizes[k],
-               ns_per_disk_step(&plain[k]) / ns_per_disk_step(&scaled[k]));
+               median_ratio(scale_ns[sap_case[k]], scale_ns[strips_case[k]]));
     for (size_t k = 1; k < SIZES; ++k)
         printf("   strips ns/disk-step, N = %-7zu / N = 1000: %.2f%s\n", sizes[k],
-               ns_per_disk_step(&scaled[k]) / ns_per_disk_step(&scaled[0]),
+               median_ratio(scale_ns[strips_case[k]], scale_ns[strips_case[0]]),
                sizes[k] == 1000000 ? " (target <= 2)" : "");
     printf("   auto picks: N = 1000 %s, N = 10000 %s (both broad phases' rows above)\n",
            auto_choice(1000, radius_for_fraction(1000, AREA_FRACTION)),
@@ -292,40 +334,44 @@ int main(int argc, char **argv)
 
     /* 3. Placement. ds_create with brute force is placement alone (that
      * broad phase keeps generation order); with DS_AUTO it adds the broad
-     * phase's first ordering. Fastest of a few: at small N one creation
-     * takes well under a millisecond. */
-    static const int create_repeats[SIZES] = {50, 20, 5, 3};
-    double place_s[SIZES], create_s[SIZES];
-    printf("\n3. Placement per disk: ds_create with brute force (placement alone), and with\n"
-           "   auto (plus the first strip/x ordering); fastest of 50, 20, 5, 3\n");
+     * phase's first ordering. In each round, small N take the median of
+     * several creations: one takes well under a millisecond. */
+    static const int create_repeats[SIZES] = {21, 9, 1, 1};
+    double place_ns[SIZES][ROUNDS], order_ns[SIZES][ROUNDS];
+    for (int k = 0; k < ROUNDS; ++k)
+        for (size_t c = 0; c < SIZES; ++c) {
+            const double r = radius_for_fraction(sizes[c], AREA_FRACTION);
+            const double per_disk = 1e9 / (double)sizes[c];
+            place_ns[c][k] =
+                per_disk * create_seconds(sizes[c], r, DS_BRUTE_FORCE, create_repeats[c]);
+            order_ns[c][k] =
+                per_disk * create_seconds(sizes[c], r, DS_AUTO, create_repeats[c]) - place_ns[c][k];
+        }
+    printf("\n3. Placement per disk: ds_create with brute force (placement alone), and what\n"
+           "   auto adds (the first strip/x ordering); small N: median of 21 and 9 per round\n");
     printf("%8s %12s %-7s %14s\n", "N", "placement ns", "auto", "+ ordering ns");
-    for (size_t k = 0; k < SIZES; ++k) {
-        const double r = radius_for_fraction(sizes[k], AREA_FRACTION);
-        place_s[k] = best_create_seconds(sizes[k], r, DS_BRUTE_FORCE, create_repeats[k]);
-        create_s[k] = best_create_seconds(sizes[k], r, DS_AUTO, create_repeats[k]);
-        printf("%8zu %12.0f %-7s %14.0f\n", sizes[k], 1e9 * place_s[k] / (double)sizes[k],
-               k < 2 ? auto_choice(sizes[k], r) : "strips",
-               1e9 * (create_s[k] - place_s[k]) / (double)sizes[k]);
+    const double place_ratio = median_ratio(place_ns[3], place_ns[1]);
+    for (size_t c = 0; c < SIZES; ++c) {
+        const double r = radius_for_fraction(sizes[c], AREA_FRACTION);
+        printf("%8zu %12.0f %-7s %14.0f\n", sizes[c], median(place_ns[c], ROUNDS),
+               c < 2 ? auto_choice(sizes[c], r) : "strips", median(order_ns[c], ROUNDS));
     }
-    printf("   placement per disk, N = 10^6 / N = 10^4: %.2f (target <= 3); "
-           "with ordering: %.2f\n",
-           (place_s[3] / 1e6) / (place_s[1] / 1e4), (create_s[3] / 1e6) / (create_s[1] / 1e4));
+    printf("   placement per disk, N = 10^6 / N = 10^4: %.2f (target <= 3)\n", place_ratio);
 
-    /* 4. The whole `disks 400 5` run, fastest of three (each part on its
-     * own: the file system's share varies with other disk traffic). */
-    double sim_s = INFINITY, fmt_s = INFINITY, file_s = INFINITY;
-    for (int k = 0; k < REPEATS; ++k) {
-        double a, b, c;
-        if (!disks_run(&a, &b, &c))
+    /* 4. The whole `disks 400 5` run, each part timed on its own (the file
+     * system's share varies with other disk traffic). */
+    double sim_s[ROUNDS], fmt_s[ROUNDS], file_s[ROUNDS], out_s[ROUNDS];
+    for (int k = 0; k < ROUNDS; ++k) {
+        if (!disks_run(&sim_s[k], &fmt_s[k], &file_s[k]))
             return 1;
-        sim_s = a < sim_s ? a : sim_s;
-        fmt_s = b < fmt_s ? b : fmt_s;
-        file_s = c < file_s ? c : file_s;
+        out_s[k] = fmt_s[k] + file_s[k];
     }
-    printf("\n4. disks 400 5 (500 frames to a temporary directory), fastest of %d\n", REPEATS);
-    printf("   simulation %.3f s, output %.3f s = formatting %.3f s + files %.3f s\n", sim_s,
-           fmt_s + file_s, fmt_s, file_s);
-    printf("   output / simulation = %.2f (target < 1)\n", (fmt_s + file_s) / sim_s);
+    const double out_ratio = median_ratio(out_s, sim_s);
+    printf("\n4. disks 400 5 (500 frames to a temporary directory)\n");
+    printf("   simulation %.3f s, output %.3f s = formatting %.3f s + files %.3f s\n",
+           median(sim_s, ROUNDS), median(out_s, ROUNDS), median(fmt_s, ROUNDS),
+           median(file_s, ROUNDS));
+    printf("   output / simulation = %.2f (target < 1)\n", out_ratio);
 
     printf("\npeak RSS of this process %ld KB (the N = 10^6 case); bench took %.0f s\n",
            peak_rss_kb(), ds_now() - started);
