@@ -119,6 +119,7 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     sim->speed = r.speed;
     sim->dt = r.dt;
     sim->broadphase = choose_broadphase(params, r.box);
+    sim->scan = ds_bp_widest_scan();
     format_radius(sim->radius_text, sizeof sim->radius_text, sim->radius);
 
     sim->x = malloc(cap * sizeof(double));

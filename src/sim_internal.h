@@ -5,6 +5,17 @@
 
 #include "disk_sim.h"
 
+/* The vector instructions DS_SAP's block scan uses. All find the same
+ * pairs; ds_create picks the widest this CPU runs (ds_bp_widest_scan), and
+ * the tests force each one the CPU has. */
+typedef enum ds_scan {
+    DS_SCAN_PORTABLE, /* SSE2 where the compiler targets it, plain C otherwise */
+    DS_SCAN_AVX,
+    DS_SCAN_AVX512
+} ds_scan;
+
+ds_scan ds_bp_widest_scan(void);
+
 /* Structure of arrays, stored physically in broad-phase order (x order for
  * DS_SAP) so that the sweep reads memory front to back. id[k] is the
  * generation index of the disk in slot k; slot[i] is its inverse, valid
@@ -14,6 +25,7 @@ struct ds_sim {
     size_t n;
     double radius, box, speed, dt;
     ds_broadphase broadphase; /* resolved, never DS_AUTO */
+    ds_scan scan;             /* DS_SAP's block scan, the widest the CPU has */
 
     double *x, *y, *vx, *vy;
     uint32_t *id;
