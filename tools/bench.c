@@ -129,7 +129,9 @@ static double median_ratio(const double *a, const double *b)
  * for one measurement. */
 static double create_seconds(size_t n, double radius, ds_broadphase bp, int repeats)
 {
-    double t[64];
+    double t[64] = {0.0};
+    if (repeats < 1 || repeats > 64)
+        return NAN;
     for (int k = 0; k < repeats; ++k) {
         ds_params p = ds_default_params(n, radius);
         p.broadphase = bp;
