@@ -60,15 +60,37 @@ static void test_same_seed_places_the_same_disks(void **state)
     ds_destroy(c);
 }
 
-static void test_large_placement_completes(void **state)
+static int compare_by_x(const void *a, const void *b)
+{
+    const double xa = ((const ds_disk *)a)->x, xb = ((const ds_disk *)b)->x;
+    return (xa > xb) - (xa < xb);
+}
+
+static void test_a_large_placement_is_inside_and_disjoint(void **state)
 {
     (void)state;
-    /* 10^5 disks at area fraction 0.3: all-pairs placement would take
-     * minutes; the grid makes it linear. Only completion is asserted. */
-    const size_t n = 100000;
-    double r = sqrt(0.3 * 1e6 / (3.141592653589793 * (double)n));
+    /* 3 x 10^5 disks at area fraction 0.3: all-pairs placement would take
+     * minutes; the grid makes it linear. Its 886^2 cells are past the size
+     * where placement fetches the cells of later candidates ahead, so this
+     * checks that path: every disk inside, no two closer than 2R (sorted by
+     * x, each disk is compared with those less than 2R further right). */
+    const size_t n = 300000;
+    const double r = sqrt(0.3 * 1e6 / (3.141592653589793 * (double)n));
     ds_sim *sim = test_create(n, r, 3, DS_BRUTE_FORCE);
-    assert_int_equal(ds_count(sim), n);
+    ds_disk *d = malloc(n * sizeof *d);
+    assert_non_null(d);
+    for (size_t i = 0; i < n; ++i) {
+        d[i] = ds_get(sim, i);
+        assert_true(d[i].x >= r && d[i].x < 1000.0 - r);
+        assert_true(d[i].y >= r && d[i].y < 1000.0 - r);
+    }
+    qsort(d, n, sizeof *d, compare_by_x);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n && d[j].x - d[i].x < 2.0 * r; ++j) {
+            const double dx = d[j].x - d[i].x, dy = d[j].y - d[i].y;
+            assert_true(dx * dx + dy * dy >= 4.0 * r * r);
+        }
+    free(d);
     ds_destroy(sim);
 }
 
@@ -135,7 +157,7 @@ int main(void)
         cmocka_unit_test(test_placed_disks_are_inside_and_disjoint),
         cmocka_unit_test(test_initial_speed_is_100_in_uniform_directions),
         cmocka_unit_test(test_same_seed_places_the_same_disks),
-        cmocka_unit_test(test_large_placement_completes),
+        cmocka_unit_test(test_a_large_placement_is_inside_and_disjoint),
         cmocka_unit_test(test_impossible_packing_is_refused_at_once),
         cmocka_unit_test(test_unreachable_packing_fails_instead_of_hanging),
         cmocka_unit_test(test_bad_parameters_are_rejected),
