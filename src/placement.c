@@ -17,8 +17,8 @@
  * tests before its own a candidate's first disks are fetched: its heads get
  * AHEAD - NODES_AHEAD tests (~100 ns each at 10^6 disks) to arrive, its
  * disks NODES_AHEAD. Measured at 10^6 disks: 8/4 places a disk in ~160 ns,
- * 16/4 in ~167 ns and 32/8 in ~195 ns (more lines in flight than the core
- * keeps without evicting or dropping some). */
+ * 16/4 in ~167 ns and 32/8 in ~195 ns: deeper is slower on this machine,
+ * for a reason we have not pinned down. */
 #define AHEAD 8u
 #define NODES_AHEAD 4u
 
