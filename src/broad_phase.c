@@ -63,8 +63,8 @@ static uint64_t sweep_rest(ds_sim *sim, size_t i, ds_pair_fn on_pair, void *ctx)
  * is only noted (an event: the disk, its hit bits, and bit BLOCK for
  * "continues"), and the events are handled after the scan, in order.
  * Without a call in the loop the compiler keeps every value in registers
- * (with the callback inside, it spilled the running count and the limits
- * to the stack: 13% slower in the seed case). Events are rare (~5% of
+ * (with the callback inside, it kept the running count and the limits on
+ * the stack, and the seed case ran 15% slower). Events are rare (~5% of
  * disks in the seed case), so the branch that notes one predicts well. The
  * callback changes velocities only and the scan reads positions only, so
  * handling the events later reports the same pairs in the same order. */
