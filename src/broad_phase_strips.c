@@ -390,13 +390,24 @@ static uint64_t sweep_strip(ds_sim *sim, const uint32_t *start, size_t t, size_t
         const double xi = x[i], xlim = xi + diameter, xlow = xi - diameter;
         size_t end = sweep_block(sim, i, i + 1, hi, xlim, d2max, on_pair, ctx);
         tested += end - i - 1;
-        /* up advances about one disk per disk: two branch-free steps
-         * (x[up_hi] is readable: the next strip or the sentinel), then a
-         * loop for the rare longer jump. */
-        up += up < up_hi && !(x[up] > xlow);
-        up += up < up_hi && !(x[up] > xlow);
-        while (up < up_hi && !(x[up] > xlow))
-            ++up;
+        /* up advances about one disk per disk, by 0 to 3 often enough that
+         * a loop testing one disk at a time mispredicts its exit: four at
+         * once, without a branch, and again only if all four were passed
+         * (x is sorted, so the passed ones are a prefix). The scalar loop
+         * only where four would read past the sentinel at n. */
+        for (;;) {
+            if (up + 3 > sim->n) {
+                while (up < up_hi && !(x[up] > xlow))
+                    ++up;
+                break;
+            }
+            const size_t avail = up_hi - up;
+            const unsigned passed =
+                ds_at_most_four(x, up, xlow) & (avail >= 4 ? 0xFu : (1u << avail) - 1u);
+            up += ds_prefix_length(passed);
+            if (passed != 0xFu)
+                break;
+        }
         end = sweep_block(sim, i, up, up_hi, xlim, d2max, on_pair, ctx);
         tested += end - up;
     }

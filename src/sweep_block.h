@@ -56,6 +56,23 @@ static inline unsigned ds_test_four(const double *x, const double *y, size_t j, 
 #endif
 }
 
+/* Bit k says x[j+k] <= v, for k < 4 (x[j .. j+3] must be readable). */
+static inline unsigned ds_at_most_four(const double *x, size_t j, double v)
+{
+#if defined(__SSE2__)
+    const __m128d vv = _mm_set1_pd(v);
+    const __m128 le = _mm_shuffle_ps(_mm_castpd_ps(_mm_cmple_pd(_mm_loadu_pd(x + j), vv)),
+                                     _mm_castpd_ps(_mm_cmple_pd(_mm_loadu_pd(x + j + 2), vv)),
+                                     _MM_SHUFFLE(2, 0, 2, 0));
+    return (unsigned)_mm_movemask_ps(le);
+#else
+    unsigned m = 0;
+    for (unsigned k = 0; k < 4; ++k)
+        m |= (unsigned)(x[j + k] <= v) << k;
+    return m;
+#endif
+}
+
 /* The number of trailing ones of a mask below 2^31: how many candidates of
  * a block are inside the window (x is sorted, so they form a prefix). */
 static inline unsigned ds_prefix_length(unsigned mask)
