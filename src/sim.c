@@ -81,12 +81,12 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box)
         return p->broadphase;
     /* Plain SAP tests ~ n 2R / box candidates per disk (those within 2R in
      * x, anywhere in y); strips test a constant few but pay for disks
-     * changing strip. Measured (`make bench` and sweeps of N and R at area
-     * fractions 0.01 to 0.1): SAP is 3x faster at 4 candidates per disk
-     * (the seed case), 1.3x faster at 8; they break even near 9-10, and
-     * strips are 1.25x faster at 11, 1.5x at 12. */
+     * changing strip. Measured (N = 1000, 2000, 4000, candidates per disk
+     * 4 to 11, best of 5): SAP is 3.6x faster at 4 (the seed case) and
+     * 1.1-1.2x faster at 8 at N <= 2000; they break even between 8 and 9;
+     * strips are 1.15-1.35x faster at 10. */
     double per_disk = (double)p->n * 2.0 * p->radius / box;
-    return per_disk > 10.0 ? DS_SAP_STRIPS : DS_SAP;
+    return per_disk > 8.5 ? DS_SAP_STRIPS : DS_SAP;
 }
 
 static void format_radius(char *out, size_t cap, double r)
