@@ -10,6 +10,13 @@
 #include "sim_internal.h"
 #include "sweep_block.h"
 
+/* AVX and AVX-512 code is compiled with gcc/clang target attributes on
+ * x86-64 whatever the build flags, and run only on a CPU that has it. */
+#if defined(__GNUC__) && defined(__x86_64__)
+#define HAVE_X86_VECTORS 1
+#include <immintrin.h>
+#endif
+
 void ds_bp_insertion_sort_x(ds_sim *sim) { ds_bp_insertion_sort_range(sim, 0, sim->n); }
 
 /* The first k' in [k, hi) with x[k'] < x[k' - 1], or hi. Between two steps
@@ -22,9 +29,7 @@ static size_t next_inversion_portable(const double *x, size_t k, size_t hi)
     return k;
 }
 
-#if defined(__GNUC__) && defined(__x86_64__)
-#include <immintrin.h>
-
+#if defined(HAVE_X86_VECTORS)
 /* Eight neighbours per comparison: one predictable branch per eight disks
  * instead of one per disk. */
 __attribute__((target("avx512f"))) static size_t next_inversion_avx512(const double *x, size_t k,
@@ -42,7 +47,7 @@ __attribute__((target("avx512f"))) static size_t next_inversion_avx512(const dou
 
 static size_t next_inversion(ds_scan scan, const double *x, size_t k, size_t hi)
 {
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(HAVE_X86_VECTORS)
     if (scan == DS_SCAN_AVX512)
         return next_inversion_avx512(x, k, hi);
 #endif
@@ -165,11 +170,9 @@ static uint64_t scan_blocks_portable(const double *x, const double *y, double di
     return tested;
 }
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(HAVE_X86_VECTORS)
 /* The same block test with 256-bit AVX registers, four candidates per
- * instruction, compiled for AVX whatever the build flags and used only on
- * a CPU that has it. Same arithmetic (no FMA), so the same pairs. */
-#define HAVE_AVX_SCAN 1
+ * instruction. Same arithmetic (no FMA), so the same pairs. */
 
 __attribute__((target("avx"))) static uint64_t scan_blocks_avx(const double *x, const double *y,
                                                                double diameter, size_t begin,
@@ -200,7 +203,6 @@ __attribute__((target("avx"))) static uint64_t scan_blocks_avx(const double *x, 
 
 /* With AVX-512 the whole block of eight is one register, and the
  * comparisons give bit masks directly. */
-#define HAVE_AVX512_SCAN 1
 
 __attribute__((target("avx512f"))) static uint64_t
 scan_blocks_avx512(const double *x, const double *y, double diameter, size_t begin, size_t end,
@@ -225,11 +227,9 @@ scan_blocks_avx512(const double *x, const double *y, double diameter, size_t beg
 
 ds_scan ds_bp_widest_scan(void)
 {
-#if defined(HAVE_AVX512_SCAN)
+#if defined(HAVE_X86_VECTORS)
     if (__builtin_cpu_supports("avx512f"))
         return DS_SCAN_AVX512;
-#endif
-#if defined(HAVE_AVX_SCAN)
     if (__builtin_cpu_supports("avx"))
         return DS_SCAN_AVX;
 #endif
@@ -239,11 +239,9 @@ ds_scan ds_bp_widest_scan(void)
 static block_scan_fn block_scan(ds_scan scan)
 {
     switch (scan) {
-#if defined(HAVE_AVX512_SCAN)
+#if defined(HAVE_X86_VECTORS)
     case DS_SCAN_AVX512:
         return scan_blocks_avx512;
-#endif
-#if defined(HAVE_AVX_SCAN)
     case DS_SCAN_AVX:
         return scan_blocks_avx;
 #endif

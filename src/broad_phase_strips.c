@@ -366,8 +366,7 @@ static ALWAYS_INLINE size_t sweep_block(ds_sim *sim, size_t i, size_t j, size_t 
         return ds_sweep_range(sim, i, j, end, xlim, on_pair, ctx);
     unsigned inside;
     const unsigned close = ds_test_four(x, y, j, x[i], y[i], xlim, d2max, &inside);
-    const size_t avail = end - j;
-    inside &= avail >= 4 ? 0xFu : (1u << avail) - 1u;
+    inside &= ds_block_mask(end - j);
     for (unsigned hit = inside & close, k = 0; hit; ++k, hit >>= 1)
         if (hit & 1u)
             on_pair(sim, i, j + k, ctx);
@@ -401,9 +400,7 @@ static uint64_t sweep_strip(ds_sim *sim, const uint32_t *start, size_t t, size_t
                     ++up;
                 break;
             }
-            const size_t avail = up_hi - up;
-            const unsigned passed =
-                ds_at_most_four(x, up, xlow) & (avail >= 4 ? 0xFu : (1u << avail) - 1u);
+            const unsigned passed = ds_at_most_four(x, up, xlow) & ds_block_mask(up_hi - up);
             up += ds_prefix_length(passed);
             if (passed != 0xFu)
                 break;

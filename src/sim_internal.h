@@ -5,9 +5,10 @@
 
 #include "disk_sim.h"
 
-/* The vector instructions DS_SAP's block scan uses. All find the same
- * pairs; ds_create picks the widest this CPU runs (ds_bp_widest_scan), and
- * the tests force each one the CPU has. */
+/* The vector instructions DS_SAP's block scan and the insertion sort's
+ * search for out-of-order disks use. All give the same result; ds_create
+ * picks the widest this CPU runs (ds_bp_widest_scan), and the tests force
+ * each one the CPU has. */
 typedef enum ds_scan {
     DS_SCAN_PORTABLE, /* SSE2 where the compiler targets it, plain C otherwise */
     DS_SCAN_AVX,
@@ -25,7 +26,7 @@ struct ds_sim {
     size_t n;
     double radius, box, speed, dt;
     ds_broadphase broadphase; /* resolved, never DS_AUTO */
-    ds_scan scan;             /* DS_SAP's block scan, the widest the CPU has */
+    ds_scan scan;             /* vector instructions to use, the widest the CPU has */
 
     double *x, *y, *vx, *vy;
     uint32_t *id;

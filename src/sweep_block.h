@@ -73,6 +73,13 @@ static inline unsigned ds_at_most_four(const double *x, size_t j, double v)
 #endif
 }
 
+/* The bits of a block of four that lie before `end`, for a block starting
+ * `avail` = end - j disks before it. */
+static inline unsigned ds_block_mask(size_t avail)
+{
+    return avail >= 4 ? 0xFu : (1u << avail) - 1u;
+}
+
 /* The number of trailing ones of a mask below 2^31: how many candidates of
  * a block are inside the window (x is sorted, so they form a prefix). */
 static inline unsigned ds_prefix_length(unsigned mask)
