@@ -28,7 +28,8 @@ LIB   := $(OUT)libdisksim.a
 DISKS := $(OUT)disks
 
 LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
-           src/broad_phase.c src/broad_phase_strips.c src/frame_io.c src/sim.c
+           src/broad_phase.c src/broad_phase_strips.c \
+           src/cells.c src/event_queue.c src/frame_io.c src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean
@@ -44,7 +45,8 @@ FLAGS_NOW   := $(CC) $(CFLAGS) $(CPPFLAGS) $(LDFLAGS)
 $(shell mkdir -p $(BUILD); [ "$$(cat $(FLAGS_STAMP) 2>/dev/null)" = "$(FLAGS_NOW)" ] || \
     echo "$(FLAGS_NOW)" > $(FLAGS_STAMP))
 
-$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/sweep_block.h $(FLAGS_STAMP) | $(BUILD)
+LIB_HDR := include/disk_sim.h $(wildcard src/*.h)
+$(BUILD)/%.o: src/%.c $(LIB_HDR) $(FLAGS_STAMP) | $(BUILD)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
@@ -63,7 +65,7 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 # test_cli runs the disks and render of this build (relative to the top).
 TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"' -DDS_TEST_RENDER='"$(OUT)tools/render"'
 
-$(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) include/disk_sim.h src/sim_internal.h
+$(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	@mkdir -p $(BUILD)/tests
 	$(CC) $(WARN) $(CPPFLAGS) -Isrc $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
@@ -154,7 +156,7 @@ clean: clean-packaging
 
 # Position-independent copies of the library objects: the static library
 # keeps the plain ones, which are a little faster without -fPIC.
-$(BUILD)/pic/%.o: src/%.c include/disk_sim.h src/sim_internal.h
+$(BUILD)/pic/%.o: src/%.c $(LIB_HDR)
 	@mkdir -p $(BUILD)/pic
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
 

@@ -1,0 +1,570 @@
+/* The event calendar: a calendar queue, and an indexed binary heap to
+ * check it against (see event_queue.h).
+ *
+ * The calendar is built for systems much larger than the caches, where
+ * every reschedule lands in a random bucket: nothing in it follows a chain
+ * of links through memory.
+ *
+ * - Lazy deletion. A disk's slot holds its time and a count of its
+ *   schedules; rescheduling only writes a new entry. Old entries stay
+ *   where they are and are recognised as stale when their bucket is
+ *   drained (the disk's time is no longer in that bucket) or when they
+ *   reach the top of the heap (the count has moved on).
+ * - A bucket is one cache line of disk numbers (a rare full bucket spills
+ *   into a pool), so draining one reads one line.
+ * - Insertions are buffered: each one's bucket line is requested at once
+ *   and written some insertions later, when it has arrived.
+ * - Buckets are read two ahead of their turn: the slots of their disks are
+ *   requested, and the integrator is told (ds_eq_on_soon). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "event_queue.h"
+
+#define NONE UINT32_MAX
+
+/* Scheduled times per bucket near the front of the calendar. The heap
+ * then takes a few buckets to hold DS_EQ_LOOKAHEAD times. */
+#define EVENTS_PER_BUCKET 4.0
+#define BUCKET_CAP 14
+/* Buffered insertions: each is written PENDING_LAG insertions after its
+ * bucket line was requested. */
+#define PENDING 32u
+#define PENDING_LAG 16u
+/* Buckets are announced (their disks' slots requested) this many ahead. */
+#define SOON 2
+
+/* Absolute bucket numbers beyond this are "never" (+infinity, or a time
+ * so far ahead that it cannot be told apart from it). */
+#define FAR_BUCKET ((int64_t)1 << 62)
+/* slot.where for the calendar: the disk is in the far list. */
+#define IN_FAR 1u
+
+typedef struct bucket {
+    uint16_t count; /* entries in disk[], at most BUCKET_CAP */
+    uint16_t spare;
+    uint32_t spill; /* pool entries beyond BUCKET_CAP, or NONE */
+    uint32_t disk[BUCKET_CAP];
+} bucket; /* 64 bytes: one cache line */
+
+typedef struct pool_entry {
+    uint32_t disk, next;
+} pool_entry;
+
+typedef struct heap_node {
+    double time;
+    uint32_t disk, seq;
+} heap_node;
+
+typedef struct pending_insert {
+    int64_t bucket;
+    uint32_t disk;
+} pending_insert;
+
+struct ds_event_queue {
+    ds_eq_kind kind;
+    size_t n;
+    ds_eq_slot *slot;
+    heap_node *heap; /* DS_EQ_HEAP: all disks; calendar: the sorted front */
+    size_t heap_count, heap_cap;
+
+    /* Calendar only. Bucket b (absolute) covers [b, b+1) / inv_width and
+     * lives in bucket[b & mask] while current < b < current + nbuckets. */
+    void *bucket_block; /* bucket, aligned to a cache line inside it */
+    bucket *bucket;
+    size_t nbuckets;
+    uint64_t mask;
+    double inv_width;
+    int64_t current;   /* every time of a bucket up to this is in the heap */
+    int64_t next_scan; /* current at which the far list is next scanned */
+    size_t windowed;   /* entries in buckets and pending, stale ones too */
+    pool_entry *pool;  /* spilled entries of full buckets */
+    uint32_t pool_free;
+    uint32_t *far_next; /* the far list: times beyond the window */
+    uint32_t far_head;
+    size_t far_count;
+    pending_insert pending[PENDING];
+    unsigned pending_head, pending_tail;
+    int64_t pending_min; /* earliest bucket among pending (or FAR_BUCKET) */
+    ds_eq_soon_fn soon;
+    void *soon_ctx;
+};
+
+static size_t bucket_count(size_t n)
+{
+    /* A window of at least two mean times between a disk's events (see
+     * ds_eq_build): nbuckets * EVENTS_PER_BUCKET >= 2 n. */
+    size_t b = 16;
+    while ((double)b * EVENTS_PER_BUCKET < 2.0 * (double)n && b < ((size_t)1 << 30))
+        b <<= 1;
+    return b;
+}
+
+size_t ds_eq_bytes(size_t n, ds_eq_kind kind)
+{
+    size_t bytes = sizeof(ds_event_queue) + n * sizeof(ds_eq_slot);
+    if (kind == DS_EQ_HEAP)
+        return bytes + n * sizeof(heap_node);
+    return bytes + (n + 4096) * sizeof(heap_node) + (bucket_count(n) + 1) * sizeof(bucket) +
+           n * (sizeof(pool_entry) + sizeof(uint32_t));
+}
+
+ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind)
+{
+    if (!out || n == 0 || n >= ((size_t)1 << 30))
+        return DS_ERR_ARG;
+    *out = NULL;
+    ds_event_queue *q = calloc(1, sizeof *q);
+    if (!q)
+        return DS_ERR_NOMEM;
+    q->kind = kind;
+    q->n = n;
+    /* The calendar's heap also holds stale entries, until compacted. */
+    q->heap_cap = kind == DS_EQ_HEAP ? n : n + 4096;
+    q->slot = malloc(n * sizeof *q->slot);
+    q->heap = malloc(q->heap_cap * sizeof *q->heap);
+    int failed = !q->slot || !q->heap;
+    if (kind == DS_EQ_CALENDAR) {
+        q->nbuckets = bucket_count(n);
+        q->mask = q->nbuckets - 1;
+        q->bucket_block = malloc((q->nbuckets + 1) * sizeof(bucket));
+        q->pool = malloc(n * sizeof *q->pool);
+        q->far_next = malloc(n * sizeof *q->far_next);
+        failed = failed || !q->bucket_block || !q->pool || !q->far_next;
+        if (!failed)
+            q->bucket = (bucket *)(((uintptr_t)q->bucket_block + sizeof(bucket) - 1) &
+                                   ~(uintptr_t)(sizeof(bucket) - 1));
+    }
+    if (failed) {
+        ds_eq_destroy(q);
+        return DS_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < n; ++i) {
+        q->slot[i].time = INFINITY;
+        q->slot[i].seq = 0;
+        q->slot[i].where = 0;
+    }
+    q->inv_width = 1.0;
+    *out = q;
+    return DS_OK;
+}
+
+void ds_eq_destroy(ds_event_queue *q)
+{
+    if (!q)
+        return;
+    free(q->slot);
+    free(q->heap);
+    free(q->bucket_block);
+    free(q->pool);
+    free(q->far_next);
+    free(q);
+}
+
+ds_eq_kind ds_eq_kind_of(const ds_event_queue *q) { return q->kind; }
+const ds_eq_slot *ds_eq_slots(const ds_event_queue *q) { return q->slot; }
+
+void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx)
+{
+    q->soon = soon;
+    q->soon_ctx = ctx;
+}
+
+static inline void fetch(const void *p)
+{
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+}
+
+/* ------------------------------------------------------------------ */
+/* Binary heap of (time, disk, seq)                                     */
+/* ------------------------------------------------------------------ */
+
+/* DS_EQ_HEAP keeps each disk's heap position in its slot; the calendar's
+ * heap is not indexed (a disk found in it is looked up by its count). */
+static inline void heap_place(ds_event_queue *q, size_t pos, heap_node node)
+{
+    q->heap[pos] = node;
+    if (q->kind == DS_EQ_HEAP)
+        q->slot[node.disk].where = (uint32_t)pos;
+}
+
+static void sift_up(ds_event_queue *q, size_t pos)
+{
+    const heap_node node = q->heap[pos];
+    while (pos > 0) {
+        const size_t parent = (pos - 1) / 2;
+        if (!(node.time < q->heap[parent].time))
+            break;
+        heap_place(q, pos, q->heap[parent]);
+        pos = parent;
+    }
+    heap_place(q, pos, node);
+}
+
+static void sift_down(ds_event_queue *q, size_t pos)
+{
+    const heap_node node = q->heap[pos];
+    const size_t count = q->heap_count;
+    for (;;) {
+        size_t child = 2 * pos + 1;
+        if (child >= count)
+            break;
+        if (child + 1 < count && q->heap[child + 1].time < q->heap[child].time)
+            ++child;
+        if (!(q->heap[child].time < node.time))
+            break;
+        heap_place(q, pos, q->heap[child]);
+        pos = child;
+    }
+    heap_place(q, pos, node);
+}
+
+static void heap_pop(ds_event_queue *q)
+{
+    const heap_node last = q->heap[--q->heap_count];
+    if (q->heap_count) {
+        heap_place(q, 0, last);
+        sift_down(q, 0);
+    }
+}
+
+static int is_current(const ds_event_queue *q, heap_node node)
+{
+    return node.seq == q->slot[node.disk].seq;
+}
+
+/* The calendar's heap is full of stale entries: keeps one current entry
+ * per disk (slot.where marks the disks kept) and heapifies again. */
+static void heap_compact(ds_event_queue *q)
+{
+    size_t kept = 0;
+    for (size_t k = 0; k < q->heap_count; ++k) {
+        const heap_node node = q->heap[k];
+        ds_eq_slot *s = &q->slot[node.disk];
+        if (is_current(q, node) && !(s->where & 2u)) {
+            s->where |= 2u;
+            q->heap[kept++] = node;
+        }
+    }
+    for (size_t k = 0; k < kept; ++k)
+        q->slot[q->heap[k].disk].where &= ~2u;
+    q->heap_count = kept;
+    for (size_t pos = kept / 2; pos-- > 0;)
+        sift_down(q, pos);
+}
+
+static void heap_push(ds_event_queue *q, double time, uint32_t disk, uint32_t seq)
+{
+    if (q->heap_count == q->heap_cap)
+        heap_compact(q);
+    const heap_node node = {time, disk, seq};
+    heap_place(q, q->heap_count++, node);
+    sift_up(q, q->heap_count - 1);
+}
+
+/* ------------------------------------------------------------------ */
+/* Calendar                                                             */
+/* ------------------------------------------------------------------ */
+
+static int64_t bucket_of(const ds_event_queue *q, double t)
+{
+    const double b = t * q->inv_width;
+    /* Times are >= 0 (now is the origin of the integrator's clock, up to
+     * rounding): truncation is floor, and a hair below 0 is bucket 0. */
+    return b < (double)FAR_BUCKET ? (int64_t)b : FAR_BUCKET;
+}
+
+static void reinsert_all(ds_event_queue *q);
+
+/* Adds an entry for disk to bucket b (current < b < current + nbuckets).
+ * Returns 0, or 1 if the spill pool ran out and the whole calendar was
+ * rebuilt from the slots instead (which discards every stale entry, so the
+ * pool, one entry per disk, then always suffices). */
+static int bucket_add(ds_event_queue *q, int64_t b, uint32_t disk)
+{
+    bucket *bk = &q->bucket[(uint64_t)b & q->mask];
+    if (bk->count < BUCKET_CAP) {
+        bk->disk[bk->count++] = disk;
+    } else {
+        if (q->pool_free == NONE) {
+            reinsert_all(q);
+            return 1;
+        }
+        const uint32_t e = q->pool_free;
+        q->pool_free = q->pool[e].next;
+        q->pool[e].disk = disk;
+        q->pool[e].next = bk->spill;
+        bk->spill = e;
+    }
+    ++q->windowed;
+    return 0;
+}
+
+static void far_add(ds_event_queue *q, uint32_t disk)
+{
+    /* A disk is in the far list once at most; an entry there whose disk
+     * has been rescheduled since is sorted out when the list is scanned. */
+    if (q->slot[disk].where & IN_FAR)
+        return;
+    q->slot[disk].where |= IN_FAR;
+    q->far_next[disk] = q->far_head;
+    q->far_head = disk;
+    ++q->far_count;
+}
+
+/* Files disk (whose slot is set) by its time, writing its bucket at once. */
+static int insert_now(ds_event_queue *q, uint32_t disk)
+{
+    const ds_eq_slot *s = &q->slot[disk];
+    const int64_t b = bucket_of(q, s->time);
+    if (b <= q->current) {
+        heap_push(q, s->time, disk, s->seq);
+        return 0;
+    }
+    if (b - q->current < (int64_t)q->nbuckets)
+        return bucket_add(q, b, disk);
+    far_add(q, disk);
+    return 0;
+}
+
+static void update_pending_min(ds_event_queue *q)
+{
+    q->pending_min = FAR_BUCKET;
+    for (unsigned k = q->pending_head; k != q->pending_tail; ++k)
+        if (q->pending[k % PENDING].bucket < q->pending_min)
+            q->pending_min = q->pending[k % PENDING].bucket;
+}
+
+/* Writes the oldest buffered insertion into its bucket. */
+static int write_pending(ds_event_queue *q)
+{
+    const pending_insert p = q->pending[q->pending_head++ % PENDING];
+    --q->windowed; /* counted again by bucket_add */
+    if (bucket_add(q, p.bucket, p.disk))
+        return 1;
+    if (p.bucket == q->pending_min)
+        update_pending_min(q);
+    return 0;
+}
+
+static void flush_pending(ds_event_queue *q)
+{
+    while (q->pending_head != q->pending_tail)
+        if (write_pending(q))
+            return;
+}
+
+/* Puts every disk back from its slot, dropping every stale entry. */
+static void reinsert_all(ds_event_queue *q)
+{
+    for (size_t b = 0; b < q->nbuckets; ++b) {
+        q->bucket[b].count = 0;
+        q->bucket[b].spill = NONE;
+    }
+    for (size_t e = 0; e < q->n; ++e)
+        q->pool[e].next = e + 1 < q->n ? (uint32_t)(e + 1) : NONE;
+    q->pool_free = 0;
+    q->far_head = NONE;
+    q->far_count = 0;
+    q->windowed = 0;
+    q->heap_count = 0;
+    q->pending_head = q->pending_tail = 0;
+    q->pending_min = FAR_BUCKET;
+    for (size_t i = 0; i < q->n; ++i)
+        q->slot[i].where = 0;
+    for (size_t i = 0; i < q->n; ++i)
+        insert_now(q, (uint32_t)i); /* cannot run out: no stale entries */
+}
+
+/* Moves the far list's disks whose times now fall inside the window into
+ * it. Scanning every nbuckets/2 buckets is early enough: a time goes to
+ * the far list only when at least nbuckets ahead of current. */
+static void scan_far(ds_event_queue *q)
+{
+    q->next_scan = q->current + (int64_t)(q->nbuckets / 2);
+    uint32_t *link = &q->far_head;
+    while (*link != NONE) {
+        const uint32_t disk = *link;
+        if (bucket_of(q, q->slot[disk].time) - q->current < (int64_t)q->nbuckets) {
+            *link = q->far_next[disk];
+            q->slot[disk].where &= ~IN_FAR;
+            --q->far_count;
+            if (insert_now(q, disk))
+                return;
+        } else {
+            link = &q->far_next[disk];
+        }
+    }
+}
+
+/* Requests the slots of bucket b's disks and tells the integrator. */
+static void announce(ds_event_queue *q, int64_t b)
+{
+    const bucket *bk = &q->bucket[(uint64_t)b & q->mask];
+    fetch(&q->bucket[(uint64_t)(b + SOON) & q->mask]);
+    for (unsigned k = 0; k < bk->count; ++k) {
+        fetch(&q->slot[bk->disk[k]]);
+        if (q->soon)
+            q->soon(q->soon_ctx, bk->disk[k]);
+    }
+}
+
+/* Moves bucket b's current entries into the heap and empties it. */
+static void drain(ds_event_queue *q, int64_t b)
+{
+    bucket *bk = &q->bucket[(uint64_t)b & q->mask];
+    for (unsigned k = 0; k < bk->count; ++k) {
+        const uint32_t disk = bk->disk[k];
+        const ds_eq_slot *s = &q->slot[disk];
+        if (bucket_of(q, s->time) == b)
+            heap_push(q, s->time, disk, s->seq);
+    }
+    q->windowed -= bk->count;
+    bk->count = 0;
+    while (bk->spill != NONE) {
+        const uint32_t e = bk->spill;
+        const ds_eq_slot *s = &q->slot[q->pool[e].disk];
+        if (bucket_of(q, s->time) == b)
+            heap_push(q, s->time, q->pool[e].disk, s->seq);
+        bk->spill = q->pool[e].next;
+        q->pool[e].next = q->pool_free;
+        q->pool_free = e;
+        --q->windowed;
+    }
+}
+
+/* With nothing in the window, moves current to just before the far list's
+ * earliest time instead of walking empty buckets. */
+static void jump_to_far(ds_event_queue *q)
+{
+    double first = INFINITY;
+    for (uint32_t d = q->far_head; d != NONE; d = q->far_next[d])
+        if (q->slot[d].time < first)
+            first = q->slot[d].time;
+    const int64_t b = bucket_of(q, first);
+    if (b >= FAR_BUCKET) {
+        /* Only "never" is left (every disk at rest): the heap takes them
+         * all, and current moves to the far end so that the heap holds
+         * every time (an earlier one set later goes straight to it) until
+         * the next ds_eq_build. */
+        q->current = FAR_BUCKET;
+        while (q->far_head != NONE) {
+            const uint32_t d = q->far_head;
+            q->far_head = q->far_next[d];
+            q->slot[d].where &= ~IN_FAR;
+            heap_push(q, q->slot[d].time, d, q->slot[d].seq);
+        }
+        q->far_count = 0;
+        return;
+    }
+    if (b - 1 > q->current)
+        q->current = b - 1;
+    scan_far(q);
+}
+
+static void advance(ds_event_queue *q)
+{
+    if (q->windowed == 0) {
+        jump_to_far(q);
+        if (q->windowed == 0)
+            return;
+    }
+    ++q->current;
+    if (q->pending_min <= q->current + SOON)
+        flush_pending(q);
+    if (q->current >= q->next_scan)
+        scan_far(q);
+    announce(q, q->current + SOON);
+    drain(q, q->current);
+}
+
+/* ------------------------------------------------------------------ */
+/* The interface                                                        */
+/* ------------------------------------------------------------------ */
+
+void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
+{
+    ds_eq_slot *s = &q->slot[i];
+    if (q->kind == DS_EQ_HEAP) {
+        const double old = s->time;
+        s->time = t;
+        q->heap[s->where].time = t;
+        if (t < old)
+            sift_up(q, s->where);
+        else
+            sift_down(q, s->where);
+        return;
+    }
+    ++s->seq;
+    s->time = t;
+    const int64_t b = bucket_of(q, t);
+    if (b <= q->current) {
+        heap_push(q, t, i, s->seq);
+    } else if (b - q->current < (int64_t)q->nbuckets) {
+        /* Request the bucket's line now, write the entry later. */
+        fetch(&q->bucket[(uint64_t)b & q->mask]);
+        q->pending[q->pending_tail++ % PENDING] = (pending_insert){b, i};
+        ++q->windowed;
+        if (b < q->pending_min)
+            q->pending_min = b;
+        if (q->pending_tail - q->pending_head > PENDING_LAG)
+            write_pending(q);
+    } else {
+        far_add(q, i);
+    }
+}
+
+uint32_t ds_eq_first(ds_event_queue *q)
+{
+    if (q->kind == DS_EQ_HEAP)
+        return q->heap[0].disk;
+    for (;;) {
+        while (q->heap_count < DS_EQ_LOOKAHEAD && (q->windowed || q->far_count))
+            advance(q);
+        if (q->heap_count == 0)
+            return NONE;
+        if (is_current(q, q->heap[0]))
+            return q->heap[0].disk;
+        heap_pop(q);
+    }
+}
+
+void ds_eq_build(ds_event_queue *q, const double *times, double now)
+{
+    const size_t n = q->n;
+    for (size_t i = 0; i < n; ++i) {
+        q->slot[i].time = times[i];
+        q->slot[i].where = 0;
+    }
+    if (q->kind == DS_EQ_HEAP) {
+        for (size_t i = 0; i < n; ++i) {
+            const heap_node node = {times[i], (uint32_t)i, q->slot[i].seq};
+            heap_place(q, i, node);
+        }
+        q->heap_count = n;
+        for (size_t pos = n / 2; pos-- > 0;)
+            sift_down(q, pos);
+        return;
+    }
+    /* Bucket width: the times ahead are spread over about the mean time
+     * between one disk's events, tau, so near the front n / tau of them
+     * fall in each unit of time. */
+    double sum = 0.0;
+    size_t finite = 0;
+    for (size_t i = 0; i < n; ++i)
+        if (isfinite(times[i])) {
+            sum += times[i] > now ? times[i] - now : 0.0;
+            ++finite;
+        }
+    const double tau = finite ? sum / (double)finite : 0.0;
+    const double width = tau > 0.0 ? EVENTS_PER_BUCKET * tau / (double)n : 1.0;
+    /* Keep absolute bucket numbers of times near now far below FAR_BUCKET. */
+    q->inv_width = fmin(1.0 / width, 1e15 / fmax(now, 1.0));
+    q->current = bucket_of(q, now);
+    q->next_scan = q->current + (int64_t)(q->nbuckets / 2);
+    reinsert_all(q);
+}

@@ -1,0 +1,191 @@
+/* The event calendar against the indexed binary heap it is checked by:
+ * the same disk first after the same operations, whatever the times, in
+ * workloads shaped like an event-driven run's (reschedule the first disk
+ * a little ahead; now and then reschedule another), and at the edges:
+ * equal times, +infinity, times beyond the calendar's window, a bucket
+ * far fuller than a cache line, and the whole calendar rebuilt. */
+#include "test_util.h"
+
+#include "event_queue.h"
+
+typedef struct pair {
+    ds_event_queue *calendar, *heap;
+} pair;
+
+static pair make(size_t n)
+{
+    pair p;
+    assert_int_equal(ds_eq_create(&p.calendar, n, DS_EQ_CALENDAR), DS_OK);
+    assert_int_equal(ds_eq_create(&p.heap, n, DS_EQ_HEAP), DS_OK);
+    return p;
+}
+
+static void destroy(pair p)
+{
+    ds_eq_destroy(p.calendar);
+    ds_eq_destroy(p.heap);
+}
+
+static void build(pair p, const double *times, double now)
+{
+    ds_eq_build(p.calendar, times, now);
+    ds_eq_build(p.heap, times, now);
+}
+
+static void set(pair p, uint32_t i, double t)
+{
+    ds_eq_set(p.calendar, i, t);
+    ds_eq_set(p.heap, i, t);
+}
+
+/* Both agree on the earliest time; with distinct times also on the disk
+ * (with ties either disk of the earliest time is right). Returns it. */
+static uint32_t first(pair p)
+{
+    const uint32_t c = ds_eq_first(p.calendar), h = ds_eq_first(p.heap);
+    assert_true(ds_eq_time(p.calendar, c) == ds_eq_time(p.heap, h));
+    assert_true(ds_eq_time(p.calendar, c) == ds_eq_time(p.calendar, h));
+    return c;
+}
+
+/* Exponential time to the next event, mean tau: what a disk's next event
+ * looks like in a gas. */
+static double ahead(ds_rng *rng, double tau)
+{
+    return -tau * log(1.0 - ds_rng_uniform(rng, 0.0, 1.0));
+}
+
+static void run_like_a_simulation(size_t n, uint64_t operations, double far_fraction,
+                                  uint64_t seed)
+{
+    ds_rng rng;
+    ds_rng_seed(&rng, seed);
+    pair p = make(n);
+    double *times = malloc(n * sizeof *times);
+    assert_non_null(times);
+    for (size_t i = 0; i < n; ++i)
+        times[i] = ahead(&rng, 1.0);
+    build(p, times, 0.0);
+    double now = 0.0;
+    for (uint64_t op = 0; op < operations; ++op) {
+        const uint32_t i = first(p);
+        const double t = ds_eq_time(p.calendar, i);
+        assert_true(t >= now); /* time never runs backwards */
+        now = t;
+        /* The disk itself, then (a collision) its partner, sometimes far
+         * ahead (beyond the window), sometimes exactly now. */
+        const double u = ds_rng_uniform(&rng, 0.0, 1.0);
+        set(p, i, u < far_fraction ? now + 50.0 * (double)n : now + ahead(&rng, 1.0));
+        if (u > 0.5) {
+            const uint32_t j = (uint32_t)(ds_rng_next(&rng) % n);
+            set(p, j, u > 0.98 ? now : now + ahead(&rng, 1.0));
+        }
+    }
+    free(times);
+    destroy(p);
+}
+
+static void test_calendar_agrees_with_heap_in_a_gas_like_run(void **state)
+{
+    (void)state;
+    run_like_a_simulation(1000, 200000, 0.0, 1);
+    run_like_a_simulation(17, 50000, 0.0, 2);
+    run_like_a_simulation(1, 1000, 0.0, 3);
+}
+
+static void test_calendar_agrees_with_heap_with_times_beyond_its_window(void **state)
+{
+    (void)state;
+    run_like_a_simulation(500, 100000, 0.05, 4);
+}
+
+static void test_rest_and_ties_are_handled(void **state)
+{
+    (void)state;
+    /* Disks at rest have no event (+infinity); disks with equal times all
+     * come before any later one; only +infinity left is still "first". */
+    const size_t n = 64;
+    pair p = make(n);
+    double times[64];
+    for (size_t i = 0; i < n; ++i)
+        times[i] = i % 3 == 0 ? INFINITY : 2.0;
+    build(p, times, 0.0);
+    for (int k = 0; k < 42; ++k) {
+        const uint32_t i = first(p);
+        assert_true(ds_eq_time(p.calendar, i) == 2.0);
+        set(p, i, INFINITY);
+    }
+    const uint32_t i = first(p);
+    assert_true(isinf(ds_eq_time(p.calendar, i)));
+    set(p, 5, 7.5); /* back from rest */
+    assert_int_equal(first(p), 5);
+    destroy(p);
+}
+
+static void test_a_bucket_fuller_than_a_cache_line_loses_nothing(void **state)
+{
+    (void)state;
+    /* Every disk within one bucket's width: the bucket spills into its
+     * pool, and the order is still exact. */
+    const size_t n = 4096;
+    pair p = make(n);
+    double *times = malloc(n * sizeof *times);
+    assert_non_null(times);
+    for (size_t i = 0; i < n; ++i)
+        times[i] = 1.0 + (double)i * 1e-3;
+    build(p, times, 0.0);
+    for (size_t i = 0; i < n; ++i)
+        set(p, (uint32_t)i, 5.0 + (double)((i * 7919) % n) * 1e-9);
+    double last = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        const uint32_t i = first(p);
+        const double t = ds_eq_time(p.calendar, i);
+        assert_true(t >= last);
+        last = t;
+        set(p, i, INFINITY);
+    }
+    free(times);
+    destroy(p);
+}
+
+static void test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory(void **state)
+{
+    (void)state;
+    /* Each reschedule leaves a stale entry behind; a disk rescheduled over
+     * and over into the future must not exhaust anything (the calendar
+     * rebuilds itself from the slots when its pool runs out). */
+    const size_t n = 8;
+    pair p = make(n);
+    double times[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+    build(p, times, 0.0);
+    for (int k = 0; k < 100000; ++k)
+        set(p, (uint32_t)(k % 8), 1.0 + 1e-6 * (double)(k % 977));
+    for (int k = 0; k < 8; ++k) {
+        const uint32_t i = first(p);
+        set(p, i, INFINITY);
+    }
+    destroy(p);
+}
+
+static void test_bad_sizes_are_refused(void **state)
+{
+    (void)state;
+    ds_event_queue *q = NULL;
+    assert_int_equal(ds_eq_create(&q, 0, DS_EQ_CALENDAR), DS_ERR_ARG);
+    assert_int_equal(ds_eq_create(&q, (size_t)1 << 30, DS_EQ_HEAP), DS_ERR_ARG);
+    assert_int_equal(ds_eq_create(NULL, 4, DS_EQ_HEAP), DS_ERR_ARG);
+    ds_eq_destroy(NULL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_calendar_agrees_with_heap_in_a_gas_like_run),
+        cmocka_unit_test(test_calendar_agrees_with_heap_with_times_beyond_its_window),
+        cmocka_unit_test(test_rest_and_ties_are_handled),
+        cmocka_unit_test(test_a_bucket_fuller_than_a_cache_line_loses_nothing),
+        cmocka_unit_test(test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory),
+        cmocka_unit_test(test_bad_sizes_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
