@@ -28,8 +28,8 @@ LIB   := $(OUT)libdisksim.a
 DISKS := $(OUT)disks
 
 LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
-           src/broad_phase.c src/broad_phase_strips.c \
-           src/cells.c src/event_queue.c src/frame_io.c src/sim.c
+           src/broad_phase.c src/broad_phase_strips.c src/time_step.c \
+           src/cells.c src/event_queue.c src/event_driven.c src/frame_io.c src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean

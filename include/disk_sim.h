@@ -19,10 +19,10 @@
 extern "C" {
 #endif
 
-#define DS_VERSION_MAJOR 1
+#define DS_VERSION_MAJOR 2
 #define DS_VERSION_MINOR 0
 #define DS_VERSION_PATCH 0
-#define DS_VERSION_STRING "1.0.0"
+#define DS_VERSION_STRING "2.0.0"
 
 /* ------------------------------------------------------------------ */
 /* Status codes                                                        */
@@ -34,7 +34,8 @@ typedef enum ds_status {
     DS_ERR_NOMEM,     /* an allocation failed or would not fit in memory */
     DS_ERR_PLACEMENT, /* random sequential placement cannot reach the packing */
     DS_ERR_IO,        /* a read or write failed */
-    DS_ERR_FORMAT     /* a frame file is malformed (see ds_frame_error) */
+    DS_ERR_FORMAT,    /* a frame file is malformed (see ds_frame_error) */
+    DS_ERR_OVERLAP    /* ds_set would make two disks overlap (event-driven integrator) */
 } ds_status;
 
 /* A static English description of a status; never NULL. */
@@ -86,12 +87,38 @@ typedef struct ds_disk {
     double x, y, vx, vy;
 } ds_disk;
 
-/* How candidate pairs are found. All give exactly the same overlapping pairs. */
+/* How the dynamics is integrated. */
+typedef enum ds_integrator {
+    /* The seed's fixed time step: move every disk by v dt, then reflect at
+     * the walls and swap the normal velocities of overlapping, approaching
+     * pairs. Fast and simple; collisions are seen up to one step late. */
+    DS_TIME_STEP = 0,
+    /* Exact event-driven dynamics: every collision at its exact time, at
+     * centre distance exactly 2R, every wall turn at exactly R from the
+     * wall. ds_step still advances time by exactly dt. */
+    DS_EVENT_DRIVEN
+} ds_integrator;
+
+/* What happens at the edges of the box. */
+typedef enum ds_boundary {
+    DS_WALLS = 0, /* hard walls: a centre turns at R from each wall */
+    DS_PERIODIC   /* periodic in x and y, minimum image; needs box >= 4R */
+} ds_boundary;
+
+/* Where the disks start. */
+typedef enum ds_placement {
+    DS_RANDOM = 0, /* random sequential: the seed's, up to area fraction 0.54 */
+    DS_LATTICE     /* triangular lattice, up to close packing */
+} ds_placement;
+
+/* How candidate pairs are found. All give exactly the same pairs. */
 typedef enum ds_broadphase {
     DS_SAP = 0,     /* sweep and prune along x, insertion sort (the seed's) */
-    DS_BRUTE_FORCE, /* all pairs, O(N^2): the reference */
+    DS_BRUTE_FORCE, /* all pairs, O(N^2): the reference (both integrators) */
     DS_SAP_STRIPS,  /* sweep and prune in horizontal strips: O(N) at fixed density */
-    DS_AUTO         /* DS_SAP or DS_SAP_STRIPS, whichever is expected to be faster */
+    DS_AUTO,        /* the fastest for the integrator: DS_SAP or DS_SAP_STRIPS
+                     * for the time step, DS_CELLS for events */
+    DS_CELLS        /* the event-driven integrator's cell grid (event-driven only) */
 } ds_broadphase;
 
 typedef struct ds_params {
@@ -102,11 +129,16 @@ typedef struct ds_params {
     double speed;  /* 0 means 100  */
     double dt;     /* 0 means 0.001 */
     ds_broadphase broadphase;
+    ds_integrator integrator; /* DS_TIME_STEP by default */
+    ds_boundary boundary;     /* DS_WALLS by default */
+    ds_placement placement;   /* DS_RANDOM by default */
+    double box_y;             /* height of the box; 0 means box (square) */
 } ds_params;
 
 #define DS_DEFAULT_SEED 20260101u
 
-/* n, radius, seed DS_DEFAULT_SEED, defaults for the rest, DS_AUTO. */
+/* n, radius, seed DS_DEFAULT_SEED, defaults for the rest, DS_AUTO,
+ * DS_TIME_STEP. */
 ds_params ds_default_params(size_t n, double radius);
 
 /* Validates params without allocating: DS_ERR_ARG for impossible values,
@@ -133,7 +165,10 @@ ds_status ds_memory_needed(const ds_params *params, size_t *bytes);
 ds_status ds_create(const ds_params *params, ds_sim **out);
 void ds_destroy(ds_sim *sim); /* NULL is allowed */
 
-/* One time step: move by v*dt, reflect at walls, resolve disk-disk collisions. */
+/* Advances simulated time by exactly dt. DS_TIME_STEP: move by v dt,
+ * reflect at walls, resolve overlapping pairs. DS_EVENT_DRIVEN: process
+ * every collision and wall event inside the interval in time order, then
+ * show every disk at exactly ds_time. ds_run(sim, k) is k steps. */
 void ds_step(ds_sim *sim);
 void ds_run(ds_sim *sim, uint64_t steps);
 
@@ -144,16 +179,24 @@ double ds_dt(const ds_sim *sim);
 double ds_time(const ds_sim *sim);                   /* simulated time = steps * dt */
 uint64_t ds_steps(const ds_sim *sim);                /* steps taken since creation */
 ds_broadphase ds_broadphase_used(const ds_sim *sim); /* never DS_AUTO */
-const char *ds_broadphase_name(ds_broadphase bp);
+const char *ds_broadphase_name(ds_broadphase bp);    /* "sap", "cells", ... */
+ds_integrator ds_integrator_used(const ds_sim *sim);
+const char *ds_integrator_name(ds_integrator integrator); /* "step" or "event" */
 
 /* Disk i, in generation order (i < n; out of range gives all zeros). */
 ds_disk ds_get(const ds_sim *sim, size_t i);
 /* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, or the
- * centre is outside [R, box-R]^2. Does not check overlaps. */
+ * centre is outside [R, box-R]^2. The time step does not check overlaps
+ * (its next step resolves them); the event-driven integrator refuses a
+ * centre closer than 2R to another (DS_ERR_OVERLAP, the state unchanged):
+ * exact dynamics has no meaning for overlapping hard disks. */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
 
-/* The seed's timing measure: seconds spent sorting, pruning, testing and
- * resolving disk-disk pairs, summed over all steps. */
+/* The seed's timing measure, summed over all steps. DS_TIME_STEP: seconds
+ * spent sorting, pruning, testing and resolving disk-disk pairs.
+ * DS_EVENT_DRIVEN: seconds spent processing events (collisions, wall
+ * turns, cell crossings and their predictions), not showing the disks at
+ * ds_time afterwards. */
 double ds_collision_seconds(const ds_sim *sim);
 uint64_t ds_collision_count(const ds_sim *sim); /* disk-disk collisions resolved */
 uint64_t ds_pairs_tested(const ds_sim *sim);    /* narrow-phase distance tests */
@@ -171,8 +214,17 @@ double ds_wall_impulse(const ds_sim *sim);
  * (perimeter 4 (box - 2R)), averaged since the last reset; 0 before any
  * step. In 2D this is a force per length, the ideal gas has P A = N <v^2>/2. */
 double ds_pressure(const ds_sim *sim);
-/* Zeroes the wall impulse, wall count and pressure clock (not the
- * collision count or time), so a relaxation period can be discarded. */
+/* Pressure from the collision virial, averaged since the last reset, 0
+ * before any step: in 2D with unit masses (N kT = E, the kinetic energy)
+ * P A = E + (1 / (2 t)) * sum over collisions of r_ij . dp_i, where r_ij
+ * joins the centres and dp_i is disk i's change of momentum. A is the area
+ * the centres reach, (box - 2R)^2 with walls: there the virial theorem
+ * makes it equal to ds_pressure over a long run. With the time step the
+ * collisions happen a little inside 2R, which biases it low (README). */
+double ds_virial_pressure(const ds_sim *sim);
+/* Zeroes the wall impulse, wall count, collision virial and pressure clock
+ * (not the collision count or time), so a relaxation period can be
+ * discarded. */
 void ds_reset_observables(ds_sim *sim);
 
 /* ------------------------------------------------------------------ */

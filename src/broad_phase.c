@@ -293,6 +293,7 @@ uint64_t ds_bp_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
         return ds_strips_find_pairs(sim, on_pair, ctx);
     case DS_SAP:
     case DS_AUTO:
+    case DS_CELLS: /* never with the time step */
         break;
     }
     ds_bp_insertion_sort_x(sim);

@@ -54,5 +54,7 @@ void ds_resolve_pair(ds_sim *sim, size_t a, size_t b, void *ctx)
     vy[a] += s * dy;
     vx[b] -= s * dx;
     vy[b] -= s * dy;
+    /* r_ab . dp_a = (-d) . (s d) = -approach > 0 */
+    sim->virial -= approach;
     ++sim->collisions;
 }

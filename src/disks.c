@@ -28,6 +28,7 @@ typedef struct options {
     const char *stats_path;
     int quiet, velocities;
     ds_broadphase broadphase;
+    ds_integrator integrator;
 } options;
 
 static const char *const usage_text =
@@ -42,7 +43,10 @@ static const char *const usage_text =
     "  --out DIR            directory for the frames, created if missing (default .)\n"
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
-    "  --broadphase B       sap, strips, brute or auto (default auto)\n"
+    "  --integrator I       step (the fixed time step, default) or event (exact\n"
+    "                       event-driven dynamics)\n"
+    "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
+    "                       or auto (default auto)\n"
     "  --quiet              print nothing but errors and warnings\n"
     "  --help               show this help and exit\n"
     "  --version            show the version and exit\n"
@@ -125,12 +129,22 @@ static double radius_arg(const char *s)
 
 static ds_broadphase broadphase_arg(const char *s)
 {
-    const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO};
+    const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO, DS_CELLS};
     for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k)
         if (strcmp(s, ds_broadphase_name(all[k])) == 0)
             return all[k];
-    die(EXIT_USAGE, "--broadphase must be sap, strips, brute or auto, got '%s'", s);
+    die(EXIT_USAGE, "--broadphase must be sap, strips, cells, brute or auto, got '%s'", s);
     return DS_AUTO;
+}
+
+static ds_integrator integrator_arg(const char *s)
+{
+    if (strcmp(s, ds_integrator_name(DS_TIME_STEP)) == 0)
+        return DS_TIME_STEP;
+    if (strcmp(s, ds_integrator_name(DS_EVENT_DRIVEN)) == 0)
+        return DS_EVENT_DRIVEN;
+    die(EXIT_USAGE, "--integrator must be step or event, got '%s'", s);
+    return DS_TIME_STEP;
 }
 
 static options parse_args(int argc, char **argv)
@@ -168,10 +182,11 @@ static options parse_args(int argc, char **argv)
             const char *eq = strchr(a, '=');
             size_t len = eq ? (size_t)(eq - a) : strlen(a);
             const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
-            const char *names[] = {"--seed", "--frames", "--steps-per-frame",
-                                   "--out",  "--stats",  "--broadphase"};
+            const char *names[] = {"--seed",  "--frames",     "--steps-per-frame", "--out",
+                                   "--stats", "--broadphase", "--integrator"};
+            const int count = (int)(sizeof names / sizeof names[0]);
             int which = -1;
-            for (int k = 0; k < 6; ++k)
+            for (int k = 0; k < count; ++k)
                 if (strlen(names[k]) == len && strncmp(a, names[k], len) == 0)
                     which = k;
             if (which < 0)
@@ -200,8 +215,11 @@ static options parse_args(int argc, char **argv)
                     die(EXIT_USAGE, "--stats needs a file name");
                 o.stats_path = value;
                 break;
-            default:
+            case 5:
                 o.broadphase = broadphase_arg(value);
+                break;
+            default:
+                o.integrator = integrator_arg(value);
             }
             continue;
         }
@@ -224,6 +242,15 @@ static options parse_args(int argc, char **argv)
 
 static void check_request(const options *o, const ds_params *p)
 {
+    if (o->integrator == DS_EVENT_DRIVEN &&
+        (o->broadphase == DS_SAP || o->broadphase == DS_SAP_STRIPS))
+        die(EXIT_USAGE,
+            "--broadphase %s sweeps the disks of a time step; --integrator event uses "
+            "cells or brute",
+            ds_broadphase_name(o->broadphase));
+    if (o->integrator == DS_TIME_STEP && o->broadphase == DS_CELLS)
+        die(EXIT_USAGE, "--broadphase cells is the event-driven integrator's: add --integrator "
+                        "event, or use sap, strips or brute");
     unsigned warnings = 0;
     ds_status st = ds_check_params(p, &warnings);
     size_t bytes = 0;
@@ -428,6 +455,7 @@ int main(int argc, char **argv)
     ds_params p = ds_default_params(o.n, o.radius);
     p.seed = o.seed;
     p.broadphase = o.broadphase;
+    p.integrator = o.integrator;
     check_request(&o, &p);
     char stats_dir[4096];
     const char *stats_base =
@@ -442,9 +470,10 @@ int main(int argc, char **argv)
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
     if (!o.quiet)
-        printf("disks: N = %zu, R = %g, seed = %llu, broad phase = %s, %ld frames x %llu steps "
-               "-> %s\n",
+        printf("disks: N = %zu, R = %g, seed = %llu, integrator = %s, broad phase = %s, %ld "
+               "frames x %llu steps -> %s\n",
                o.n, o.radius, (unsigned long long)o.seed,
+               ds_integrator_name(ds_integrator_used(sim)),
                ds_broadphase_name(ds_broadphase_used(sim)), o.frames,
                (unsigned long long)o.steps_per_frame, o.out_dir);
     fflush(stdout);
@@ -498,9 +527,12 @@ int main(int argc, char **argv)
             die(EXIT_RUN, "cannot write %s: %s", o.stats_path, why);
     }
     if (!o.quiet) {
-        printf("collision processing time: %.6f s (sorting, pruning, testing and resolving "
-               "pairs over %llu steps)\n",
-               ds_collision_seconds(sim), (unsigned long long)ds_steps(sim));
+        printf("collision processing time: %.6f s (%s over %llu steps)\n",
+               ds_collision_seconds(sim),
+               ds_integrator_used(sim) == DS_EVENT_DRIVEN
+                   ? "predicting and processing collisions, wall turns and cell crossings"
+                   : "sorting, pruning, testing and resolving pairs",
+               (unsigned long long)ds_steps(sim));
         printf("disk-disk collisions: %llu, wall reflections: %llu\n",
                (unsigned long long)ds_collision_count(sim), (unsigned long long)ds_wall_count(sim));
         printf("simulation %.3f s, output %.3f s\n", sim_seconds, out_seconds);

@@ -22,16 +22,34 @@ ds_params ds_default_params(size_t n, double radius)
 }
 
 typedef struct resolved {
-    double box, speed, dt;
+    double box, box_y, speed, dt;
 } resolved;
 
 static resolved resolve_defaults(const ds_params *p)
 {
     resolved r;
     r.box = p->box == 0.0 ? 1000.0 : p->box;
+    r.box_y = p->box_y == 0.0 ? r.box : p->box_y;
     r.speed = p->speed == 0.0 ? 100.0 : p->speed;
     r.dt = p->dt == 0.0 ? 0.001 : p->dt;
     return r;
+}
+
+/* The broad phases each integrator runs: the time step has the sweeps,
+ * the event-driven integrator its cell grid; both have brute force. */
+static int broadphase_fits(ds_broadphase bp, ds_integrator integrator)
+{
+    switch (bp) {
+    case DS_AUTO:
+    case DS_BRUTE_FORCE:
+        return 1;
+    case DS_SAP:
+    case DS_SAP_STRIPS:
+        return integrator == DS_TIME_STEP;
+    case DS_CELLS:
+        return integrator == DS_EVENT_DRIVEN;
+    }
+    return 0;
 }
 
 ds_status ds_check_params(const ds_params *p, unsigned *warnings)
@@ -47,15 +65,21 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
         return DS_ERR_ARG;
     if (p->n < 1 || !(p->radius > 0.0) || !(p->radius < 0.5 * r.box))
         return DS_ERR_ARG;
-    if ((unsigned)p->broadphase > (unsigned)DS_AUTO)
+    if ((unsigned)p->integrator > (unsigned)DS_EVENT_DRIVEN ||
+        !broadphase_fits(p->broadphase, p->integrator))
         return DS_ERR_ARG;
-    /* Ids are 32-bit; beyond that no machine this runs on has the memory. */
-    if (p->n >= UINT32_MAX || p->n > (SIZE_MAX - 64) / BYTES_PER_DISK)
+    /* Not yet: a periodic box, a lattice start, a rectangle. */
+    if (p->boundary != DS_WALLS || p->placement != DS_RANDOM || r.box_y != r.box)
+        return DS_ERR_ARG;
+    /* Ids are 32-bit, the event calendar's 30-bit; beyond that no machine
+     * this runs on has the memory. */
+    if (p->n >= UINT32_MAX || p->n > (SIZE_MAX - 64) / BYTES_PER_DISK ||
+        (p->integrator == DS_EVENT_DRIVEN && p->n >= ((size_t)1 << 30)))
         return DS_ERR_NOMEM;
     double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box);
     if (fraction > DS_MAX_AREA_FRACTION)
         return DS_ERR_PLACEMENT;
-    if (warnings && 2.0 * 3.0 * r.speed * r.dt > 4.0 * p->radius)
+    if (warnings && p->integrator == DS_TIME_STEP && 2.0 * 3.0 * r.speed * r.dt > 4.0 * p->radius)
         *warnings |= DS_WARN_TUNNELING;
     return DS_OK;
 }
@@ -69,8 +93,11 @@ ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
         st = DS_OK; /* memory is still a meaningful answer */
     if (st != DS_OK)
         return st;
+    const resolved r = resolve_defaults(params);
     *bytes = (params->n + 1) * BYTES_PER_DISK;
-    if (choose_broadphase(params, resolve_defaults(params).box) == DS_SAP_STRIPS)
+    if (params->integrator == DS_EVENT_DRIVEN)
+        *bytes += ds_ed_bytes(params->n, params->radius, r.box, r.box_y, params->broadphase);
+    else if (choose_broadphase(params, r.box) == DS_SAP_STRIPS)
         *bytes += (params->n + 2) * DS_STRIPS_BYTES_PER_DISK;
     return DS_OK;
 }
@@ -79,6 +106,8 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box)
 {
     if (p->broadphase != DS_AUTO)
         return p->broadphase;
+    if (p->integrator == DS_EVENT_DRIVEN)
+        return DS_CELLS;
     /* Plain SAP tests ~ n 2R / box candidates per disk (those within 2R in
      * x, anywhere in y); strips test a constant few but pay for disks
      * changing strip. Measured (N = 1000, 2000, 4000, candidates per disk
@@ -116,6 +145,9 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     sim->n = n;
     sim->radius = params->radius;
     sim->box = r.box;
+    sim->box_y = r.box_y;
+    sim->integrator = params->integrator;
+    sim->boundary = params->boundary;
     sim->speed = r.speed;
     sim->dt = r.dt;
     sim->broadphase = choose_broadphase(params, r.box);
@@ -145,7 +177,13 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     sim->vx[n] = sim->vy[n] = 0.0;
     sim->id[n] = UINT32_MAX;
 
-    if (sim->broadphase == DS_SAP_STRIPS) {
+    if (sim->integrator == DS_EVENT_DRIVEN) {
+        st = ds_ed_create(sim);
+        if (st != DS_OK) {
+            ds_destroy(sim);
+            return st;
+        }
+    } else if (sim->broadphase == DS_SAP_STRIPS) {
         st = ds_strips_create(sim);
         if (st != DS_OK) {
             ds_destroy(sim);
@@ -165,6 +203,7 @@ void ds_destroy(ds_sim *sim)
     if (!sim)
         return;
     ds_strips_destroy(sim);
+    ds_ed_destroy(sim);
     free(sim->x);
     free(sim->y);
     free(sim->vx);
@@ -180,22 +219,14 @@ void ds_rebuild_slots(ds_sim *sim)
         sim->slot[sim->id[k]] = (uint32_t)k;
 }
 
-static void step_once(ds_sim *sim)
-{
-    ds_move_and_reflect(sim);
-    ds_timer_start(&sim->collision_timer);
-    sim->pairs_tested += ds_bp_find_pairs(sim, ds_resolve_pair, NULL);
-    ds_timer_stop(&sim->collision_timer);
-    ++sim->steps;
-}
-
 void ds_run(ds_sim *sim, uint64_t steps)
 {
     if (!sim || steps == 0)
         return;
-    for (uint64_t s = 0; s < steps; ++s)
-        step_once(sim);
-    ds_rebuild_slots(sim);
+    if (sim->integrator == DS_EVENT_DRIVEN)
+        ds_ed_run(sim, steps);
+    else
+        ds_ts_run(sim, steps);
 }
 
 void ds_step(ds_sim *sim) { ds_run(sim, 1); }
@@ -208,6 +239,21 @@ double ds_dt(const ds_sim *sim) { return sim ? sim->dt : 0.0; }
 double ds_time(const ds_sim *sim) { return sim ? (double)sim->steps * sim->dt : 0.0; }
 uint64_t ds_steps(const ds_sim *sim) { return sim ? sim->steps : 0; }
 ds_broadphase ds_broadphase_used(const ds_sim *sim) { return sim ? sim->broadphase : DS_SAP; }
+ds_integrator ds_integrator_used(const ds_sim *sim)
+{
+    return sim ? sim->integrator : DS_TIME_STEP;
+}
+
+const char *ds_integrator_name(ds_integrator integrator)
+{
+    switch (integrator) {
+    case DS_TIME_STEP:
+        return "step";
+    case DS_EVENT_DRIVEN:
+        return "event";
+    }
+    return "unknown";
+}
 
 const char *ds_broadphase_name(ds_broadphase bp)
 {
@@ -220,6 +266,8 @@ const char *ds_broadphase_name(ds_broadphase bp)
         return "strips";
     case DS_AUTO:
         return "auto";
+    case DS_CELLS:
+        return "cells";
     }
     return "unknown";
 }
@@ -246,6 +294,8 @@ ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
         fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
         return DS_ERR_ARG;
     size_t k = sim->slot[i];
+    if (sim->integrator == DS_EVENT_DRIVEN)
+        return ds_ed_set(sim, k, d);
     sim->x[k] = d.x;
     sim->y[k] = d.y;
     sim->vx[k] = d.vx;
@@ -297,11 +347,28 @@ double ds_pressure(const ds_sim *sim)
     return sim->wall_impulse / (elapsed * perimeter);
 }
 
+/* The area the centres reach: with walls they stay R from each wall. */
+static double centre_area(const ds_sim *sim)
+{
+    if (sim->boundary == DS_PERIODIC)
+        return sim->box * sim->box_y;
+    return (sim->box - 2.0 * sim->radius) * (sim->box_y - 2.0 * sim->radius);
+}
+
+double ds_virial_pressure(const ds_sim *sim)
+{
+    if (!sim || sim->steps == sim->observables_since_step)
+        return 0.0;
+    const double elapsed = (double)(sim->steps - sim->observables_since_step) * sim->dt;
+    return (ds_kinetic_energy(sim) + sim->virial / (2.0 * elapsed)) / centre_area(sim);
+}
+
 void ds_reset_observables(ds_sim *sim)
 {
     if (!sim)
         return;
     sim->wall_count = 0;
     sim->wall_impulse = 0.0;
+    sim->virial = 0.0;
     sim->observables_since_step = sim->steps;
 }

@@ -25,6 +25,9 @@ ds_scan ds_bp_widest_scan(void);
 struct ds_sim {
     size_t n;
     double radius, box, speed, dt;
+    double box_y; /* height; box is the width */
+    ds_integrator integrator;
+    ds_boundary boundary;
     ds_broadphase broadphase; /* resolved, never DS_AUTO */
     ds_scan scan;             /* vector instructions to use, the widest the CPU has */
 
@@ -34,6 +37,9 @@ struct ds_sim {
 
     /* DS_SAP_STRIPS state, NULL otherwise (see broad_phase_strips.c). */
     struct ds_strips *strips;
+    /* DS_EVENT_DRIVEN state, NULL otherwise (see event_driven.c). With it,
+     * x, y, vx, vy show the disks at ds_time, refreshed after each run. */
+    struct ds_events *events;
 
     uint64_t steps;
     ds_timer collision_timer;
@@ -42,6 +48,7 @@ struct ds_sim {
 
     uint64_t wall_count;
     double wall_impulse;
+    double virial; /* sum over collisions of r_ij . dp_i since the reset */
     uint64_t observables_since_step; /* step count at the last reset */
 
     char radius_text[32]; /* R as written in frames, shortest round trip */
@@ -71,6 +78,19 @@ void ds_bp_insertion_sort_range(ds_sim *sim, size_t lo, size_t hi);
 ds_status ds_strips_create(ds_sim *sim);
 void ds_strips_destroy(ds_sim *sim);
 uint64_t ds_strips_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
+
+/* The integrators' loops: ds_run dispatches to one of them. */
+void ds_ts_run(ds_sim *sim, uint64_t steps); /* time_step.c */
+void ds_ed_run(ds_sim *sim, uint64_t steps); /* event_driven.c */
+
+/* DS_EVENT_DRIVEN lifecycle (event_driven.c). ds_ed_create takes the
+ * placed disks from x, y, vx, vy (it may reorder the slots). ds_ed_set
+ * replaces the disk in slot k, or refuses an overlap. */
+ds_status ds_ed_create(ds_sim *sim);
+void ds_ed_destroy(ds_sim *sim);
+ds_status ds_ed_set(ds_sim *sim, size_t k, ds_disk d);
+/* Bytes the event-driven state of params would allocate. */
+size_t ds_ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp);
 
 /* Collision response (collision.c). */
 void ds_resolve_pair(ds_sim *sim, size_t a, size_t b, void *ctx);

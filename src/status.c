@@ -15,6 +15,8 @@ const char *ds_status_str(ds_status status)
         return "input/output error";
     case DS_ERR_FORMAT:
         return "malformed frame";
+    case DS_ERR_OVERLAP:
+        return "the disk would overlap another";
     }
     return "unknown status";
 }
