@@ -117,7 +117,8 @@ ds_params ds_default_params(size_t n, double radius);
 ds_status ds_check_params(const ds_params *params, unsigned *warnings);
 
 /* Bytes ds_create would allocate for params (DS_ERR_ARG / DS_ERR_NOMEM as
- * ds_check_params), so a caller can refuse a request before trying it. */
+ * ds_check_params, DS_ERR_ARG if bytes is NULL), so a caller can refuse a
+ * request before trying it. */
 ds_status ds_memory_needed(const ds_params *params, size_t *bytes);
 
 /* Random sequential adsorption of disks jams near 0.547 area fraction;
@@ -185,8 +186,9 @@ ds_status ds_write_frame(const ds_sim *sim, FILE *out);
 ds_status ds_write_frame_velocities(const ds_sim *sim, FILE *out);
 
 /* Formats the frame into buf (at most cap bytes, no NUL). With cap too small
- * returns DS_ERR_ARG; *len receives the bytes needed either way.
- * ds_frame_size() tells the capacity that is always enough. */
+ * returns DS_ERR_ARG; *len receives the bytes needed either way, so buf NULL
+ * with cap 0 asks only for the size. ds_frame_size() tells the capacity that
+ * is always enough. */
 size_t ds_frame_size(const ds_sim *sim, int velocities);
 ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len);
 
@@ -212,7 +214,8 @@ typedef struct ds_frame_error {
  * Blank lines and lines starting with '#' are skipped; an empty frame is
  * DS_ERR_FORMAT. err may be NULL. On error *frame is left empty. */
 ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err);
-/* Reads and parses a file (DS_ERR_IO if it cannot be read). */
+/* Reads and parses a file (DS_ERR_IO if it cannot be read). On error *frame
+ * is left empty, as with ds_parse_frame. */
 ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err);
 void ds_frame_free(ds_frame *frame);
 

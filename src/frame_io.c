@@ -73,7 +73,10 @@ size_t ds_frame_size(const ds_sim *sim, int velocities)
 
 ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len)
 {
-    if (!sim || !buf)
+    if (len)
+        *len = 0;
+    /* buf NULL with cap 0 asks only for the size: the loop copies nothing. */
+    if (!sim || (!buf && cap))
         return DS_ERR_ARG;
     const size_t rlen = strlen(sim->radius_text);
     char line[4 * (FIELD_MAX + 1) + 40];
@@ -184,17 +187,26 @@ static int parse_numbers(const char *s, double values[5], const char **why)
     }
 }
 
-ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err)
+/* Every error leaves *frame empty, an argument error included, so a caller
+ * may always ds_frame_free it. */
+static void clear_frame(ds_frame *frame, ds_frame_error *err)
 {
     if (err) {
         err->line = 0;
         err->message[0] = '\0';
     }
+    if (frame) {
+        frame->disks = NULL;
+        frame->count = 0;
+        frame->columns = 0;
+    }
+}
+
+ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err)
+{
+    clear_frame(frame, err);
     if (!frame || (!text && len))
         return DS_ERR_ARG;
-    frame->disks = NULL;
-    frame->count = 0;
-    frame->columns = 0;
 
     size_t cap = 0, count = 0, line_no = 0;
     int columns = 0;
@@ -275,15 +287,9 @@ out:
 
 ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err)
 {
-    if (err) {
-        err->line = 0;
-        err->message[0] = '\0';
-    }
+    clear_frame(frame, err);
     if (!path || !frame)
         return DS_ERR_ARG;
-    frame->disks = NULL;
-    frame->count = 0;
-    frame->columns = 0;
     FILE *f = fopen(path, "rb");
     if (!f) {
         if (err)

@@ -64,6 +64,8 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box);
 
 ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
 {
+    if (!bytes)
+        return DS_ERR_ARG;
     ds_status st = ds_check_params(params, NULL);
     if (st == DS_ERR_PLACEMENT)
         st = DS_OK; /* memory is still a meaningful answer */
