@@ -233,12 +233,17 @@ static void check_request(const options *o, const ds_params *p)
     if (pages > 0 && page > 0 && (double)bytes > 0.8 * (double)pages * (double)page)
         die(EXIT_USAGE, "N = %zu disks need %.1f GiB, more than this machine's %.1f GiB", o->n,
             (double)bytes / 1073741824.0, (double)pages * (double)page / 1073741824.0);
-    if (st == DS_ERR_PLACEMENT)
+    /* The two refusals of ds_check_params (see DS_MANY_DISKS): many disks
+     * beyond what random placement reaches, or more than can fit at all. */
+    const double fraction = (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6;
+    if (st == DS_ERR_PLACEMENT && o->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)
         die(EXIT_RUN,
-            "N = %zu disks of R = %g cover %.3f of the box; random placement cannot exceed "
-            "%.2f",
-            o->n, o->radius, (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6,
-            DS_MAX_AREA_FRACTION);
+            "N = %zu disks of R = %g cover %.3f of the box; random placement of more than %d "
+            "disks cannot exceed %.2f",
+            o->n, o->radius, fraction, DS_MANY_DISKS, DS_MAX_AREA_FRACTION);
+    if (st == DS_ERR_PLACEMENT)
+        die(EXIT_RUN, "N = %zu disks of R = %g cannot fit in the box without overlap", o->n,
+            o->radius);
     if (st != DS_OK)
         die(EXIT_USAGE, "invalid parameters: %s", ds_status_str(st));
     if (warnings & DS_WARN_TUNNELING)
@@ -438,7 +443,7 @@ int main(int argc, char **argv)
     ds_status st = ds_create(&p, &sim);
     if (st == DS_ERR_PLACEMENT)
         die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s", o.n,
-            o.radius, (unsigned long long)o.seed, "try fewer or smaller disks");
+            o.radius, (unsigned long long)o.seed, "try another --seed, or fewer or smaller disks");
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
     if (!o.quiet)

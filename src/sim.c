@@ -34,6 +34,20 @@ static resolved resolve_defaults(const ds_params *p)
     return r;
 }
 
+/* Oler's inequality (1961; Folkman and Graham 1969 for any convex set):
+ * points at mutual distance >= 1 inside a convex polygon of area A and
+ * perimeter P number at most (2/sqrt 3) A + P/2 + 1. Disk centres are
+ * 2R apart inside the square of side box - 2R, so in units of 2R that
+ * square has side s and at most (2/sqrt 3) s^2 + 2 s + 1 disks fit. The
+ * bound is exact for one disk (s >= 0 gives 1) and tends to the hexagonal
+ * packing, area fraction pi / (2 sqrt 3) = 0.907, for many. */
+static int disks_cannot_fit(size_t n, double radius, double box)
+{
+    const double s = (box - 2.0 * radius) / (2.0 * radius);
+    const double most = 1.1547005383792515 * s * s + 2.0 * s + 1.0;
+    return (double)n > most * (1.0 + 1e-12); /* slack: never refuse a fit to rounding */
+}
+
 ds_status ds_check_params(const ds_params *p, unsigned *warnings)
 {
     if (warnings)
@@ -53,7 +67,8 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
     if (p->n >= UINT32_MAX || p->n > (SIZE_MAX - 64) / BYTES_PER_DISK)
         return DS_ERR_NOMEM;
     double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box);
-    if (fraction > DS_MAX_AREA_FRACTION)
+    if (disks_cannot_fit(p->n, p->radius, r.box) ||
+        (p->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION))
         return DS_ERR_PLACEMENT;
     if (warnings && 2.0 * 3.0 * r.speed * r.dt > 4.0 * p->radius)
         *warnings |= DS_WARN_TUNNELING;

@@ -459,6 +459,20 @@ static void test_a_good_run_writes_only_complete_frames(void **state)
     assert_int_equal(o.frames, 3);
 }
 
+/* One disk always fits, however large: the many-disk limit of random
+ * placement (0.54 of the box) does not apply to it. */
+static void test_one_disk_of_almost_half_the_box_runs(void **state)
+{
+    (void)state;
+    cli_case one = {"one large disk", 0, "", "-", "disks 1 499.9 --frames 3 --quiet --out out", 0};
+    outcome o;
+    run_case(&one, &o);
+    assert_int_equal(o.ran, 1);
+    if (o.problem[0])
+        fail_msg("%s", o.problem);
+    assert_int_equal(o.frames, 3);
+}
+
 /* Starts disks writing frames as fast as it can, waits for a few frames,
  * interrupts it and checks that only complete frames remain. Whether the
  * signal lands inside a write is luck, so it is tried several times; the
@@ -637,9 +651,10 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "--table") == 0)
         return print_table();
 
-    static struct CMUnitTest tests[MAX_CASES + 4];
+    static struct CMUnitTest tests[MAX_CASES + 5];
     size_t n = 0;
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_a_good_run_writes_only_complete_frames);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_one_disk_of_almost_half_the_box_runs);
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_help_documents_the_exit_statuses);
     tests[n++] =
         (struct CMUnitTest)cmocka_unit_test(test_an_interrupted_run_leaves_only_complete_frames);
