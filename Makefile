@@ -135,7 +135,7 @@ SOVERSION := $(shell sed -n 's/^.define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' incl
 SONAME    := libdisksim.so.$(SOVERSION)
 SHLIB     := libdisksim.so.$(VERSION)
 PIC_OBJ   := $(LIB_SRC:src/%.c=$(BUILD)/pic/%.o)
-EXAMPLES  := $(OUT)examples/minimal $(OUT)examples/stream_frames
+EXAMPLES  := $(OUT)examples/minimal $(OUT)examples/stream_frames $(OUT)examples/speeds
 
 PREFIX       ?= /usr/local
 BINDIR       = $(PREFIX)/bin
@@ -223,7 +223,7 @@ uninstall:
 
 clean-packaging:
 	rm -f libdisksim.so libdisksim.so.* disksim.pc disksim.pc.tmp \
-	    examples/minimal examples/stream_frames
+	    examples/minimal examples/stream_frames examples/speeds
 
 # ---------------------------------------------------------------- renderer
 # tools/render (frames to PNG, tools/render*.c) draws through one small

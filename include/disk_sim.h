@@ -162,6 +162,9 @@ const char *ds_broadphase_name(ds_broadphase bp);
 
 /* Disk i, in generation order (i < n; out of range gives all zeros). */
 ds_disk ds_get(const ds_sim *sim, size_t i);
+/* Every disk at once: out[i] = ds_get(sim, i) for i < ds_count(sim), so out
+ * must hold ds_count(sim) disks. DS_ERR_ARG if sim or out is NULL. */
+ds_status ds_get_all(const ds_sim *sim, ds_disk *out);
 /* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, or the
  * centre is outside [R, box-R]^2. Does not check overlaps. */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);

@@ -254,6 +254,23 @@ ds_disk ds_get(const ds_sim *sim, size_t i)
     return d;
 }
 
+ds_status ds_get_all(const ds_sim *sim, ds_disk *out)
+{
+    if (!sim || !out)
+        return DS_ERR_ARG;
+    /* Read the arrays front to back and scatter by id: one scattered write
+     * per disk, where gathering through slot[] would read four arrays at
+     * scattered places. */
+    for (size_t k = 0; k < sim->n; ++k) {
+        ds_disk *d = &out[sim->id[k]];
+        d->x = sim->x[k];
+        d->y = sim->y[k];
+        d->vx = sim->vx[k];
+        d->vy = sim->vy[k];
+    }
+    return DS_OK;
+}
+
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
 {
     if (!sim || i >= sim->n)
