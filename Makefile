@@ -28,7 +28,8 @@ LIB   := $(OUT)libdisksim.a
 DISKS := $(OUT)disks
 
 LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
-           src/broad_phase.c src/broad_phase_strips.c src/frame_io.c src/sim.c
+           src/broad_phase.c src/broad_phase_strips.c src/number_text.c src/frame_io.c \
+           src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean
@@ -44,7 +45,8 @@ FLAGS_NOW   := $(CC) $(CFLAGS) $(CPPFLAGS) $(LDFLAGS)
 $(shell mkdir -p $(BUILD); [ "$$(cat $(FLAGS_STAMP) 2>/dev/null)" = "$(FLAGS_NOW)" ] || \
     echo "$(FLAGS_NOW)" > $(FLAGS_STAMP))
 
-$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/sweep_block.h $(FLAGS_STAMP) | $(BUILD)
+$(BUILD)/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/sweep_block.h src/number_text.h \
+              $(FLAGS_STAMP) | $(BUILD)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
@@ -154,7 +156,7 @@ clean: clean-packaging
 
 # Position-independent copies of the library objects: the static library
 # keeps the plain ones, which are a little faster without -fPIC.
-$(BUILD)/pic/%.o: src/%.c include/disk_sim.h src/sim_internal.h
+$(BUILD)/pic/%.o: src/%.c include/disk_sim.h src/sim_internal.h src/number_text.h
 	@mkdir -p $(BUILD)/pic
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
 

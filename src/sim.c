@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "number_text.h"
 #include "sim_internal.h"
 
 /* Bytes per disk: x, y, vx, vy, id, slot, plus the placement grid's node
@@ -106,16 +107,6 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box)
     return per_disk > 8.5 ? DS_SAP_STRIPS : DS_SAP;
 }
 
-static void format_radius(char *out, size_t cap, double r)
-{
-    /* Shortest %.Ng that reads back as the same double: 5 -> "5". */
-    for (int digits = 1; digits <= 17; ++digits) {
-        snprintf(out, cap, "%.*g", digits, r);
-        if (strtod(out, NULL) == r)
-            return;
-    }
-}
-
 ds_status ds_create(const ds_params *params, ds_sim **out)
 {
     if (!out)
@@ -137,7 +128,7 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     sim->dt = r.dt;
     sim->broadphase = choose_broadphase(params, r.box);
     sim->scan = ds_bp_widest_scan();
-    format_radius(sim->radius_text, sizeof sim->radius_text, sim->radius);
+    ds_format_shortest(sim->radius_text, sizeof sim->radius_text, sim->radius);
 
     sim->x = malloc(cap * sizeof(double));
     sim->y = malloc(cap * sizeof(double));
