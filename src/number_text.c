@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "number_text.h"
 
@@ -61,10 +62,14 @@ size_t ds_format_fixed6(char *out, double v)
 
 void ds_format_shortest(char *out, size_t cap, double v)
 {
-    /* Shortest %.Ng that reads back as the same double: 5 -> "5". */
+    /* The shortest %.Ng text that reads back as the same double: 5 -> "5".
+     * Not simply the fewest digits: %.1g writes 10 as "1e+01", %.2g "10".
+     * 17 digits always read back, so the loop always ends with an answer. */
+    char best[32] = "", text[32];
     for (int digits = 1; digits <= 17; ++digits) {
-        snprintf(out, cap, "%.*g", digits, v);
-        if (strtod(out, NULL) == v)
-            return;
+        int len = snprintf(text, sizeof text, "%.*g", digits, v);
+        if (len > 0 && strtod(text, NULL) == v && (!best[0] || (size_t)len < strlen(best)))
+            memcpy(best, text, (size_t)len + 1);
     }
+    snprintf(out, cap, "%s", best);
 }
