@@ -29,7 +29,7 @@ DISKS := $(OUT)disks
 
 LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
            src/broad_phase.c src/broad_phase_strips.c src/number_text.c src/frame_io.c \
-           src/sim.c
+           src/xyz.c src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean

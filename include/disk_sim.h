@@ -235,6 +235,32 @@ ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame
 ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err);
 void ds_frame_free(ds_frame *frame);
 
+/* ------------------------------------------------------------------ */
+/* Trajectories: extended XYZ, read by ASE, OVITO and VMD               */
+/* ------------------------------------------------------------------ */
+
+/* One frame of an extended XYZ trajectory; frames written one after
+ * another to the same file make the trajectory. A frame is the disk count
+ * on a line, the comment line
+ *   Lattice="L 0 0 0 L 0 0 0 2R" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
+ *   Time=T pbc="F F F"
+ * (one line; L the box side, T the simulated time with 6 decimals), then
+ * one line per disk in generation order,
+ *   X x y 0 R vx vy 0
+ * with x, y, vx, vy written like frames (6 decimals) and R in the shortest
+ * form that reads back exactly. The 2D box is written as a cell of height
+ * 2R with every disk at z = 0; "X" is a dummy species. ASE reads positions,
+ * arrays "radius" and "velo" and info "Time"; OVITO maps the columns to
+ * Particle Type, Position, Radius and Velocity.
+ * ds_format_xyz_frame works like ds_format_frame: with cap too small it
+ * returns DS_ERR_ARG, *len receives the bytes needed either way (buf NULL
+ * with cap 0 asks only for the size), and ds_xyz_frame_size() is always
+ * enough. ds_write_xyz_frame writes one frame to out, flushed (DS_ERR_IO if
+ * the write fails). */
+size_t ds_xyz_frame_size(const ds_sim *sim);
+ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *len);
+ds_status ds_write_xyz_frame(const ds_sim *sim, FILE *out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -473,8 +473,9 @@ static void test_one_disk_of_almost_half_the_box_runs(void **state)
     assert_int_equal(o.frames, 3);
 }
 
-/* Starts disks writing frames as fast as it can, waits for a few frames,
- * interrupts it and checks that only complete frames remain. Whether the
+/* Starts disks writing frames and a trajectory as fast as it can, waits
+ * for a few frames, interrupts it and checks that only complete frames
+ * remain (the trajectory's temporary removed, none renamed into place). Whether the
  * signal lands inside a write is luck, so it is tried several times; the
  * invariant must hold every time. */
 static void interrupt_a_run(int sig)
@@ -492,7 +493,7 @@ static void interrupt_a_run(int sig)
             _exit(125);
         alarm(CASE_TIMEOUT_SECONDS);
         execl(disks_path, disks_path, "3000", "2", "--frames", "10000", "--steps-per-frame", "1",
-              "--quiet", "--out", "out", (char *)NULL);
+              "--quiet", "--out", "out", "--trajectory", "t.xyz", (char *)NULL);
         _exit(126);
     }
     /* Poll (no timing is asserted: the alarm above bounds a stuck run). */
