@@ -242,7 +242,8 @@ RENDER_PKGS_egl    := egl gl libpng
 RENDER_BACKENDS := $(strip $(foreach b,osmesa egl,$(if $(shell pkg-config --exists $(RENDER_PKGS_$(b)) && echo y),$(b))))
 BACKEND ?= $(firstword $(RENDER_BACKENDS))
 RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
-RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png
+RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png \
+                 render_movie
 RENDER_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)

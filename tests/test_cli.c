@@ -169,10 +169,10 @@ static int write_bytes(const char *path, const char *data, size_t len)
 #define UNPRIVILEGED_ID 65534
 #define CANNOT_REACH_AS_NOBODY 123
 
-/* Applies the setup steps inside dir; sets *fsize and *drop for the child.
- * Returns 0, or -1 on a broken setup. */
+/* Applies the setup steps inside dir; sets *fsize, *drop, out_path and
+ * path_env for the child. Returns 0, or -1 on a broken setup. */
 static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop, char *out_path,
-                       size_t out_cap)
+                       size_t out_cap, char *path_env, size_t path_cap)
 {
     char steps[sizeof c->setup];
     snprintf(steps, sizeof steps, "%s", c->setup);
@@ -213,6 +213,8 @@ static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *dro
             }
         } else if (strcmp(step, "stdout") == 0) {
             snprintf(out_path, out_cap, "%s", arg);
+        } else if (strcmp(step, "path") == 0) {
+            snprintf(path_env, path_cap, "%s", path);
         } else if (strcmp(step, "fsize") == 0) {
             *fsize = atol(arg);
         } else {
@@ -343,8 +345,9 @@ static void run_case(const cli_case *c, outcome *o)
     }
     long fsize = -1;
     int drop = 0;
-    char out_path[256] = "/dev/null";
-    if (apply_setup(c, dir, &fsize, &drop, out_path, sizeof out_path) != 0) {
+    char out_path[256] = "/dev/null", path_env[PATH_MAX] = "";
+    if (apply_setup(c, dir, &fsize, &drop, out_path, sizeof out_path, path_env, sizeof path_env) !=
+        0) {
         snprintf(o->problem, sizeof o->problem, "bad setup '%.400s'", c->setup);
         remove_tree(dir);
         return;
@@ -369,6 +372,8 @@ static void run_case(const cli_case *c, outcome *o)
         dup2(pipefd[1], STDERR_FILENO);
         close(pipefd[0]);
         if (chdir(dir) != 0)
+            _exit(125);
+        if (path_env[0] && setenv("PATH", path_env, 1) != 0)
             _exit(125);
         if (fsize >= 0) {
             /* Without SIGXFSZ ignored the kernel kills the writer; ignored,
