@@ -449,19 +449,27 @@ static void test_bad_input_case(void **state)
                  o.problem, o.err);
 }
 
+/* Runs a command that must succeed: exit 0, nothing on stderr, the given
+ * number of complete frames and no other file. */
+static void expect_a_good_run(const char *command, int frames)
+{
+    cli_case good = {"a good run", 0, "", "-", "", 0};
+    snprintf(good.command, sizeof good.command, "%s", command);
+    outcome o;
+    run_case(&good, &o);
+    assert_int_equal(o.ran, 1);
+    if (o.problem[0])
+        fail_msg("`%s`: %s", command, o.problem);
+    assert_string_equal(o.err, "");
+    assert_int_equal(o.frames, frames);
+}
+
 /* The control case: the checks above would be hollow if a good run also
  * failed them. */
 static void test_a_good_run_writes_only_complete_frames(void **state)
 {
     (void)state;
-    cli_case good = {"a good run", 0, "", "-", "disks 50 5 --frames 3 --quiet --out out", 0};
-    outcome o;
-    run_case(&good, &o);
-    assert_int_equal(o.ran, 1);
-    if (o.problem[0])
-        fail_msg("%s", o.problem);
-    assert_string_equal(o.err, "");
-    assert_int_equal(o.frames, 3);
+    expect_a_good_run("disks 50 5 --frames 3 --quiet --out out", 3);
 }
 
 /* One disk always fits, however large: the many-disk limit of random
@@ -469,13 +477,7 @@ static void test_a_good_run_writes_only_complete_frames(void **state)
 static void test_one_disk_of_almost_half_the_box_runs(void **state)
 {
     (void)state;
-    cli_case one = {"one large disk", 0, "", "-", "disks 1 499.9 --frames 3 --quiet --out out", 0};
-    outcome o;
-    run_case(&one, &o);
-    assert_int_equal(o.ran, 1);
-    if (o.problem[0])
-        fail_msg("%s", o.problem);
-    assert_int_equal(o.frames, 3);
+    expect_a_good_run("disks 1 499.9 --frames 3 --quiet --out out", 3);
 }
 
 /* Starts disks writing frames and a trajectory as fast as it can, waits

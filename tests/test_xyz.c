@@ -85,13 +85,14 @@ static void free_frames(xyz_frame *frames, size_t n)
         free(frames[k].disks);
 }
 
-static char *slurp(const char *path)
+/* The rest of f from where it is, NUL-terminated; closes f. */
+static char *read_all(FILE *f)
 {
-    FILE *f = fopen(path, "rb");
     assert_non_null(f);
+    long start = ftell(f);
     assert_int_equal(fseek(f, 0, SEEK_END), 0);
-    long size = ftell(f);
-    rewind(f);
+    long size = ftell(f) - start;
+    assert_int_equal(fseek(f, start, SEEK_SET), 0);
     char *text = malloc((size_t)size + 1);
     assert_non_null(text);
     assert_int_equal(fread(text, 1, (size_t)size, f), (size_t)size);
@@ -99,6 +100,8 @@ static char *slurp(const char *path)
     fclose(f);
     return text;
 }
+
+static char *slurp(const char *path) { return read_all(fopen(path, "rb")); }
 
 /* Six decimals are written: a value read back is within half a unit of
  * the sixth decimal (5e-7), plus the rounding of the double itself. */
@@ -151,13 +154,8 @@ static void test_frames_written_one_after_another_make_a_trajectory(void **state
         assert_int_equal(ds_write_xyz_frame(sim, out), DS_OK);
     }
     assert_int_equal(ds_get_all(sim, last), DS_OK);
-    long size = ftell(out);
     rewind(out);
-    char *text = malloc((size_t)size + 1);
-    assert_non_null(text);
-    assert_int_equal(fread(text, 1, (size_t)size, out), (size_t)size);
-    text[size] = '\0';
-    fclose(out);
+    char *text = read_all(out);
     xyz_frame f[4];
     assert_int_equal(parse_trajectory(text, f, 4), 3);
     for (int k = 0; k < 3; ++k) {
