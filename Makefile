@@ -3,6 +3,10 @@
 
 CC      ?= cc
 CFLAGS  ?= -O2 -g
+# pkg-config is optional: without it cmocka is linked as -lcmocka and the
+# renderer is skipped with a note that names it, never a shell error.
+PKG_CONFIG ?= pkg-config
+HAVE_PKG_CONFIG := $(shell command -v $(PKG_CONFIG) >/dev/null 2>&1 && echo y)
 WARN    := -std=c99 -Wall -Wextra -Wpedantic
 CPPFLAGS += -Iinclude
 LDLIBS  += -lm
@@ -29,7 +33,8 @@ DISKS := $(OUT)disks
 
 LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
            src/broad_phase.c src/broad_phase_strips.c src/time_step.c \
-           src/cells.c src/event_queue.c src/event_driven.c src/frame_io.c src/sim.c
+           src/cells.c src/event_queue.c src/event_driven.c src/number_text.c \
+           src/frame_io.c src/xyz.c src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean
@@ -57,8 +62,8 @@ $(DISKS): $(BUILD)/disks.o $(LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
 # ---------------------------------------------------------------- tests
-CMOCKA_CFLAGS := $(shell pkg-config --cflags cmocka 2>/dev/null)
-CMOCKA_LIBS   := $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
+CMOCKA_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags cmocka 2>/dev/null))
+CMOCKA_LIBS   := $(or $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --libs cmocka 2>/dev/null)),-lcmocka)
 # test_render needs GL and libpng: its own rule, in the renderer section.
 TEST_SRC := $(filter-out tests/test_render.c,$(wildcard tests/test_*.c))
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
@@ -137,7 +142,7 @@ SOVERSION := $(shell sed -n 's/^.define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' incl
 SONAME    := libdisksim.so.$(SOVERSION)
 SHLIB     := libdisksim.so.$(VERSION)
 PIC_OBJ   := $(LIB_SRC:src/%.c=$(BUILD)/pic/%.o)
-EXAMPLES  := $(OUT)examples/minimal $(OUT)examples/stream_frames
+EXAMPLES  := $(OUT)examples/minimal $(OUT)examples/stream_frames $(OUT)examples/speeds
 
 PREFIX       ?= /usr/local
 BINDIR       = $(PREFIX)/bin
@@ -225,7 +230,7 @@ uninstall:
 
 clean-packaging:
 	rm -f libdisksim.so libdisksim.so.* disksim.pc disksim.pc.tmp \
-	    examples/minimal examples/stream_frames
+	    examples/minimal examples/stream_frames examples/speeds
 
 # ---------------------------------------------------------------- renderer
 # tools/render (frames to PNG, tools/render*.c) draws through one small
@@ -239,11 +244,13 @@ clean-packaging:
 # one-line note when there is none.
 RENDER_PKGS_osmesa := osmesa libpng
 RENDER_PKGS_egl    := egl gl libpng
-RENDER_BACKENDS := $(strip $(foreach b,osmesa egl,$(if $(shell pkg-config --exists $(RENDER_PKGS_$(b)) && echo y),$(b))))
+RENDER_BACKENDS := $(if $(HAVE_PKG_CONFIG),$(strip $(foreach b,osmesa egl,$(if $(shell \
+    $(PKG_CONFIG) --exists $(RENDER_PKGS_$(b)) 2>/dev/null && echo y),$(b)))))
 BACKEND ?= $(firstword $(RENDER_BACKENDS))
 RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
-RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png
-RENDER_CFLAGS := $(shell pkg-config --cflags libpng 2>/dev/null)
+RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png \
+                 render_movie
+RENDER_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null))
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)
 .SECONDARY: $(RENDER_OBJ) # kept between builds, not intermediate
@@ -264,7 +271,7 @@ $(BUILD)/tools/%.o: tools/%.c $(RENDER_DEPS)
 	$(CC) $(WARN) $(CPPFLAGS) $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/tools/render-%: $(RENDER_COMMON:%=$(BUILD)/tools/%.o) $(BUILD)/tools/render_%.o $(LIB)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(shell pkg-config --libs $(RENDER_PKGS_$*)) -lpthread $(LDLIBS)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(shell $(PKG_CONFIG) --libs $(RENDER_PKGS_$*)) -lpthread $(LDLIBS)
 
 # A copy, refreshed whenever it differs, so switching BACKEND takes effect.
 ifneq ($(BACKEND),)
@@ -281,7 +288,7 @@ clean-render:
 	rm -f tools/render
 
 render-skipped:
-	@echo "renderer skipped: pkg-config finds neither osmesa nor egl+gl with libpng ($(RENDER_HINT))"
+	@echo "renderer skipped: $(if $(HAVE_PKG_CONFIG),pkg-config finds neither osmesa nor egl+gl with libpng,$(PKG_CONFIG) is not installed (Debian: pkg-config)) ($(RENDER_HINT))"
 
 # The test runs each backend's binary (their paths are compiled in) and
 # links the GL-free parts (colour map, layout) to compute expected pixels.
@@ -292,4 +299,4 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 	    $(foreach b,$(RENDER_BACKENDS),-DRENDER_$(b)='"$(BUILD)/tools/render-$(b)"') \
 	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
 	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
-	    $(shell pkg-config --libs libpng 2>/dev/null) $(LDLIBS)
+	    $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null) $(LDLIBS)

@@ -26,6 +26,7 @@ typedef struct options {
     uint64_t steps_per_frame;
     const char *out_dir;
     const char *stats_path;
+    const char *trajectory_path;
     int quiet, velocities;
     ds_broadphase broadphase;
     ds_integrator integrator;
@@ -43,6 +44,7 @@ static const char *const usage_text =
     "  --out DIR            directory for the frames, created if missing (default .)\n"
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
+    "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
     "  --integrator I       step (the fixed time step, default) or event (exact\n"
     "                       event-driven dynamics)\n"
     "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
@@ -183,10 +185,9 @@ static options parse_args(int argc, char **argv)
             size_t len = eq ? (size_t)(eq - a) : strlen(a);
             const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
             const char *names[] = {"--seed",  "--frames",     "--steps-per-frame", "--out",
-                                   "--stats", "--broadphase", "--integrator"};
-            const int count = (int)(sizeof names / sizeof names[0]);
+                                   "--stats", "--broadphase", "--integrator",      "--trajectory"};
             int which = -1;
-            for (int k = 0; k < count; ++k)
+            for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
                 if (strlen(names[k]) == len && strncmp(a, names[k], len) == 0)
                     which = k;
             if (which < 0)
@@ -218,8 +219,13 @@ static options parse_args(int argc, char **argv)
             case 5:
                 o.broadphase = broadphase_arg(value);
                 break;
-            default:
+            case 6:
                 o.integrator = integrator_arg(value);
+                break;
+            default:
+                if (!*value)
+                    die(EXIT_USAGE, "--trajectory needs a file name");
+                o.trajectory_path = value;
             }
             continue;
         }
@@ -260,12 +266,17 @@ static void check_request(const options *o, const ds_params *p)
     if (pages > 0 && page > 0 && (double)bytes > 0.8 * (double)pages * (double)page)
         die(EXIT_USAGE, "N = %zu disks need %.1f GiB, more than this machine's %.1f GiB", o->n,
             (double)bytes / 1073741824.0, (double)pages * (double)page / 1073741824.0);
-    if (st == DS_ERR_PLACEMENT)
+    /* The two refusals of ds_check_params (see DS_MANY_DISKS): many disks
+     * beyond what random placement reaches, or more than can fit at all. */
+    const double fraction = (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6;
+    if (st == DS_ERR_PLACEMENT && o->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)
         die(EXIT_RUN,
-            "N = %zu disks of R = %g cover %.3f of the box; random placement cannot exceed "
-            "%.2f",
-            o->n, o->radius, (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6,
-            DS_MAX_AREA_FRACTION);
+            "N = %zu disks of R = %g cover %.3f of the box; random placement of more than %d "
+            "disks cannot exceed %.2f",
+            o->n, o->radius, fraction, DS_MANY_DISKS, DS_MAX_AREA_FRACTION);
+    if (st == DS_ERR_PLACEMENT)
+        die(EXIT_RUN, "N = %zu disks of R = %g cannot fit in the box without overlap", o->n,
+            o->radius);
     if (st != DS_OK)
         die(EXIT_USAGE, "invalid parameters: %s", ds_status_str(st));
     if (warnings & DS_WARN_TUNNELING)
@@ -382,9 +393,10 @@ static int write_file_in_place(const char *path, const char *data, size_t len, c
     return saved ? -1 : 0;
 }
 
-/* Splits --stats into directory and base name, refusing at once (before
- * any simulation time is spent) a path that cannot become a file. */
-static const char *stats_split(const char *path, char *dir, size_t dir_cap)
+/* Splits the path of --stats or --trajectory into directory and base name,
+ * refusing at once (before any simulation time is spent) a path that
+ * cannot become a file. */
+static const char *output_split(const char *option, const char *path, char *dir, size_t dir_cap)
 {
     const char *slash = strrchr(path, '/');
     const char *base = slash ? slash + 1 : path;
@@ -396,10 +408,113 @@ static const char *stats_split(const char *path, char *dir, size_t dir_cap)
         snprintf(dir, dir_cap, "%.*s", (int)(slash - path), path);
     struct stat st;
     if (!*base || (stat(path, &st) == 0 && S_ISDIR(st.st_mode)))
-        die(EXIT_USAGE, "--stats needs a file name, got directory '%s'", path);
+        die(EXIT_USAGE, "%s needs a file name, got directory '%s'", option, path);
     if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
-        die(EXIT_RUN, "cannot write --stats %s: '%s' is not a directory", path, dir);
+        die(EXIT_RUN, "cannot write %s %s: '%s' is not a directory", option, path, dir);
     return base;
+}
+
+/* --trajectory: every frame appended as the run goes (a trajectory can be
+ * far larger than --stats, which is held in memory), into a temporary file
+ * in the same directory renamed over FILE at the end, or written in place
+ * for a device, pipe or link (see is_special_file). Until the rename the
+ * temporary is removed by every way the run can end early: an error (die
+ * exits, and exit runs remove_pending), or Ctrl-C, kill or hang-up. */
+typedef struct trajectory {
+    FILE *f;
+    const char *path;
+    char *buf;
+    size_t cap;
+} trajectory;
+
+static char pending_tmp[4200]; /* the temporary not yet renamed, "" if none */
+
+static void remove_pending(void)
+{
+    if (pending_tmp[0])
+        unlink(pending_tmp);
+}
+
+static void remove_pending_and_die(int sig)
+{
+    remove_pending(); /* unlink is async-signal-safe */
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void block_signals(sigset_t *old)
+{
+    sigset_t block;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    sigaddset(&block, SIGHUP);
+    sigprocmask(SIG_BLOCK, &block, old);
+}
+
+static void trajectory_open(trajectory *t, const char *path, const char *dir, const char *base,
+                            const ds_sim *sim)
+{
+    t->path = path;
+    t->cap = ds_xyz_frame_size(sim);
+    if (!(t->buf = malloc(t->cap)))
+        die(EXIT_RUN, "out of memory for --trajectory");
+    if (is_special_file(path)) {
+        if (!(t->f = fopen(path, "wb")))
+            die(EXIT_RUN, "cannot write %s: %s", path, strerror(errno));
+        return;
+    }
+    char tmp[sizeof pending_tmp];
+    snprintf(tmp, sizeof tmp, "%s/.%s.XXXXXX", dir, base);
+    sigset_t old;
+    block_signals(&old);
+    int fd = mkstemp(tmp);
+    if (fd >= 0) {
+        memcpy(pending_tmp, tmp, sizeof tmp);
+        atexit(remove_pending);
+        const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+        for (size_t k = 0; k < 3; ++k) {
+            struct sigaction sa, was;
+            memset(&sa, 0, sizeof sa);
+            sa.sa_handler = remove_pending_and_die;
+            sigemptyset(&sa.sa_mask);
+            /* A signal ignored on purpose (nohup) stays ignored. */
+            if (sigaction(sigs[k], NULL, &was) == 0 && was.sa_handler != SIG_IGN)
+                sigaction(sigs[k], &sa, NULL);
+        }
+    }
+    sigprocmask(SIG_SETMASK, &old, NULL);
+    if (fd < 0)
+        die(EXIT_RUN, "cannot write %s: %s", path, strerror(errno));
+    fchmod(fd, 0644);
+    if (!(t->f = fdopen(fd, "wb")))
+        die(EXIT_RUN, "cannot write %s: %s", path, strerror(errno));
+}
+
+static void trajectory_append(trajectory *t, const ds_sim *sim)
+{
+    size_t len = 0;
+    ds_format_xyz_frame(sim, t->buf, t->cap, &len);
+    /* Flushed every frame, so a full disk is reported at once. */
+    if (fwrite(t->buf, 1, len, t->f) != len || fflush(t->f) != 0 || ferror(t->f))
+        die(EXIT_RUN, "cannot write %s: %s", t->path, strerror(errno ? errno : EIO));
+}
+
+static void trajectory_close(trajectory *t)
+{
+    int saved = fclose(t->f) != 0 ? (errno ? errno : EIO) : 0;
+    free(t->buf);
+    if (!saved && pending_tmp[0]) {
+        sigset_t old;
+        block_signals(&old);
+        if (rename(pending_tmp, t->path) != 0)
+            saved = errno ? errno : EIO;
+        else
+            pending_tmp[0] = '\0';
+        sigprocmask(SIG_SETMASK, &old, NULL);
+    }
+    if (saved)
+        die(EXIT_RUN, "cannot write %s: %s", t->path, strerror(saved));
 }
 
 typedef struct progress {
@@ -457,16 +572,20 @@ int main(int argc, char **argv)
     p.broadphase = o.broadphase;
     p.integrator = o.integrator;
     check_request(&o, &p);
-    char stats_dir[4096];
+    char stats_dir[4096], trajectory_dir[4096];
     const char *stats_base =
-        o.stats_path ? stats_split(o.stats_path, stats_dir, sizeof stats_dir) : NULL;
+        o.stats_path ? output_split("--stats", o.stats_path, stats_dir, sizeof stats_dir) : NULL;
+    const char *trajectory_base =
+        o.trajectory_path
+            ? output_split("--trajectory", o.trajectory_path, trajectory_dir, sizeof trajectory_dir)
+            : NULL;
     make_dirs(o.out_dir);
 
     ds_sim *sim = NULL;
     ds_status st = ds_create(&p, &sim);
     if (st == DS_ERR_PLACEMENT)
         die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s", o.n,
-            o.radius, (unsigned long long)o.seed, "try fewer or smaller disks");
+            o.radius, (unsigned long long)o.seed, "try another --seed, or fewer or smaller disks");
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
     if (!o.quiet)
@@ -495,6 +614,10 @@ int main(int argc, char **argv)
         memcpy(stats, header, stats_len);
     }
 
+    trajectory traj = {NULL, NULL, NULL, 0};
+    if (o.trajectory_path)
+        trajectory_open(&traj, o.trajectory_path, trajectory_dir, trajectory_base, sim);
+
     progress pr = {!o.quiet && isatty(STDERR_FILENO), ds_now()};
     double sim_seconds = 0.0, out_seconds = 0.0;
     for (long frame = 0; frame < o.frames; ++frame) {
@@ -512,12 +635,16 @@ int main(int argc, char **argv)
             progress_clear(&pr);
             die(EXIT_RUN, "cannot write %s/%s: %s", o.out_dir, name, why);
         }
+        if (traj.f)
+            trajectory_append(&traj, sim);
         if (stats)
             stats_row(&stats, &stats_len, &stats_cap, frame, sim);
         out_seconds += ds_now() - t0;
         progress_show(&pr, frame + 1, o.frames, ds_steps(sim));
     }
     progress_clear(&pr);
+    if (traj.f)
+        trajectory_close(&traj);
     if (stats) {
         const char *why = "";
         int failed = is_special_file(o.stats_path)

@@ -1,96 +1,46 @@
-/* Frame files: one line per disk, "x y R" or "x y R vx vy".
- *
- * Writing formats the numbers by hand: fprintf("%.6f") dominated the cost
- * of `disks 400 5`, and fixed six decimals can be produced exactly (same
- * digits as printf, ties to even) with integer arithmetic and one fma. */
+/* Frame files: one line per disk, "x y R" or "x y R vx vy". The numbers
+ * are formatted by number_text.c (fixed six decimals by hand, exactly as
+ * printf would: fprintf("%.6f") dominated the cost of `disks 400 5`). */
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "number_text.h"
 #include "sim_internal.h"
-
-/* Widest fixed-point field we format by hand: |v| < 1e15 has at most 15
- * integer digits, plus sign, point and 6 decimals. */
-#define FAST_LIMIT 1e15
-#define FIELD_MAX 40
-
-/* Writes v with exactly 6 decimals, as printf("%.6f") would. */
-static size_t format_fixed6(char *out, double v)
-{
-    if (!(fabs(v) < FAST_LIMIT)) {
-        /* Unreachable for positions inside a box <= 1e9; kept exact and
-         * bounded for anything else (NaN, inf, huge velocities). */
-        int len = snprintf(out, FIELD_MAX, "%.6f", v);
-        if (len < 0 || len >= FIELD_MAX)
-            len = snprintf(out, FIELD_MAX, "%.9e", v);
-        return (size_t)len;
-    }
-    char *p = out;
-    double a = fabs(v);
-    double ip = floor(a);
-    double frac = a - ip;                        /* exact */
-    double scaled = frac * 1e6;                  /* rounded product... */
-    double err = fma(frac, 1e6, -scaled);        /* ...and its exact error */
-    double q = floor(scaled), rest = scaled - q; /* rest exact */
-    uint64_t micro = (uint64_t)q;
-    /* Round the exact value frac*1e6 = q + rest + err to nearest, ties to
-     * even: rest and err never straddle 0.5 unless rest is exactly 0.5. */
-    if (rest > 0.5 || (rest == 0.5 && (err > 0.0 || (err == 0.0 && (micro & 1u)))))
-        ++micro;
-    uint64_t whole = (uint64_t)ip;
-    if (micro == 1000000u) {
-        micro = 0;
-        ++whole;
-    }
-    if (signbit(v))
-        *p++ = '-'; /* like printf, tiny negatives print as -0.000000 */
-    char digits[24];
-    int nd = 0;
-    do {
-        digits[nd++] = (char)('0' + whole % 10);
-        whole /= 10;
-    } while (whole);
-    while (nd)
-        *p++ = digits[--nd];
-    *p++ = '.';
-    for (int k = 5; k >= 0; --k) {
-        p[k] = (char)('0' + micro % 10);
-        micro /= 10;
-    }
-    p += 6;
-    return (size_t)(p - out);
-}
 
 size_t ds_frame_size(const ds_sim *sim, int velocities)
 {
     if (!sim)
         return 0;
     size_t fields = velocities ? 4 : 2;
-    size_t line = fields * (FIELD_MAX + 1) + strlen(sim->radius_text) + 2;
+    size_t line = fields * (DS_FIELD_MAX + 1) + strlen(sim->radius_text) + 2;
     return sim->n * line;
 }
 
 ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len)
 {
-    if (!sim || !buf)
+    if (len)
+        *len = 0;
+    /* buf NULL with cap 0 asks only for the size: the loop copies nothing. */
+    if (!sim || (!buf && cap))
         return DS_ERR_ARG;
     const size_t rlen = strlen(sim->radius_text);
-    char line[4 * (FIELD_MAX + 1) + 40];
+    char line[4 * (DS_FIELD_MAX + 1) + 40];
     size_t used = 0;
     for (size_t i = 0; i < sim->n; ++i) {
         const size_t k = sim->slot[i];
-        size_t l = format_fixed6(line, sim->x[k]);
+        size_t l = ds_format_fixed6(line, sim->x[k]);
         line[l++] = ' ';
-        l += format_fixed6(line + l, sim->y[k]);
+        l += ds_format_fixed6(line + l, sim->y[k]);
         line[l++] = ' ';
         memcpy(line + l, sim->radius_text, rlen);
         l += rlen;
         if (velocities) {
             line[l++] = ' ';
-            l += format_fixed6(line + l, sim->vx[k]);
+            l += ds_format_fixed6(line + l, sim->vx[k]);
             line[l++] = ' ';
-            l += format_fixed6(line + l, sim->vy[k]);
+            l += ds_format_fixed6(line + l, sim->vy[k]);
         }
         line[l++] = '\n';
         if (used + l <= cap)
@@ -102,15 +52,16 @@ ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t c
     return used <= cap ? DS_OK : DS_ERR_ARG;
 }
 
-static ds_status write_frame(const ds_sim *sim, int velocities, FILE *out)
+ds_status ds_write_formatted(const ds_sim *sim, int velocities, FILE *out, size_t cap,
+                             ds_format_fn format)
 {
     if (!sim || !out)
         return DS_ERR_ARG;
-    size_t cap = ds_frame_size(sim, velocities), len = 0;
+    size_t len = 0;
     char *buf = malloc(cap ? cap : 1);
     if (!buf)
         return DS_ERR_NOMEM;
-    ds_status st = ds_format_frame(sim, velocities, buf, cap, &len);
+    ds_status st = format(sim, velocities, buf, cap, &len);
     /* fwrite into stdio's buffer succeeds even on a full disk: only the
      * flush reaches the file, so its result (and the sticky error flag, set
      * by any earlier failed write on this stream) decides. */
@@ -120,11 +71,14 @@ static ds_status write_frame(const ds_sim *sim, int velocities, FILE *out)
     return st;
 }
 
-ds_status ds_write_frame(const ds_sim *sim, FILE *out) { return write_frame(sim, 0, out); }
+ds_status ds_write_frame(const ds_sim *sim, FILE *out)
+{
+    return ds_write_formatted(sim, 0, out, ds_frame_size(sim, 0), ds_format_frame);
+}
 
 ds_status ds_write_frame_velocities(const ds_sim *sim, FILE *out)
 {
-    return write_frame(sim, 1, out);
+    return ds_write_formatted(sim, 1, out, ds_frame_size(sim, 1), ds_format_frame);
 }
 
 /* ------------------------------------------------------------------ */
@@ -184,17 +138,26 @@ static int parse_numbers(const char *s, double values[5], const char **why)
     }
 }
 
-ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err)
+/* Every error leaves *frame empty, an argument error included, so a caller
+ * may always ds_frame_free it. */
+static void clear_frame(ds_frame *frame, ds_frame_error *err)
 {
     if (err) {
         err->line = 0;
         err->message[0] = '\0';
     }
+    if (frame) {
+        frame->disks = NULL;
+        frame->count = 0;
+        frame->columns = 0;
+    }
+}
+
+ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err)
+{
+    clear_frame(frame, err);
     if (!frame || (!text && len))
         return DS_ERR_ARG;
-    frame->disks = NULL;
-    frame->count = 0;
-    frame->columns = 0;
 
     size_t cap = 0, count = 0, line_no = 0;
     int columns = 0;
@@ -275,15 +238,9 @@ out:
 
 ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err)
 {
-    if (err) {
-        err->line = 0;
-        err->message[0] = '\0';
-    }
+    clear_frame(frame, err);
     if (!path || !frame)
         return DS_ERR_ARG;
-    frame->disks = NULL;
-    frame->count = 0;
-    frame->columns = 0;
     FILE *f = fopen(path, "rb");
     if (!f) {
         if (err)

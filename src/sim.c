@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "number_text.h"
 #include "sim_internal.h"
 
 /* Bytes per disk: x, y, vx, vy, id, slot, plus the placement grid's node
@@ -52,6 +53,20 @@ static int broadphase_fits(ds_broadphase bp, ds_integrator integrator)
     return 0;
 }
 
+/* Oler's inequality (1961; Folkman and Graham 1969 for any convex set):
+ * points at mutual distance >= 1 inside a convex polygon of area A and
+ * perimeter P number at most (2/sqrt 3) A + P/2 + 1. Disk centres are
+ * 2R apart inside the square of side box - 2R, so in units of 2R that
+ * square has side s and at most (2/sqrt 3) s^2 + 2 s + 1 disks fit. The
+ * bound is exact for one disk (s >= 0 gives 1) and tends to the hexagonal
+ * packing, area fraction pi / (2 sqrt 3) = 0.907, for many. */
+static int disks_cannot_fit(size_t n, double radius, double box)
+{
+    const double s = (box - 2.0 * radius) / (2.0 * radius);
+    const double most = 1.1547005383792515 * s * s + 2.0 * s + 1.0;
+    return (double)n > most * (1.0 + 1e-12); /* slack: never refuse a fit to rounding */
+}
+
 ds_status ds_check_params(const ds_params *p, unsigned *warnings)
 {
     if (warnings)
@@ -77,7 +92,8 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
         (p->integrator == DS_EVENT_DRIVEN && p->n >= ((size_t)1 << 30)))
         return DS_ERR_NOMEM;
     double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box);
-    if (fraction > DS_MAX_AREA_FRACTION)
+    if (disks_cannot_fit(p->n, p->radius, r.box) ||
+        (p->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION))
         return DS_ERR_PLACEMENT;
     if (warnings && p->integrator == DS_TIME_STEP && 2.0 * 3.0 * r.speed * r.dt > 4.0 * p->radius)
         *warnings |= DS_WARN_TUNNELING;
@@ -88,6 +104,8 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box);
 
 ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
 {
+    if (!bytes)
+        return DS_ERR_ARG;
     ds_status st = ds_check_params(params, NULL);
     if (st == DS_ERR_PLACEMENT)
         st = DS_OK; /* memory is still a meaningful answer */
@@ -118,16 +136,6 @@ static ds_broadphase choose_broadphase(const ds_params *p, double box)
     return per_disk > 8.5 ? DS_SAP_STRIPS : DS_SAP;
 }
 
-static void format_radius(char *out, size_t cap, double r)
-{
-    /* Shortest %.Ng that reads back as the same double: 5 -> "5". */
-    for (int digits = 1; digits <= 17; ++digits) {
-        snprintf(out, cap, "%.*g", digits, r);
-        if (strtod(out, NULL) == r)
-            return;
-    }
-}
-
 ds_status ds_create(const ds_params *params, ds_sim **out)
 {
     if (!out)
@@ -152,7 +160,7 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     sim->dt = r.dt;
     sim->broadphase = choose_broadphase(params, r.box);
     sim->scan = ds_bp_widest_scan();
-    format_radius(sim->radius_text, sizeof sim->radius_text, sim->radius);
+    ds_format_shortest(sim->radius_text, sizeof sim->radius_text, sim->radius);
 
     sim->x = malloc(cap * sizeof(double));
     sim->y = malloc(cap * sizeof(double));
@@ -283,6 +291,23 @@ ds_disk ds_get(const ds_sim *sim, size_t i)
     d.vx = sim->vx[k];
     d.vy = sim->vy[k];
     return d;
+}
+
+ds_status ds_get_all(const ds_sim *sim, ds_disk *out)
+{
+    if (!sim || !out)
+        return DS_ERR_ARG;
+    /* Read the arrays front to back and scatter by id: one scattered write
+     * per disk, where gathering through slot[] would read four arrays at
+     * scattered places. */
+    for (size_t k = 0; k < sim->n; ++k) {
+        ds_disk *d = &out[sim->id[k]];
+        d->x = sim->x[k];
+        d->y = sim->y[k];
+        d->vx = sim->vx[k];
+        d->vy = sim->vy[k];
+    }
+    return DS_OK;
 }
 
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)

@@ -101,6 +101,14 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed);
 
 void ds_rebuild_slots(ds_sim *sim);
 
+/* Text output (frame_io.c): formats the state with format into a buffer of
+ * cap bytes and writes it to out, flushed and checked; the frame writers
+ * and the trajectory writer share it. */
+typedef ds_status (*ds_format_fn)(const ds_sim *sim, int velocities, char *buf, size_t cap,
+                                  size_t *len);
+ds_status ds_write_formatted(const ds_sim *sim, int velocities, FILE *out, size_t cap,
+                             ds_format_fn format);
+
 #define DS_TWO_PI 6.28318530717958647692
 
 #endif

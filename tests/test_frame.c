@@ -68,6 +68,13 @@ static void test_radius_is_written_in_shortest_round_trip_form(void **state)
     assert_string_equal(text, "0.1");
     radius_text(1.0 / 3.0, text, sizeof text);
     assert_true(strtod(text, NULL) == 1.0 / 3.0);
+    /* Fewest digits is not shortest: one digit writes 10 as "1e+01". */
+    radius_text(10.0, text, sizeof text);
+    assert_string_equal(text, "10");
+    radius_text(250.0, text, sizeof text);
+    assert_string_equal(text, "250");
+    radius_text(1e-7, text, sizeof text); /* here the exponent is shorter */
+    assert_string_equal(text, "1e-07");
 }
 
 static void test_frame_round_trips_through_a_file(void **state)

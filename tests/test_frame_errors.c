@@ -199,6 +199,62 @@ static void test_null_arguments_are_refused_not_dereferenced(void **state)
     ds_destroy(NULL);
 }
 
+/* The header promises "On error *frame is left empty": a caller may free it
+ * after any failure, so a frame holding garbage before the call must come
+ * out empty whatever the error, an argument error included. */
+static void test_a_failed_read_leaves_the_frame_empty_even_for_bad_arguments(void **state)
+{
+    (void)state;
+    ds_frame_disk junk;
+    ds_frame frame = {&junk, 99, 5};
+    assert_int_equal(ds_parse_frame(NULL, 5, &frame, NULL), DS_ERR_ARG);
+    assert_null(frame.disks);
+    assert_int_equal(frame.count, 0);
+    assert_int_equal(frame.columns, 0);
+    frame = (ds_frame){&junk, 99, 5};
+    assert_int_equal(ds_read_frame(NULL, &frame, NULL), DS_ERR_ARG);
+    assert_null(frame.disks);
+    assert_int_equal(frame.count, 0);
+    assert_int_equal(frame.columns, 0);
+    ds_frame_free(&frame); /* what a careful caller does: must be harmless */
+}
+
+/* A caller with no buffer yet asks for the size: *len is the exact size the
+ * frame takes, the same a full format reports. */
+static void test_formatting_into_no_buffer_reports_the_bytes_needed(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(40, 5.0, 2, DS_SAP);
+    for (int velocities = 0; velocities <= 1; ++velocities) {
+        size_t need = 12345;
+        assert_int_equal(ds_format_frame(sim, velocities, NULL, 0, &need), DS_ERR_ARG);
+        size_t cap = ds_frame_size(sim, velocities), len = 0;
+        char *buf = malloc(cap);
+        assert_non_null(buf);
+        assert_int_equal(ds_format_frame(sim, velocities, buf, cap, &len), DS_OK);
+        assert_int_equal(need, len);
+        free(buf);
+    }
+    /* A NULL buffer that claims a capacity is still refused, and says 0. */
+    size_t need = 12345;
+    assert_int_equal(ds_format_frame(sim, 0, NULL, 10, &need), DS_ERR_ARG);
+    assert_int_equal(ds_format_frame(NULL, 0, NULL, 0, &need), DS_ERR_ARG);
+    assert_int_equal(need, 0);
+    ds_destroy(sim);
+}
+
+static void test_memory_needed_refuses_a_null_result_pointer(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(400, 5.0);
+    assert_int_equal(ds_memory_needed(&p, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_memory_needed(NULL, NULL), DS_ERR_ARG);
+    size_t bytes = 0;
+    assert_int_equal(ds_memory_needed(NULL, &bytes), DS_ERR_ARG);
+    assert_int_equal(ds_memory_needed(&p, &bytes), DS_OK);
+    assert_true(bytes >= 400 * 4 * sizeof(double)); /* x, y, vx, vy at least */
+}
+
 static void test_bad_parameters_are_refused_with_arg_error(void **state)
 {
     (void)state;
@@ -284,6 +340,9 @@ int main(void)
         cmocka_unit_test(test_writing_a_frame_to_a_full_disk_reports_io_error),
         cmocka_unit_test(test_a_written_frame_reads_back_exactly),
         cmocka_unit_test(test_null_arguments_are_refused_not_dereferenced),
+        cmocka_unit_test(test_a_failed_read_leaves_the_frame_empty_even_for_bad_arguments),
+        cmocka_unit_test(test_formatting_into_no_buffer_reports_the_bytes_needed),
+        cmocka_unit_test(test_memory_needed_refuses_a_null_result_pointer),
         cmocka_unit_test(test_bad_parameters_are_refused_with_arg_error),
         cmocka_unit_test(test_an_allocation_failure_is_reported_not_fatal),
         cmocka_unit_test(test_two_simulations_in_one_process_do_not_interfere),

@@ -94,17 +94,77 @@ static void test_a_large_placement_is_inside_and_disjoint(void **state)
     ds_destroy(sim);
 }
 
-static void test_impossible_packing_is_refused_at_once(void **state)
+static void test_one_disk_always_fits(void **state)
 {
     (void)state;
-    /* 5 disks of R = 200 would cover 0.63 of the box, beyond the ~0.547
-     * jamming limit of random sequential placement. */
-    ds_params p = ds_default_params(5, 200.0);
+    /* One disk of R = 499.9 covers 0.785 of the box, far above what random
+     * placement of many disks reaches, yet its centre has a 0.2-wide square
+     * to go to: every seed must place it there. */
+    for (uint64_t seed = 1; seed <= 5; ++seed) {
+        ds_sim *sim = test_create(1, 499.9, seed, DS_AUTO);
+        ds_disk d = ds_get(sim, 0);
+        assert_true(d.x >= 499.9 && d.x <= 500.1 && d.y >= 499.9 && d.y <= 500.1);
+        ds_destroy(sim);
+    }
+}
+
+static void test_more_disks_than_can_fit_are_refused_at_once(void **state)
+{
+    (void)state;
+    /* Four disks of R = 250 fit, one in each quarter of the box; five do
+     * not (Oler's bound for centres in a 500-wide square, 2R = 500 apart,
+     * is 4.15). The fifth is refused before any placement is tried. */
+    ds_params p = ds_default_params(4, 250.0);
+    assert_int_equal(ds_check_params(&p, NULL), DS_OK);
+    p.n = 5;
     char dummy;
     ds_sim *sim = (ds_sim *)(void *)&dummy; /* must be overwritten with NULL */
     assert_int_equal(ds_check_params(&p, NULL), DS_ERR_PLACEMENT);
     assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
     assert_null(sim);
+    /* Far beyond the box: 10^5 disks of R = 50 would cover 785 boxes. */
+    p = ds_default_params(100000, 50.0);
+    assert_int_equal(ds_check_params(&p, NULL), DS_ERR_PLACEMENT);
+}
+
+static void test_few_disks_above_random_jamming_are_tried(void **state)
+{
+    (void)state;
+    /* Four disks of R = 220 cover 0.608 of the box, above random placement's
+     * many-disk limit: with few disks that limit does not apply, so the
+     * request is tried. Seed 13 places them (one seed in 7 did when we
+     * searched 1..30); the disks are inside and disjoint like any others. */
+    ds_params p = ds_default_params(4, 220.0);
+    assert_int_equal(ds_check_params(&p, NULL), DS_OK);
+    ds_sim *sim = test_create(4, 220.0, 13, DS_AUTO);
+    for (size_t i = 0; i < 4; ++i) {
+        ds_disk a = ds_get(sim, i);
+        assert_true(a.x >= 220.0 && a.x <= 780.0 && a.y >= 220.0 && a.y <= 780.0);
+        for (size_t j = i + 1; j < 4; ++j) {
+            ds_disk b = ds_get(sim, j);
+            assert_true(hypot(a.x - b.x, a.y - b.y) >= 440.0);
+        }
+    }
+    ds_destroy(sim);
+}
+
+static void test_many_disks_above_random_jamming_are_refused_at_once(void **state)
+{
+    (void)state;
+    /* Random sequential placement of many disks jams near 0.547; past
+     * DS_MANY_DISKS disks a request above DS_MAX_AREA_FRACTION is refused
+     * up front instead of tried for ~0.2 ms per disk. Area fraction 0.55: */
+    const double r = sqrt(0.55 * 1e6 / (3.141592653589793 * (DS_MANY_DISKS + 1)));
+    ds_params p = ds_default_params(DS_MANY_DISKS + 1, r);
+    assert_int_equal(ds_check_params(&p, NULL), DS_ERR_PLACEMENT);
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
+    assert_null(sim);
+    p.n = DS_MANY_DISKS; /* one fewer, a little below 0.55: tried */
+    assert_int_equal(ds_check_params(&p, NULL), DS_OK);
+    /* Below the limit, many disks are tried too: 2000 disks of R = 9 cover 0.509. */
+    p = ds_default_params(2000, 9.0);
+    assert_int_equal(ds_check_params(&p, NULL), DS_OK);
 }
 
 static void test_unreachable_packing_fails_instead_of_hanging(void **state)
@@ -158,7 +218,10 @@ int main(void)
         cmocka_unit_test(test_initial_speed_is_100_in_uniform_directions),
         cmocka_unit_test(test_same_seed_places_the_same_disks),
         cmocka_unit_test(test_a_large_placement_is_inside_and_disjoint),
-        cmocka_unit_test(test_impossible_packing_is_refused_at_once),
+        cmocka_unit_test(test_one_disk_always_fits),
+        cmocka_unit_test(test_more_disks_than_can_fit_are_refused_at_once),
+        cmocka_unit_test(test_few_disks_above_random_jamming_are_tried),
+        cmocka_unit_test(test_many_disks_above_random_jamming_are_refused_at_once),
         cmocka_unit_test(test_unreachable_packing_fails_instead_of_hanging),
         cmocka_unit_test(test_bad_parameters_are_rejected),
     };

@@ -480,6 +480,181 @@ static void test_an_output_directory_that_is_a_file_is_refused(void **state)
 }
 
 /* ------------------------------------------------------------------ */
+/* Movies (--movie, through ffmpeg)                                    */
+/* ------------------------------------------------------------------ */
+
+static int have_ffmpeg(void)
+{
+    return system("command -v ffmpeg >/dev/null 2>&1 && command -v ffprobe >/dev/null 2>&1") == 0;
+}
+
+#define SKIP_WITHOUT_FFMPEG()                                                                      \
+    do {                                                                                           \
+        if (!have_ffmpeg()) {                                                                      \
+            print_message("skipped: no ffmpeg and ffprobe on PATH (Debian: ffmpeg)\n");            \
+            skip();                                                                                \
+        }                                                                                          \
+    } while (0)
+
+/* What ffprobe says about the video stream, as "key=value" lines. */
+typedef struct probe {
+    char codec[32], pix_fmt[32], rate[32];
+    int width, height, frames;
+} probe;
+
+static probe ffprobe(const char *movie)
+{
+    char cmd[1024], line[256];
+    snprintf(cmd, sizeof cmd,
+             "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+             "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate "
+             "-of default=noprint_wrappers=1 '%s'",
+             movie);
+    probe pr;
+    memset(&pr, 0, sizeof pr);
+    FILE *p = popen(cmd, "r");
+    assert_non_null(p);
+    while (fgets(line, sizeof line, p)) {
+        line[strcspn(line, "\n")] = '\0';
+        sscanf(line, "codec_name=%31s", pr.codec);
+        sscanf(line, "pix_fmt=%31s", pr.pix_fmt);
+        sscanf(line, "r_frame_rate=%31s", pr.rate);
+        sscanf(line, "width=%d", &pr.width);
+        sscanf(line, "height=%d", &pr.height);
+        sscanf(line, "nb_read_frames=%d", &pr.frames);
+    }
+    assert_int_equal(pclose(p), 0);
+    return pr;
+}
+
+static void test_a_movie_is_h264_yuv420p_with_every_frame(void **state)
+{
+    SKIP_WITHOUT_FFMPEG();
+    char frames[512], out[512], args[1400];
+    snprintf(frames, sizeof frames, "%s", fresh_dir("movie-run"));
+    snprintf(out, sizeof out, "%s", fresh_dir("movie-out"));
+    snprintf(args, sizeof args, "20 5 --frames 12 --quiet --velocities --out %s", frames);
+    assert_int_equal(run(RENDER_DISKS, args), 0);
+    snprintf(args, sizeof args, "--quiet -j 3 --size 96 --fps 30 --movie %s --dir %s",
+             path_in(out, "run.mp4"), frames);
+    if (run(*state, args) != 0)
+        fail_msg("render --movie: %s", last_stderr());
+    probe pr = ffprobe(path_in(out, "run.mp4"));
+    assert_string_equal(pr.codec, "h264");
+    assert_string_equal(pr.pix_fmt, "yuv420p");
+    assert_string_equal(pr.rate, "30/1");
+    assert_int_equal(pr.frames, 12);
+    assert_int_equal(pr.width, 96);
+    assert_int_equal(pr.height, 96);
+    assert_int_equal(count_files(out), 1);     /* the movie, no temporary */
+    assert_int_equal(count_files(frames), 12); /* and no PNG beside the frames */
+}
+
+/* yuv420p stores colour for 2 x 2 pixel blocks: an odd size is padded. */
+static void test_an_odd_size_makes_an_even_movie(void **state)
+{
+    SKIP_WITHOUT_FFMPEG();
+    const char *dir = fresh_dir("movie-odd");
+    write_text(path_in(dir, "frame_0000.txt"), "500 500 100\n");
+    char args[1400];
+    snprintf(args, sizeof args, "--quiet --size 65 --movie %s %s", path_in(dir, "odd.mp4"),
+             path_in(dir, "frame_0000.txt"));
+    if (run(*state, args) != 0)
+        fail_msg("render --movie --size 65: %s", last_stderr());
+    probe pr = ffprobe(path_in(dir, "odd.mp4"));
+    assert_int_equal(pr.width, 66);
+    assert_int_equal(pr.height, 66);
+    assert_int_equal(pr.frames, 1);
+}
+
+/* Workers finish frames in any order; the movie must not. Frame k shows
+ * one disk at x = 100 + 70 k: decoded, frame k is dark there and light
+ * where the disks of frames k - 1 and k + 1 were. */
+static void test_movie_frames_keep_their_order_with_many_workers(void **state)
+{
+    SKIP_WITHOUT_FFMPEG();
+    enum { FRAMES = 12, SIZE = 160 };
+    const char *dir = fresh_dir("movie-order");
+    char dir_copy[512], name[32], text[64], args[1400], cmd[1400];
+    snprintf(dir_copy, sizeof dir_copy, "%s", dir);
+    for (int k = 0; k < FRAMES; ++k) {
+        snprintf(name, sizeof name, "frame_%04d.txt", k);
+        snprintf(text, sizeof text, "%d 500 40\n", 100 + 70 * k);
+        write_text(path_in(dir_copy, name), text);
+    }
+    snprintf(args, sizeof args, "--quiet -j 4 --size %d --movie %s --dir %s", SIZE,
+             path_in(dir_copy, "order.mp4"), dir_copy);
+    if (run(*state, args) != 0)
+        fail_msg("render --movie -j 4: %s", last_stderr());
+    snprintf(cmd, sizeof cmd, "ffmpeg -v error -i '%s' -f rawvideo -pix_fmt rgb24 pipe:1",
+             path_in(dir_copy, "order.mp4"));
+    FILE *p = popen(cmd, "r");
+    assert_non_null(p);
+    static unsigned char rgb[SIZE * SIZE * 3];
+    rl_layout l;
+    rl_make(&l, SIZE, 1000.0, 0);
+    /* Brightness (r + g + b) of the pixel at frame coordinates (x, 500):
+     * the disk colour sums to ~330, the background to 765; a disk of 5.6 px
+     * radius keeps its centre far from either after lossy coding. */
+    for (int k = 0; k < FRAMES; ++k) {
+        assert_int_equal(fread(rgb, 1, sizeof rgb, p), sizeof rgb);
+        for (int d = k - 1; d <= k + 1; ++d) {
+            if (d < 0 || d >= FRAMES)
+                continue;
+            int col = (int)floor(rl_px(&l, 100 + 70 * d));
+            int row = SIZE - 1 - (int)floor(rl_py(&l, 500));
+            const unsigned char *px = rgb + 3 * ((size_t)row * SIZE + (size_t)col);
+            int sum = px[0] + px[1] + px[2];
+            if (d == k ? sum > 500 : sum < 650)
+                fail_msg("movie frame %d at the disk of frame %d: brightness %d", k, d, sum);
+        }
+    }
+    assert_int_equal(fread(rgb, 1, 1, p), 0); /* no frame more */
+    assert_int_equal(pclose(p), 0);
+}
+
+/* Runs the renderer with PATH holding only an empty directory. */
+static void test_a_movie_without_ffmpeg_names_the_package(void **state)
+{
+    const char *dir = fresh_dir("movie-noffmpeg");
+    char dir_copy[512], args[1400];
+    snprintf(dir_copy, sizeof dir_copy, "%s", dir);
+    write_text(path_in(dir_copy, "frame_0000.txt"), "500 500 10\n");
+    assert_int_equal(mkdir(path_in(dir_copy, "empty"), 0755), 0);
+    snprintf(args, sizeof args, "--quiet --movie %s %s", path_in(dir_copy, "m.mp4"),
+             path_in(dir_copy, "frame_0000.txt"));
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "PATH=%s %s %s >%s/stdout.txt 2>%s/stderr.txt",
+             path_in(dir_copy, "empty"), (const char *)*state, args, scratch, scratch);
+    int st = system(cmd);
+    assert_true(WIFEXITED(st));
+    assert_int_equal(WEXITSTATUS(st), 1);
+    const char *err = last_stderr();
+    if (!strstr(err, "ffmpeg is not on PATH") || !strstr(err, "apt-get install ffmpeg") ||
+        strchr(err, '\n') != err + strlen(err) - 1)
+        fail_msg("stderr: \"%s\"", err);
+    assert_int_equal(count_files(dir_copy), 2); /* the frame and empty/: no movie */
+}
+
+static void test_a_bad_frame_leaves_no_movie(void **state)
+{
+    SKIP_WITHOUT_FFMPEG();
+    const char *dir = fresh_dir("movie-bad");
+    char dir_copy[512], args[1400];
+    snprintf(dir_copy, sizeof dir_copy, "%s", dir);
+    for (int k = 0; k < 6; ++k) {
+        char name[32];
+        snprintf(name, sizeof name, "frame_%04d.txt", k);
+        write_text(path_in(dir_copy, name), k == 4 ? "1 2 -3\n" : "500 500 10\n");
+    }
+    snprintf(args, sizeof args, "--quiet -j 2 --size 64 --movie %s --dir %s",
+             path_in(dir_copy, "m.mp4"), dir_copy);
+    assert_int_equal(run(*state, args), 1);
+    assert_non_null(strstr(last_stderr(), "frame_0004.txt:1: radius must be positive"));
+    assert_int_equal(count_files(dir_copy), 6); /* the frames: no movie, no temporary */
+}
+
+/* ------------------------------------------------------------------ */
 /* Backends agree                                                      */
 /* ------------------------------------------------------------------ */
 
@@ -546,6 +721,20 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_directories_that_cannot_be_read_are_refused, binary),       \
         cmocka_unit_test_prestate(test_an_output_directory_that_is_a_file_is_refused, binary)
 
+#define MOVIE_TESTS(binary)                                                                        \
+    cmocka_unit_test_prestate(test_a_movie_is_h264_yuv420p_with_every_frame, binary),              \
+        cmocka_unit_test_prestate(test_an_odd_size_makes_an_even_movie, binary),                   \
+        cmocka_unit_test_prestate(test_movie_frames_keep_their_order_with_many_workers, binary),   \
+        cmocka_unit_test_prestate(test_a_movie_without_ffmpeg_names_the_package, binary),          \
+        cmocka_unit_test_prestate(test_a_bad_frame_leaves_no_movie, binary)
+
+/* The movie code is the same in every backend's binary: tested with one. */
+#ifdef RENDER_osmesa
+#define MOVIE_BINARY RENDER_osmesa
+#else
+#define MOVIE_BINARY RENDER_egl
+#endif
+
 int main(void)
 {
     const struct CMUnitTest colours[] = {
@@ -562,6 +751,8 @@ int main(void)
     const struct CMUnitTest egl[] = {BACKEND_TESTS((void *)RENDER_egl)};
     failed += cmocka_run_group_tests_name("render, egl backend", egl, make_scratch, remove_scratch);
 #endif
+    const struct CMUnitTest movie[] = {MOVIE_TESTS((void *)MOVIE_BINARY)};
+    failed += cmocka_run_group_tests_name("render --movie", movie, make_scratch, remove_scratch);
 #if defined(RENDER_osmesa) && defined(RENDER_egl)
     const struct CMUnitTest both[] = {
         cmocka_unit_test(test_osmesa_and_egl_draw_the_same_image),

@@ -57,6 +57,41 @@ static void test_get_follows_each_disk_through_the_sort(void **state)
     ds_destroy(sim);
 }
 
+/* The bulk copy is ds_get for every disk, in generation order, whatever
+ * order each broad phase keeps its arrays in (strips regroup them by strip
+ * every step, SAP sorts them by x). */
+static void test_get_all_copies_every_disk_in_generation_order(void **state)
+{
+    (void)state;
+    const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE};
+    for (size_t b = 0; b < 3; ++b) {
+        ds_sim *sim = test_create(500, 3.0, 11, all[b]);
+        ds_disk *got = malloc(500 * sizeof *got);
+        assert_non_null(got);
+        for (int round = 0; round < 3; ++round) {
+            assert_int_equal(ds_get_all(sim, got), DS_OK);
+            for (size_t i = 0; i < 500; ++i) {
+                ds_disk one = ds_get(sim, i);
+                assert_memory_equal(&got[i], &one, sizeof one);
+            }
+            ds_run(sim, 200);
+        }
+        free(got);
+        ds_destroy(sim);
+    }
+}
+
+static void test_get_all_refuses_null_arguments(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(3, 5.0, 1, DS_SAP);
+    ds_disk out[3];
+    assert_int_equal(ds_get_all(sim, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_get_all(NULL, out), DS_ERR_ARG);
+    assert_int_equal(ds_get_all(sim, out), DS_OK);
+    ds_destroy(sim);
+}
+
 static void test_set_replaces_one_disk_and_checks_bounds(void **state)
 {
     (void)state;
@@ -162,6 +197,8 @@ int main(void)
         cmocka_unit_test(test_default_params_are_the_exercise),
         cmocka_unit_test(test_time_is_steps_times_dt),
         cmocka_unit_test(test_get_follows_each_disk_through_the_sort),
+        cmocka_unit_test(test_get_all_copies_every_disk_in_generation_order),
+        cmocka_unit_test(test_get_all_refuses_null_arguments),
         cmocka_unit_test(test_set_replaces_one_disk_and_checks_bounds),
         cmocka_unit_test(test_two_simulations_do_not_interfere),
         cmocka_unit_test(test_collision_timer_and_counters_advance),

@@ -1,11 +1,14 @@
-/* render: frame files to PNG images, off-screen, no display or gnuplot.
+/* render: frame files to PNG images or one movie, off-screen, no display
+ * or gnuplot.
  *
  *   render [options] FRAME.txt...      render [options] --dir DIR
+ *   render --movie run.mp4 [options] --dir DIR
  *
  * Each worker thread owns one GL context (render_backend.h) and one set of
  * shaders and buffers (render_draw.h), made once and reused for all the
  * frames it takes from a shared counter; a frame is read with the
- * library's ds_read_frame, drawn, read back and written by render_png.c. */
+ * library's ds_read_frame, drawn, read back and written by render_png.c,
+ * or, for a movie, handed to ffmpeg by render_movie.c in frame order. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>
@@ -20,6 +23,7 @@
 #include "render_backend.h"
 #include "render_draw.h"
 #include "render_layout.h"
+#include "render_movie.h"
 #include "render_png.h"
 
 #define MAX_WORKERS 256
@@ -36,6 +40,9 @@ static const char usage[] =
     "  --box L      side of the simulation box (default 1000)\n"
     "  --vmax V     speed at the top of the colour scale (default 2.5 x rms speed)\n"
     "  -j N         frames rendered at once, 1..256 (default: number of cores)\n"
+    "  --movie FILE write one H.264 MP4 movie of the frames instead of PNGs\n"
+    "               (needs ffmpeg on PATH; Debian package ffmpeg)\n"
+    "  --fps N      movie frames per second, 1..240 (default 25, as the GIF)\n"
     "  --quiet      print nothing but errors\n"
     "  --help, --version\n";
 
@@ -44,8 +51,10 @@ typedef struct job {
     size_t count;
     rd_options draw;
     mode_t mode;
-    pthread_mutex_t lock; /* guards next, failed and stderr */
-    size_t next;
+    rm_movie *movie;      /* --movie: frames go to ffmpeg, no PNGs are written */
+    pthread_mutex_t lock; /* guards next, next_write, failed and stderr */
+    pthread_cond_t turn;  /* next_write advanced, or a worker failed */
+    size_t next, next_write;
     int failed;
 } job;
 
@@ -54,7 +63,28 @@ static void report(job *j, const char *message)
     pthread_mutex_lock(&j->lock);
     fprintf(stderr, "%s\n", message);
     j->failed = 1;
+    pthread_cond_broadcast(&j->turn);
     pthread_mutex_unlock(&j->lock);
+}
+
+/* Hands frame i to the movie once every frame before it has been: the
+ * workers render in parallel and take turns to write. 0 when written, 1
+ * when another worker failed (stop quietly), -1 with a message. */
+static int movie_put(job *j, size_t i, const unsigned char *rgb, char *msg, size_t len)
+{
+    pthread_mutex_lock(&j->lock);
+    while (!j->failed && j->next_write != i)
+        pthread_cond_wait(&j->turn, &j->lock);
+    int stop = j->failed;
+    pthread_mutex_unlock(&j->lock);
+    if (stop)
+        return 1;
+    int rc = rm_write(j->movie, rgb, msg, len);
+    pthread_mutex_lock(&j->lock);
+    ++j->next_write;
+    pthread_cond_broadcast(&j->turn);
+    pthread_mutex_unlock(&j->lock);
+    return rc;
 }
 
 /* The next frame to render, or count when done or after any failure:
@@ -75,9 +105,12 @@ static void *worker(void *arg)
     char msg[512], why[256];
     rb_context *ctx = rb_create(j->draw.size, j->draw.size, why, sizeof why);
     rd_renderer *r = ctx ? rd_create(&j->draw, why, sizeof why) : NULL;
-    if (!r) {
-        snprintf(msg, sizeof msg, "render: %s: %s", rb_name(), why);
+    unsigned char *rgb = j->movie ? malloc(rm_frame_bytes(j->movie)) : NULL;
+    if (!r || (j->movie && !rgb)) {
+        snprintf(msg, sizeof msg, "render: %s: %s", rb_name(), r ? "out of memory" : why);
         report(j, msg);
+        rd_destroy(r);
+        r = NULL;
     }
     for (size_t i; r && (i = take(j)) < j->count;) {
         ds_frame frame;
@@ -101,12 +134,20 @@ static void *worker(void *arg)
             report(j, msg);
             break;
         }
-        if (rp_write(j->outputs[i], rgba, j->draw.size, j->draw.size, j->mode, msg, sizeof msg) !=
-            0) {
+        if (j->movie) {
+            rm_convert(j->movie, rgba, rgb);
+            int put = movie_put(j, i, rgb, msg, sizeof msg);
+            if (put < 0)
+                report(j, msg);
+            if (put != 0)
+                break;
+        } else if (rp_write(j->outputs[i], rgba, j->draw.size, j->draw.size, j->mode, msg,
+                            sizeof msg) != 0) {
             report(j, msg);
             break;
         }
     }
+    free(rgb);
     rd_destroy(r);
     rb_destroy(ctx);
     return NULL;
@@ -271,19 +312,25 @@ static int render_all(job *j, size_t workers, int quiet)
     for (size_t w = 0; w < started; ++w)
         pthread_join(threads[w], NULL);
     rb_close();
+    if (j->movie && j->failed)
+        rm_abort(j->movie);
+    else if (j->movie && rm_finish(j->movie, why, sizeof why) != 0) {
+        fprintf(stderr, "render: %s\n", why);
+        return 1;
+    }
     if (j->failed)
         return 1;
     if (!quiet)
-        printf("render: %zu frame%s, %dx%d px, %s backend, %zu worker%s, %.2f s\n", j->count,
+        printf("render: %zu frame%s, %dx%d px, %s backend, %zu worker%s, %.2f s%s\n", j->count,
                j->count == 1 ? "" : "s", j->draw.size, j->draw.size, rb_name(), started + 1,
-               started ? "s" : "", ds_now() - start);
+               started ? "s" : "", ds_now() - start, j->movie ? ", one H.264 movie" : "");
     return 0;
 }
 
 int main(int argc, char **argv)
 {
-    const char *out_dir = NULL;
-    double size = 800, box = 1000, vmax = 0, jobs = 0;
+    const char *out_dir = NULL, *movie = NULL;
+    double size = 800, box = 1000, vmax = 0, jobs = 0, fps = 25;
     int quiet = 0, rc = 0;
     char **inputs = NULL;
     size_t count = 0, cap = 0;
@@ -308,6 +355,11 @@ int main(int argc, char **argv)
         } else if (!strcmp(s, "--out") && v) {
             out_dir = argv[++a];
             continue;
+        } else if (!strcmp(s, "--movie") && v) {
+            movie = argv[++a];
+            continue;
+        } else if (!strcmp(s, "--fps")) {
+            bad = parse_number(s, v, 1, 240, &fps) || fps != (int)fps;
         } else if (!strcmp(s, "--size")) {
             bad = parse_number(s, v, RL_MIN_SIZE, RL_MAX_SIZE, &size) || size != (int)size;
         } else if (!strcmp(s, "--box")) {
@@ -325,7 +377,7 @@ int main(int argc, char **argv)
             continue;
         }
         if (bad) {
-            if (size != (int)size || jobs != (int)jobs)
+            if (size != (int)size || jobs != (int)jobs || fps != (int)fps)
                 fprintf(stderr, "render: %s needs a whole number\n", s);
             rc = 2;
         }
@@ -335,6 +387,11 @@ int main(int argc, char **argv)
         goto done;
     if (count == 0) {
         fprintf(stderr, "render: no frame files given (try --help)\n");
+        rc = 2;
+        goto done;
+    }
+    if (movie && out_dir) {
+        fprintf(stderr, "render: --movie writes no PNGs: give --movie or --out, not both\n");
         rc = 2;
         goto done;
     }
@@ -358,7 +415,17 @@ int main(int argc, char **argv)
     j.mode = umask(0);
     umask(j.mode);
     j.mode = 0666 & ~j.mode;
+    if (movie) {
+        char why[512];
+        if (!(j.movie =
+                  rm_open(movie, j.draw.size, j.draw.size, (int)fps, j.mode, why, sizeof why))) {
+            fprintf(stderr, "render: %s\n", why);
+            j.failed = 1; /* reported */
+            goto done;
+        }
+    }
     pthread_mutex_init(&j.lock, NULL);
+    pthread_cond_init(&j.turn, NULL);
 
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     size_t workers = jobs > 0 ? (size_t)jobs : cores > 0 ? (size_t)cores : 1;
@@ -367,6 +434,7 @@ int main(int argc, char **argv)
     if (workers > count)
         workers = count;
     rc = render_all(&j, workers, quiet);
+    pthread_cond_destroy(&j.turn);
     pthread_mutex_destroy(&j.lock);
 done:
     if (rc == 1 && !j.failed && count && !j.outputs)

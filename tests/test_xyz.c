@@ -1,0 +1,386 @@
+/* Extended XYZ trajectories: what ds_format_xyz_frame writes reads back as
+ * the simulation (parsed here, in C, always), `disks --trajectory` holds
+ * exactly the frames it writes as text, and a third-party reader, ASE's
+ * ase.io.read, sees the same frames, positions, radii and velocities when
+ * a python3 with ASE is installed (Debian: python3-ase). Run from the top
+ * directory (make test does). */
+#include "test_util.h"
+
+#include <dirent.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#ifndef DS_TEST_DISKS
+#define DS_TEST_DISKS "disks"
+#endif
+
+/* ------------------------------------------------------------------ */
+/* A strict reader of the frames we write                              */
+/* ------------------------------------------------------------------ */
+
+typedef struct xyz_frame {
+    size_t count;
+    double time, box, height;
+    ds_frame_disk *disks; /* x, y, r, vx, vy */
+} xyz_frame;
+
+/* Reads one number followed by a space or a newline; fails the test if
+ * there is none. */
+static double number(const char **p)
+{
+    char *end;
+    double v = strtod(*p, &end);
+    if (end == *p || (*end != ' ' && *end != '\n' && *end != '"'))
+        fail_msg("expected a number at \"%.40s\"", *p);
+    *p = end + (*end == ' ' || *end == '\n');
+    return v;
+}
+
+static void expect(const char **p, const char *text)
+{
+    if (strncmp(*p, text, strlen(text)) != 0)
+        fail_msg("expected \"%s\" at \"%.60s\"", text, *p);
+    *p += strlen(text);
+}
+
+/* Parses every frame of text; returns how many (at most max). */
+static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
+{
+    const char *p = text;
+    size_t n = 0;
+    while (*p) {
+        assert_true(n < max);
+        xyz_frame *f = &frames[n++];
+        f->count = (size_t)number(&p);
+        expect(&p, "Lattice=\"");
+        f->box = number(&p);
+        expect(&p, "0 0 0 ");
+        assert_true(number(&p) == f->box); /* square */
+        expect(&p, "0 0 0 ");
+        f->height = number(&p);
+        expect(&p, "\" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3 Time=");
+        f->time = number(&p);
+        expect(&p, "pbc=\"F F F\"\n");
+        f->disks = malloc(f->count * sizeof *f->disks);
+        assert_non_null(f->disks);
+        for (size_t i = 0; i < f->count; ++i) {
+            ds_frame_disk *d = &f->disks[i];
+            expect(&p, "X ");
+            d->x = number(&p);
+            d->y = number(&p);
+            assert_true(number(&p) == 0.0); /* z */
+            d->r = number(&p);
+            d->vx = number(&p);
+            d->vy = number(&p);
+            assert_true(number(&p) == 0.0); /* vz */
+            assert_true(p[-1] == '\n');
+        }
+    }
+    return n;
+}
+
+static void free_frames(xyz_frame *frames, size_t n)
+{
+    for (size_t k = 0; k < n; ++k)
+        free(frames[k].disks);
+}
+
+/* The rest of f from where it is, NUL-terminated; closes f. */
+static char *read_all(FILE *f)
+{
+    assert_non_null(f);
+    long start = ftell(f);
+    assert_int_equal(fseek(f, 0, SEEK_END), 0);
+    long size = ftell(f) - start;
+    assert_int_equal(fseek(f, start, SEEK_SET), 0);
+    char *text = malloc((size_t)size + 1);
+    assert_non_null(text);
+    assert_int_equal(fread(text, 1, (size_t)size, f), (size_t)size);
+    text[size] = '\0';
+    fclose(f);
+    return text;
+}
+
+static char *slurp(const char *path) { return read_all(fopen(path, "rb")); }
+
+/* Six decimals are written: a value read back is within half a unit of
+ * the sixth decimal (5e-7), plus the rounding of the double itself. */
+static int within_six_decimals(double got, double want) { return fabs(got - want) <= 5e-7 + 1e-12; }
+
+/* ------------------------------------------------------------------ */
+/* The library's writer                                                */
+/* ------------------------------------------------------------------ */
+
+static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(300, 4.0, 9, DS_SAP);
+    ds_run(sim, 500); /* slots permuted by the sort: output must not be */
+    size_t cap = ds_xyz_frame_size(sim), len = 0;
+    char *buf = malloc(cap + 1);
+    assert_non_null(buf);
+    assert_int_equal(ds_format_xyz_frame(sim, buf, cap, &len), DS_OK);
+    buf[len] = '\0';
+    xyz_frame f;
+    assert_int_equal(parse_trajectory(buf, &f, 1), 1);
+    assert_int_equal(f.count, 300);
+    assert_true(f.box == 1000.0);
+    assert_true(f.height == 8.0); /* 2R: the flat layer the disks fill */
+    assert_true(within_six_decimals(f.time, 0.5));
+    ds_disk want[300];
+    assert_int_equal(ds_get_all(sim, want), DS_OK);
+    for (size_t i = 0; i < 300; ++i) {
+        assert_true(within_six_decimals(f.disks[i].x, want[i].x));
+        assert_true(within_six_decimals(f.disks[i].y, want[i].y));
+        assert_true(within_six_decimals(f.disks[i].vx, want[i].vx));
+        assert_true(within_six_decimals(f.disks[i].vy, want[i].vy));
+        assert_true(f.disks[i].r == 4.0);
+    }
+    free_frames(&f, 1);
+    free(buf);
+    ds_destroy(sim);
+}
+
+static void test_frames_written_one_after_another_make_a_trajectory(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(40, 7.5, 3, DS_SAP_STRIPS);
+    FILE *out = tmpfile();
+    assert_non_null(out);
+    ds_disk last[40];
+    for (int k = 0; k < 3; ++k) {
+        if (k > 0)
+            ds_run(sim, 250);
+        assert_int_equal(ds_write_xyz_frame(sim, out), DS_OK);
+    }
+    assert_int_equal(ds_get_all(sim, last), DS_OK);
+    rewind(out);
+    char *text = read_all(out);
+    xyz_frame f[4];
+    assert_int_equal(parse_trajectory(text, f, 4), 3);
+    for (int k = 0; k < 3; ++k) {
+        assert_int_equal(f[k].count, 40);
+        assert_true(within_six_decimals(f[k].time, 0.25 * k));
+        assert_true(f[k].disks[0].r == 7.5);
+    }
+    for (size_t i = 0; i < 40; ++i)
+        assert_true(within_six_decimals(f[2].disks[i].x, last[i].x));
+    free_frames(f, 3);
+    free(text);
+    ds_destroy(sim);
+}
+
+static void test_formatting_reports_the_bytes_needed(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(25, 5.0, 1, DS_AUTO);
+    size_t need = 0, len = 0, cap = ds_xyz_frame_size(sim);
+    assert_int_equal(ds_format_xyz_frame(sim, NULL, 0, &need), DS_ERR_ARG);
+    char *buf = malloc(cap);
+    assert_non_null(buf);
+    assert_int_equal(ds_format_xyz_frame(sim, buf, cap, &len), DS_OK);
+    assert_int_equal(need, len);
+    assert_true(len <= cap);
+    assert_int_equal(ds_format_xyz_frame(sim, buf, len - 1, &need), DS_ERR_ARG);
+    assert_int_equal(need, len);
+    free(buf);
+    ds_destroy(sim);
+}
+
+static void test_bad_arguments_and_a_full_disk_are_errors(void **state)
+{
+    (void)state;
+    ds_sim *sim = test_create(50, 5.0, 1, DS_SAP);
+    size_t len = 99;
+    char buf[8];
+    assert_int_equal(ds_format_xyz_frame(NULL, buf, sizeof buf, &len), DS_ERR_ARG);
+    assert_int_equal(len, 0);
+    assert_int_equal(ds_format_xyz_frame(sim, NULL, 10, &len), DS_ERR_ARG);
+    assert_int_equal(ds_write_xyz_frame(NULL, stdout), DS_ERR_ARG);
+    assert_int_equal(ds_write_xyz_frame(sim, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_xyz_frame_size(NULL), 0);
+    FILE *full = fopen("/dev/full", "w");
+    if (full) { /* Linux: writes fail with ENOSPC, seen at the flush */
+        assert_int_equal(ds_write_xyz_frame(sim, full), DS_ERR_IO);
+        fclose(full);
+    }
+    ds_destroy(sim);
+}
+
+/* ------------------------------------------------------------------ */
+/* disks --trajectory                                                  */
+/* ------------------------------------------------------------------ */
+
+static char workdir[64];
+
+static int make_workdir(void **state)
+{
+    (void)state;
+    snprintf(workdir, sizeof workdir, "/tmp/ds_test_xyz_XXXXXX");
+    return mkdtemp(workdir) ? 0 : -1;
+}
+
+static int remove_workdir(void **state)
+{
+    (void)state;
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", workdir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+#define RUN_FRAMES 5
+#define RUN_DISKS 60
+
+/* Runs disks once per test group: RUN_FRAMES frames with velocities in
+ * workdir/run and the same frames in workdir/run.xyz. */
+static const char *disks_trajectory(void)
+{
+    static char path[128];
+    snprintf(path, sizeof path, "%s/run.xyz", workdir);
+    if (access(path, F_OK) == 0)
+        return path;
+    char cmd[512];
+    snprintf(cmd, sizeof cmd,
+             "./%s %d 5 --frames %d --steps-per-frame 30 --velocities --quiet --out %s/run "
+             "--trajectory %s",
+             DS_TEST_DISKS, RUN_DISKS, RUN_FRAMES, workdir, path);
+    assert_int_equal(system(cmd), 0);
+    return path;
+}
+
+static void test_disks_trajectory_holds_exactly_its_frames(void **state)
+{
+    (void)state;
+    char *text = slurp(disks_trajectory());
+    xyz_frame f[RUN_FRAMES + 1];
+    assert_int_equal(parse_trajectory(text, f, RUN_FRAMES + 1), RUN_FRAMES);
+    for (int k = 0; k < RUN_FRAMES; ++k) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/run/frame_%04d.txt", workdir, k);
+        ds_frame frame;
+        assert_int_equal(ds_read_frame(path, &frame, NULL), DS_OK);
+        assert_int_equal(f[k].count, frame.count);
+        assert_true(within_six_decimals(f[k].time, k * 30 * 0.001));
+        /* The same six-decimal text in both files: the same doubles. */
+        for (size_t i = 0; i < frame.count; ++i)
+            assert_memory_equal(&f[k].disks[i], &frame.disks[i], sizeof frame.disks[i]);
+        ds_frame_free(&frame);
+    }
+    free_frames(f, RUN_FRAMES);
+    free(text);
+    /* Written through a temporary renamed at the end: none is left. */
+    DIR *d = opendir(workdir);
+    assert_non_null(d);
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        if (e->d_name[0] == '.' && strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
+            fail_msg("temporary %s left behind", e->d_name);
+    closedir(d);
+}
+
+/* ------------------------------------------------------------------ */
+/* ASE reads it                                                        */
+/* ------------------------------------------------------------------ */
+
+/* The first python3 that can import ase: Debian's own (python3-ase) before
+ * whatever python3 comes first on PATH (pyenv, a venv) and may lack it. */
+static const char *python_with_ase(void)
+{
+    static const char *const candidates[] = {"/usr/bin/python3", "python3"};
+    for (size_t k = 0; k < 2; ++k) {
+        char cmd[256];
+        snprintf(cmd, sizeof cmd, "%s -c 'import ase.io' >/dev/null 2>&1", candidates[k]);
+        if (system(cmd) == 0)
+            return candidates[k];
+    }
+    return NULL;
+}
+
+/* Prints what ase.io.read(path, index=':') found, one line per frame and
+ * per atom, every float with repr (the shortest text that reads back). */
+static const char ase_script[] =
+    "import sys, ase.io\n"
+    "frames = ase.io.read(sys.argv[1], index=':')\n"
+    "print(len(frames))\n"
+    "for a in frames:\n"
+    "    print(repr(float(a.info['Time'])), len(a), *(repr(float(v)) for v in a.cell.lengths()),\n"
+    "          ''.join('T' if p else 'F' for p in a.pbc))\n"
+    "    for s, p, r, v in zip(a.get_chemical_symbols(), a.positions, a.arrays['radius'],\n"
+    "                          a.arrays['velo']):\n"
+    "        print(s, *(repr(float(x)) for x in (p[0], p[1], p[2], r, v[0], v[1], v[2])))\n";
+
+static void test_ase_reads_the_trajectory_disks_writes(void **state)
+{
+    (void)state;
+    const char *python = python_with_ase();
+    if (!python) {
+        print_message("skipped: no python3 that can import ase (Debian: python3-ase)\n");
+        skip();
+    }
+    const char *path = disks_trajectory();
+    char *text = slurp(path);
+    xyz_frame f[RUN_FRAMES + 1];
+    assert_int_equal(parse_trajectory(text, f, RUN_FRAMES + 1), RUN_FRAMES);
+
+    char script[128], cmd[512];
+    snprintf(script, sizeof script, "%s/read_with_ase.py", workdir);
+    FILE *s = fopen(script, "w");
+    assert_non_null(s);
+    assert_int_equal(fputs(ase_script, s) >= 0, 1);
+    assert_int_equal(fclose(s), 0);
+    snprintf(cmd, sizeof cmd, "%s %s %s 2>&1", python, script, path);
+    FILE *p = popen(cmd, "r");
+    assert_non_null(p);
+    char line[512];
+    assert_non_null(fgets(line, sizeof line, p));
+    if (atoi(line) != RUN_FRAMES)
+        fail_msg("ASE read %s as \"%s\", expected %d frames", path, line, RUN_FRAMES);
+    /* ASE parses the same decimal text with a correctly rounded conversion,
+     * so every number must be the very double the C reader got. */
+    for (int k = 0; k < RUN_FRAMES; ++k) {
+        double time, lx, ly, lz;
+        size_t count;
+        char pbc[8];
+        assert_non_null(fgets(line, sizeof line, p));
+        assert_int_equal(sscanf(line, "%lf %zu %lf %lf %lf %7s", &time, &count, &lx, &ly, &lz, pbc),
+                         6);
+        assert_true(time == f[k].time);
+        assert_int_equal(count, RUN_DISKS);
+        assert_true(lx == 1000.0 && ly == 1000.0 && lz == 10.0);
+        assert_string_equal(pbc, "FFF");
+        for (size_t i = 0; i < count; ++i) {
+            char species[8];
+            double x, y, z, r, vx, vy, vz;
+            assert_non_null(fgets(line, sizeof line, p));
+            assert_int_equal(sscanf(line, "%7s %lf %lf %lf %lf %lf %lf %lf", species, &x, &y, &z,
+                                    &r, &vx, &vy, &vz),
+                             8);
+            const ds_frame_disk *d = &f[k].disks[i];
+            assert_string_equal(species, "X");
+            assert_true(x == d->x && y == d->y && z == 0.0);
+            assert_true(r == 5.0);
+            assert_true(vx == d->vx && vy == d->vy && vz == 0.0);
+        }
+    }
+    assert_null(fgets(line, sizeof line, p));
+    assert_int_equal(pclose(p), 0);
+    free_frames(f, RUN_FRAMES);
+    free(text);
+}
+
+int main(void)
+{
+    const struct CMUnitTest library[] = {
+        cmocka_unit_test(test_an_xyz_frame_reads_back_as_the_simulation),
+        cmocka_unit_test(test_frames_written_one_after_another_make_a_trajectory),
+        cmocka_unit_test(test_formatting_reports_the_bytes_needed),
+        cmocka_unit_test(test_bad_arguments_and_a_full_disk_are_errors),
+    };
+    const struct CMUnitTest command[] = {
+        cmocka_unit_test(test_disks_trajectory_holds_exactly_its_frames),
+        cmocka_unit_test(test_ase_reads_the_trajectory_disks_writes),
+    };
+    int failed = cmocka_run_group_tests_name("xyz, library", library, NULL, NULL);
+    failed += cmocka_run_group_tests_name("xyz, disks --trajectory", command, make_workdir,
+                                          remove_workdir);
+    return failed ? 1 : 0;
+}
