@@ -55,8 +55,7 @@ static double ahead(ds_rng *rng, double tau)
     return -tau * log(1.0 - ds_rng_uniform(rng, 0.0, 1.0));
 }
 
-static void run_like_a_simulation(size_t n, uint64_t operations, double far_fraction,
-                                  uint64_t seed)
+static void run_like_a_simulation(size_t n, uint64_t operations, double far_fraction, uint64_t seed)
 {
     ds_rng rng;
     ds_rng_seed(&rng, seed);

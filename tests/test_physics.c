@@ -17,15 +17,6 @@
 
 #include "sim_internal.h"
 
-static int quick_mode(void)
-{
-    const char *q = getenv("DS_TEST_QUICK");
-    return q && *q && strcmp(q, "0") != 0;
-}
-
-/* Steps of a long run, a tenth of them in quick mode. */
-static uint64_t long_run(uint64_t steps) { return quick_mode() ? steps / 10 : steps; }
-
 static double max_speed(const ds_sim *sim)
 {
     double m2 = 0.0;
@@ -40,37 +31,6 @@ static double max_speed(const ds_sim *sim)
 static double mean_square_speed(const ds_sim *sim)
 {
     return 2.0 * ds_kinetic_energy(sim) / (double)sim->n;
-}
-
-static int compare_doubles(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-/* Kolmogorov-Smirnov distance between the speeds and the Rayleigh law with
- * the same <v^2>: F(v) = 1 - exp(-v^2 / <v^2>) (2D Maxwell-Boltzmann with
- * sigma^2 = <v^2>/2 per component). */
-static double ks_distance_to_rayleigh(const ds_sim *sim)
-{
-    const size_t n = sim->n;
-    double *speed = malloc(n * sizeof *speed);
-    assert_non_null(speed);
-    for (size_t k = 0; k < n; ++k)
-        speed[k] = sqrt(sim->vx[k] * sim->vx[k] + sim->vy[k] * sim->vy[k]);
-    qsort(speed, n, sizeof *speed, compare_doubles);
-    const double v2 = mean_square_speed(sim);
-    double d = 0.0;
-    for (size_t i = 0; i < n; ++i) {
-        double f = 1.0 - exp(-speed[i] * speed[i] / v2);
-        double above = (double)(i + 1) / (double)n - f, below = f - (double)i / (double)n;
-        if (above > d)
-            d = above;
-        if (below > d)
-            d = below;
-    }
-    free(speed);
-    return d;
 }
 
 /* ------------------------------------------------------------------ */
@@ -226,13 +186,6 @@ static void test_momentum_changes_only_on_steps_with_wall_reflections(void **sta
 /* ------------------------------------------------------------------ */
 /* Relaxation to Maxwell-Boltzmann                                      */
 /* ------------------------------------------------------------------ */
-
-/* Asymptotic KS critical value at the 1% level: 1.628 / sqrt(N). It is for
- * a fully specified law; here sigma is estimated from the same speeds,
- * which makes the true distribution of D smaller (Lilliefors), so a
- * relaxed gas fails with probability below 1%. The microcanonical marginal
- * differs from Rayleigh by O(1/N) ~ 5e-4, far below the critical value. */
-static double ks_critical_1_percent(size_t n) { return 1.628 / sqrt((double)n); }
 
 static void test_speeds_start_equal_and_fail_the_rayleigh_ks_test(void **state)
 {
