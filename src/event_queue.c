@@ -20,6 +20,7 @@
 #include <stdlib.h>
 
 #include "event_queue.h"
+#include "prefetch.h"
 
 #define NONE UINT32_MAX
 
@@ -168,15 +169,6 @@ void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx)
 {
     q->soon = soon;
     q->soon_ctx = ctx;
-}
-
-static inline void fetch(const void *p)
-{
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    (void)p;
-#endif
 }
 
 /* ------------------------------------------------------------------ */
@@ -405,9 +397,9 @@ static void scan_far(ds_event_queue *q)
 static void announce(ds_event_queue *q, int64_t b)
 {
     const bucket *bk = &q->bucket[(uint64_t)b & q->mask];
-    fetch(&q->bucket[(uint64_t)(b + SOON) & q->mask]);
+    ds_prefetch(&q->bucket[(uint64_t)(b + SOON) & q->mask]);
     for (unsigned k = 0; k < bk->count; ++k) {
-        fetch(&q->slot[bk->disk[k]]);
+        ds_prefetch(&q->slot[bk->disk[k]]);
         if (q->soon)
             q->soon(q->soon_ctx, bk->disk[k]);
     }
@@ -506,7 +498,7 @@ void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
         heap_push(q, t, i, s->seq);
     } else if (b - q->current < (int64_t)q->nbuckets) {
         /* Request the bucket's line now, write the entry later. */
-        fetch(&q->bucket[(uint64_t)b & q->mask]);
+        ds_prefetch(&q->bucket[(uint64_t)b & q->mask]);
         q->pending[q->pending_tail++ % PENDING] = (pending_insert){b, i};
         ++q->windowed;
         if (b < q->pending_min)

@@ -1,0 +1,246 @@
+/* A disk's next event (event-driven integrator): the earliest of its
+ * wall turn, its next cell crossing and its collisions with the disks of
+ * the 3 x 3 cells around it. This is the integrator's hot loop: each
+ * collision predicts both disks again, each crossing and wall turn one. */
+#include <math.h>
+
+#include "event_driven.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+/* The time at which disk d (at time now) and disk p (at its own time,
+ * its centre shifted by (sx, sy) to the image in question) come within
+ * sqrt(sigma2), or +infinity. Positive b means separating: never. The
+ * root is taken in the form that does not cancel (c / (-b + sqrt(disc))
+ * rather than (-b - sqrt(disc)) / v2), and an approaching pair already
+ * at or inside contact (c <= 0) collides now.
+ *
+ * Every value is computed and the answer chosen at the end: about half
+ * the pairs separate, at random, and a branch on it mispredicted once
+ * every other pair, which cost more than the square root and the
+ * division that are now always done. With b < 0 the denominator
+ * sqrt(disc) + |b| is sqrt(disc) - b > 0; otherwise the quotient is
+ * discarded (it may then be an infinity or a NaN). On x86 the choice is
+ * written with SSE2 masks: in plain C the compiler moves the square root
+ * and the division back under a branch of its own. */
+static inline double pair_time(const ed_disk *d, const ed_disk *p, double now, double sx, double sy,
+                               double sigma2)
+{
+    const double lag = now - p->t;
+    const double rx = p->x + p->vx * lag + sx - d->x, ry = p->y + p->vy * lag + sy - d->y;
+    const double vx = p->vx - d->vx, vy = p->vy - d->vy;
+    const double b = rx * vx + ry * vy;
+    const double c = rx * rx + ry * ry - sigma2;
+    const double disc = b * b - (vx * vx + vy * vy) * c;
+#if defined(__SSE2__)
+    const __m128d zero = _mm_setzero_pd(), vb = _mm_set_sd(b), vdisc = _mm_set_sd(disc);
+    const __m128d root = _mm_sqrt_sd(zero, _mm_max_sd(vdisc, zero));
+    const __m128d den = _mm_add_sd(root, _mm_andnot_pd(_mm_set_sd(-0.0), vb));
+    const __m128d t = _mm_add_sd(_mm_set_sd(now), _mm_div_sd(_mm_max_sd(_mm_set_sd(c), zero), den));
+    const __m128d ok = _mm_and_pd(_mm_cmplt_sd(vb, zero), _mm_cmpgt_sd(vdisc, zero));
+    return _mm_cvtsd_f64(
+        _mm_or_pd(_mm_and_pd(ok, t), _mm_andnot_pd(ok, _mm_set_sd((double)INFINITY))));
+#else
+    const double t = now + (c > 0.0 ? c : 0.0) / (sqrt(disc > 0.0 ? disc : 0.0) + fabs(b));
+    return b < 0.0 && disc > 0.0 ? t : INFINITY;
+#endif
+}
+
+/* The boundary event of one axis: the edge of the disk's cell it moves
+ * towards or, in a cell at a wall, the wall line R inside that edge,
+ * whichever it reaches (one division, not one per kind). Never before now:
+ * a coordinate rounded past its edge leaves at once. */
+static inline void axis_event(double u, double v, uint32_t cell, uint32_t count, double width,
+                              double lo, double hi, int walls, uint32_t cell_kind,
+                              uint32_t wall_kind, double now, double *best, uint32_t *kind)
+{
+    const int up = v > 0.0;
+    const int at_wall = walls & (cell == (up ? count - 1 : 0));
+    const double edge = at_wall ? (up ? hi : lo) : (double)(cell + (uint32_t)up) * width;
+    const double lag = (edge - u) / (v != 0.0 ? v : 1.0);
+    const double t = v != 0.0 ? now + (lag > 0.0 ? lag : 0.0) : INFINITY;
+    if (t < *best) {
+        *best = t;
+        *kind = at_wall ? wall_kind : cell_kind;
+    }
+}
+
+void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st)
+{
+    const ds_cells *cells = &e->cells;
+    st->count = 0;
+    for (int oy = -1; oy <= 1; ++oy) {
+        int64_t r = (int64_t)row + oy;
+        double sy = 0.0;
+        if (r < 0 || r >= (int64_t)cells->ny) {
+            if (!e->periodic)
+                continue;
+            sy = r < 0 ? -e->box_y : e->box_y;
+            r = r < 0 ? r + cells->ny : r - cells->ny;
+        }
+        for (int ox = -1; ox <= 1; ++ox) {
+            int64_t c = (int64_t)column + ox;
+            double sx = 0.0;
+            if (c < 0 || c >= (int64_t)cells->nx) {
+                if (!e->periodic)
+                    continue;
+                sx = c < 0 ? -e->box_x : e->box_x;
+                c = c < 0 ? c + cells->nx : c - cells->nx;
+            }
+            st->cell[st->count] = ds_cells_index(cells, (uint32_t)c, (uint32_t)r);
+            st->sx[st->count] = sx;
+            st->sy[st->count++] = sy;
+        }
+    }
+}
+
+/* Candidates gathered from the cells before any is tested: the walk of
+ * the cells and the pair tests then each run without the other's
+ * unpredictable branches. */
+#define GATHER_CAP 64
+
+typedef struct predictor {
+    const ds_events *e;
+    const ed_disk *d;
+    uint32_t self;
+    double now;
+    double best;
+    uint32_t kind, partner_changes;
+    uint32_t count;
+    uint64_t tested;
+    uint32_t disk[GATHER_CAP];
+    uint8_t image[GATHER_CAP]; /* index into sx, sy */
+    double sx[9], sy[9];
+} predictor;
+
+/* Tests the gathered candidates. Only a collision no later than the
+ * partner's own next event is kept: if the partner changes course first,
+ * it is predicted again then and finds the pair itself. Without shifts
+ * (shifted == 0, a constant where it is inlined) every image is the disk
+ * itself. */
+static inline void test_gathered(predictor *pr, int shifted)
+{
+    const ds_events *e = pr->e;
+    const ds_eq_slot *queue_slot = e->queue_slot;
+    for (uint32_t j = 0; j < pr->count; ++j) {
+        const uint32_t k = pr->disk[j];
+        const ed_disk *p = &e->disk[k];
+        const double sx = shifted ? pr->sx[pr->image[j]] : 0.0;
+        const double sy = shifted ? pr->sy[pr->image[j]] : 0.0;
+        double t = pair_time(pr->d, p, pr->now, sx, sy, e->sigma2);
+        t = t <= queue_slot[k].time ? t : INFINITY;
+        if (t < pr->best) {
+            pr->best = t;
+            pr->kind = k;
+            pr->partner_changes = p->changes;
+        }
+    }
+    pr->tested += pr->count;
+    pr->count = 0;
+}
+
+static void test_candidates(predictor *pr) { test_gathered(pr, 1); }
+static void test_unshifted(predictor *pr) { test_gathered(pr, 0); }
+
+/* Appends the disks of `count` consecutive slots, image 0. Empty slots
+ * are written but not counted: no branch per slot. The disk itself may be
+ * among them: against itself b = 0, so its pair time is +infinity. */
+static inline void gather_slots(predictor *pr, const uint32_t *slot, int count, uint32_t empty)
+{
+    uint32_t n = pr->count;
+    for (int k = 0; k < count; k += 4) {
+        pr->disk[n] = slot[k];
+        n += slot[k] != empty;
+        pr->disk[n] = slot[k + 1];
+        n += slot[k + 1] != empty;
+        pr->disk[n] = slot[k + 2];
+        n += slot[k + 2] != empty;
+        pr->disk[n] = slot[k + 3];
+        n += slot[k + 3] != empty;
+    }
+    pr->count = n;
+}
+
+/* Appends the disks of one cell with the given image: its slots, then its
+ * overflow list (a dilute gas's large cells only). */
+static void gather_cell(predictor *pr, const ds_cells *cells, uint32_t cell, uint8_t image)
+{
+    const uint32_t *slot = ds_cells_slots(cells, cell);
+    if (pr->count + DS_CELL_SLOTS > GATHER_CAP)
+        test_candidates(pr);
+    const uint32_t from = pr->count;
+    gather_slots(pr, slot, DS_CELL_SLOTS, cells->empty);
+    for (uint32_t j = from; j < pr->count; ++j)
+        pr->image[j] = image;
+    if (slot[DS_CELL_SLOTS - 1] == cells->empty)
+        return;
+    for (uint32_t k = ds_cells_overflow(cells, cell); k != cells->empty; k = cells->next[k]) {
+        if (pr->count == GATHER_CAP)
+            test_candidates(pr);
+        pr->image[pr->count] = image;
+        pr->disk[pr->count++] = k;
+    }
+}
+
+double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
+{
+    ed_disk *const d = &e->disk[i];
+    const ds_cells *cells = &e->cells;
+    const uint32_t empty = cells->empty;
+    const int walls = !e->periodic;
+    predictor pr;
+    pr.e = e;
+    pr.d = d;
+    pr.self = i;
+    pr.now = d->t;
+    pr.best = INFINITY;
+    pr.kind = EV_NONE;
+    pr.partner_changes = 0;
+    pr.count = 0;
+    pr.tested = 0;
+    axis_event(d->x, d->vx, d->column, cells->nx, cells->wx, e->lo_x, e->hi_x, walls, EV_CELL_X,
+               EV_WALL_X, pr.now, &pr.best, &pr.kind);
+    axis_event(d->y, d->vy, d->row, cells->ny, cells->wy, e->lo_y, e->hi_y, walls, EV_CELL_Y,
+               EV_WALL_Y, pr.now, &pr.best, &pr.kind);
+
+    if (d->column - 1 < cells->nx - 2 && d->row - 1 < cells->ny - 2) {
+        /* Away from the edges of the grid (nearly every disk of a large
+         * system): three rows of three cells, twelve consecutive slots
+         * each, no shifts, no wrap; the disk itself is among them once. */
+        uint32_t cell = ds_cells_index(cells, d->column - 1, d->row - 1);
+        for (int r = 0; r < 3; ++r, cell += cells->nx) {
+            const uint32_t *slot = ds_cells_slots(cells, cell);
+            if (pr.count + 3 * DS_CELL_SLOTS > GATHER_CAP)
+                test_unshifted(&pr);
+            gather_slots(&pr, slot, 3 * DS_CELL_SLOTS, empty);
+            for (int c = 0; c < 3; ++c)
+                if (slot[c * DS_CELL_SLOTS + DS_CELL_SLOTS - 1] != empty)
+                    for (uint32_t k = ds_cells_overflow(cells, cell + (uint32_t)c); k != empty;
+                         k = cells->next[k]) {
+                        if (pr.count == GATHER_CAP)
+                            test_unshifted(&pr);
+                        pr.disk[pr.count++] = k;
+                    }
+        }
+        test_unshifted(&pr);
+        --pr.tested;
+    } else {
+        ds_ed_stencil_cells st;
+        ds_ed_stencil(e, d->column, d->row, &st);
+        for (uint32_t c = 0; c < st.count; ++c) {
+            pr.sx[c] = st.sx[c];
+            pr.sy[c] = st.sy[c];
+            gather_cell(&pr, cells, st.cell[c], (uint8_t)c);
+        }
+        test_candidates(&pr);
+        /* The disk itself, once per image of its own cell. */
+        for (uint32_t c = 0; c < st.count; ++c)
+            pr.tested -= st.cell[c] == ds_cells_index(cells, d->column, d->row);
+    }
+    sim->pairs_tested += pr.tested;
+    d->partner = pr.kind;
+    d->partner_changes = pr.partner_changes;
+    return pr.best;
+}
