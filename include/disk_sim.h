@@ -32,7 +32,7 @@ typedef enum ds_status {
     DS_OK = 0,
     DS_ERR_ARG,       /* an argument is out of range or NULL */
     DS_ERR_NOMEM,     /* an allocation failed or would not fit in memory */
-    DS_ERR_PLACEMENT, /* random sequential placement cannot reach the packing */
+    DS_ERR_PLACEMENT, /* the disks cannot be placed (see DS_RANDOM, DS_LATTICE) */
     DS_ERR_IO,        /* a read or write failed */
     DS_ERR_FORMAT,    /* a frame file is malformed (see ds_frame_error) */
     DS_ERR_OVERLAP    /* ds_set would make two disks overlap (event-driven integrator) */
@@ -108,7 +108,14 @@ typedef enum ds_boundary {
 /* Where the disks start. */
 typedef enum ds_placement {
     DS_RANDOM = 0, /* random sequential: the seed's, up to area fraction 0.54 */
-    DS_LATTICE     /* triangular lattice, up to close packing */
+    /* A triangular lattice of m rows of c sites (c m >= n, empty sites
+     * spread evenly), the (c, m) whose closest sites are farthest apart;
+     * it fits without strain, up to close packing (area fraction
+     * pi / (2 sqrt 3) = 0.9069), in a periodic box of aspect
+     * box_y / box = sqrt(3) c / (2 m). ds_check_params refuses
+     * (DS_ERR_PLACEMENT) a request whose best lattice would overlap. In a
+     * periodic box the total momentum is made zero. */
+    DS_LATTICE
 } ds_placement;
 
 /* How candidate pairs are found. All give exactly the same pairs. */
@@ -153,7 +160,7 @@ ds_status ds_check_params(const ds_params *params, unsigned *warnings);
  * request before trying it. */
 ds_status ds_memory_needed(const ds_params *params, size_t *bytes);
 
-/* Placement is random sequential: disk i is drawn uniformly and redrawn
+/* Random placement (DS_RANDOM) is sequential: disk i is drawn uniformly and redrawn
  * until it overlaps none of disks 0..i-1. ds_check_params (so ds_create)
  * refuses with DS_ERR_PLACEMENT, before trying, only:
  *  - more disks than can fit at all: n > (2/sqrt 3) s^2 + 2 s + 1 with

@@ -30,6 +30,7 @@ typedef struct options {
     int quiet, velocities;
     ds_broadphase broadphase;
     ds_integrator integrator;
+    ds_placement placement;
 } options;
 
 static const char *const usage_text =
@@ -45,6 +46,7 @@ static const char *const usage_text =
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
     "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
+    "  --lattice            start on a triangular lattice instead of at random\n"
     "  --integrator I       step (the fixed time step, default) or event (exact\n"
     "                       event-driven dynamics)\n"
     "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
@@ -179,6 +181,10 @@ static options parse_args(int argc, char **argv)
             o.velocities = 1;
             continue;
         }
+        if (strcmp(a, "--lattice") == 0) {
+            o.placement = DS_LATTICE;
+            continue;
+        }
         if (a[0] == '-' && a[1] == '-') {
             /* --name VALUE or --name=VALUE */
             const char *eq = strchr(a, '=');
@@ -269,6 +275,11 @@ static void check_request(const options *o, const ds_params *p)
     /* The two refusals of ds_check_params (see DS_MANY_DISKS): many disks
      * beyond what random placement reaches, or more than can fit at all. */
     const double fraction = (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6;
+    if (st == DS_ERR_PLACEMENT && o->placement == DS_LATTICE)
+        die(EXIT_RUN,
+            "N = %zu disks of R = %g cover %.3f of the box; no triangular lattice of them "
+            "fits without overlap (close packing is 0.9069)",
+            o->n, o->radius, fraction);
     if (st == DS_ERR_PLACEMENT && o->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)
         die(EXIT_RUN,
             "N = %zu disks of R = %g cover %.3f of the box; random placement of more than %d "
@@ -571,6 +582,7 @@ int main(int argc, char **argv)
     p.seed = o.seed;
     p.broadphase = o.broadphase;
     p.integrator = o.integrator;
+    p.placement = o.placement;
     check_request(&o, &p);
     char stats_dir[4096], trajectory_dir[4096];
     const char *stats_base =

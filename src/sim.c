@@ -83,8 +83,10 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
     if ((unsigned)p->integrator > (unsigned)DS_EVENT_DRIVEN ||
         !broadphase_fits(p->broadphase, p->integrator))
         return DS_ERR_ARG;
-    /* Not yet: a periodic box, a lattice start, a rectangle. */
-    if (p->boundary != DS_WALLS || p->placement != DS_RANDOM || r.box_y != r.box)
+    /* Not yet: a periodic box, a rectangle. */
+    if (p->boundary != DS_WALLS || r.box_y != r.box)
+        return DS_ERR_ARG;
+    if ((unsigned)p->placement > (unsigned)DS_LATTICE)
         return DS_ERR_ARG;
     /* Ids are 32-bit, the event calendar's 30-bit; beyond that no machine
      * this runs on has the memory. */
@@ -92,9 +94,13 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
         (p->integrator == DS_EVENT_DRIVEN && p->n >= ((size_t)1 << 30)))
         return DS_ERR_NOMEM;
     double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box);
-    if (disks_cannot_fit(p->n, p->radius, r.box) ||
-        (p->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION))
+    if (p->placement == DS_LATTICE) {
+        if (!ds_lattice_fits(p->n, p->radius, r.box, r.box_y, p->boundary == DS_PERIODIC))
+            return DS_ERR_PLACEMENT;
+    } else if (disks_cannot_fit(p->n, p->radius, r.box) ||
+               (p->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)) {
         return DS_ERR_PLACEMENT;
+    }
     if (warnings && p->integrator == DS_TIME_STEP && 2.0 * 3.0 * r.speed * r.dt > 4.0 * p->radius)
         *warnings |= DS_WARN_TUNNELING;
     return DS_OK;
@@ -172,7 +178,8 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
         ds_destroy(sim);
         return DS_ERR_NOMEM;
     }
-    st = ds_place_disks(sim, params->seed);
+    st = params->placement == DS_LATTICE ? ds_place_lattice(sim, params->seed)
+                                         : ds_place_disks(sim, params->seed);
     if (st != DS_OK) {
         ds_destroy(sim);
         return st;
@@ -247,10 +254,7 @@ double ds_dt(const ds_sim *sim) { return sim ? sim->dt : 0.0; }
 double ds_time(const ds_sim *sim) { return sim ? (double)sim->steps * sim->dt : 0.0; }
 uint64_t ds_steps(const ds_sim *sim) { return sim ? sim->steps : 0; }
 ds_broadphase ds_broadphase_used(const ds_sim *sim) { return sim ? sim->broadphase : DS_SAP; }
-ds_integrator ds_integrator_used(const ds_sim *sim)
-{
-    return sim ? sim->integrator : DS_TIME_STEP;
-}
+ds_integrator ds_integrator_used(const ds_sim *sim) { return sim ? sim->integrator : DS_TIME_STEP; }
 
 const char *ds_integrator_name(ds_integrator integrator)
 {

@@ -96,8 +96,12 @@ size_t ds_ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broad
 void ds_resolve_pair(ds_sim *sim, size_t a, size_t b, void *ctx);
 void ds_move_and_reflect(ds_sim *sim);
 
-/* Placement (placement.c): fills x, y, vx, vy in generation order. */
+/* Placement: fills x, y, vx, vy in generation order. Random sequential
+ * (placement.c) or a triangular lattice (placement_lattice.c), which
+ * fits when its closest sites are at least 2R apart. */
 ds_status ds_place_disks(ds_sim *sim, uint64_t seed);
+ds_status ds_place_lattice(ds_sim *sim, uint64_t seed);
+int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int periodic);
 
 void ds_rebuild_slots(ds_sim *sim);
 
