@@ -122,9 +122,10 @@ clean:
 # `make bench` prints the performance table of the README (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
-$(OUT)tools/bench: tools/bench.c $(LIB) include/disk_sim.h
+$(OUT)tools/bench: tools/bench.c tools/bench_events.c tools/bench.h $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/bench.c tools/bench_events.c \
+	    $(LIB) $(LDLIBS)
 
 bench: $(OUT)tools/bench
 	./$(OUT)tools/bench

@@ -2,8 +2,9 @@
  * output cost. Uses the public API only; prints a table and asserts
  * nothing (timings depend on the machine and its load).
  *
- *   tools/bench            every case (under a minute on 2 cores)
+ *   tools/bench            every case (a few minutes on 2 cores)
  *   tools/bench scale N    one scaling case, e.g. under /usr/bin/time -v
+ *   tools/bench events N   one event-driven case (area fraction 0.5), likewise
  *
  * Ratios are between figures measured in the same run, so they are less
  * sensitive to the machine than the absolute times. */
@@ -16,6 +17,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "bench.h"
 #include "disk_sim.h"
 
 #define AREA_FRACTION 0.1
@@ -68,21 +70,13 @@ static int run_case(size_t n, double radius, ds_broadphase bp, unsigned long ste
     return 1;
 }
 
-/* Every section runs in ROUNDS rounds, each running every case of the
- * section once (same seed every time). A shared machine's load drifts:
- * cases of one round see about the same load, so a ratio between two cases
- * is taken within each round, and the table shows medians over rounds
- * (of each case's time, and of each ratio). */
-#define ROUNDS 5
-
 static int compare_doubles(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
 }
 
-/* The median of v[0..count), count odd; v is left sorted. */
-static double median(double *v, int count)
+double median(double *v, int count)
 {
     qsort(v, (size_t)count, sizeof *v, compare_doubles);
     return v[count / 2];
@@ -115,8 +109,7 @@ static int run_rounds(const bench_case *cases, int count, double ns[][ROUNDS], r
     return 1;
 }
 
-/* The median over rounds of a[k] / b[k]. */
-static double median_ratio(const double *a, const double *b)
+double median_ratio(const double *a, const double *b)
 {
     double r[ROUNDS];
     for (int k = 0; k < ROUNDS; ++k)
@@ -250,7 +243,7 @@ static void print_machine(void)
     printf("online cpus: %ld; disksim %s\n", cores, ds_version());
 }
 
-static long peak_rss_kb(void)
+long peak_rss_kb(void)
 {
     struct rusage u;
     return getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_maxrss : -1; /* KB on Linux */
@@ -282,8 +275,10 @@ int main(int argc, char **argv)
                1e9 * r.create_seconds / (double)n, peak_rss_kb());
         return 0;
     }
+    if (argc == 3 && strcmp(argv[1], "events") == 0)
+        return bench_events_one(strtoul(argv[2], NULL, 10)) ? 0 : 1;
     if (argc != 1) {
-        fprintf(stderr, "usage: bench [scale N]\n");
+        fprintf(stderr, "usage: bench [scale N | events N]\n");
         return 2;
     }
     double started = ds_now();
@@ -410,7 +405,10 @@ int main(int argc, char **argv)
                w == 0 ? "the current directory" : where[w], median(files_s[w], ROUNDS),
                all_ratio[w]);
 
-    printf("\npeak RSS of this process %ld KB (the N = 10^6 case); bench took %.0f s\n",
+    if (!bench_events())
+        return 1;
+
+    printf("\npeak RSS of this process %ld KB (the N = 10^6 cases); bench took %.0f s\n",
            peak_rss_kb(), ds_now() - started);
     return 0;
 }

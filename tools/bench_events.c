@@ -1,0 +1,157 @@
+/* Section 5 of tools/bench: the event-driven integrator. Public API only.
+ *
+ * 5a. Disk-disk collisions per second at area fraction 0.5 with walls, for
+ *     N = 10^3 to 10^6: each system is created and relaxed for about one
+ *     collision per disk, then timed in every round (ds_collision_seconds:
+ *     predicting and processing events) over about 10^6 collisions.
+ * 5b. What exactness costs: one simulated time unit event-driven against
+ *     the time step at the dt whose pressure bias is 0.1%, for N = 4000 at
+ *     area fraction 0.3, the system of the Z(dt) test. The bias of the
+ *     time step is measured here, from the collision virial at dt = 0.002
+ *     and 0.001 against the event-driven value (it is linear in dt). */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "bench.h"
+#include "disk_sim.h"
+
+#define PI 3.14159265358979323846
+
+static double radius_at(size_t n, double fraction)
+{
+    return sqrt(fraction * 1000.0 * 1000.0 / ((double)n * PI));
+}
+
+static ds_sim *create(size_t n, double fraction, ds_integrator integrator, double dt)
+{
+    ds_params p = ds_default_params(n, radius_at(n, fraction));
+    p.integrator = integrator;
+    p.dt = dt;
+    ds_sim *sim = NULL;
+    ds_status st = ds_create(&p, &sim);
+    if (st != DS_OK)
+        fprintf(stderr, "bench: ds_create(N = %zu): %s\n", n, ds_status_str(st));
+    return sim;
+}
+
+/* At area fraction 0.5 a disk collides ~0.62 sqrt(N) times per time unit
+ * (box 1000, speed 100): N / 2 of those per unit in all. */
+static double collisions_per_step(size_t n) { return 3.1e-4 * pow((double)n, 1.5); }
+
+static unsigned long at_least(double steps, unsigned long least)
+{
+    return steps > (double)least ? (unsigned long)steps : least;
+}
+
+/* A system at area fraction 0.5 relaxed for about one collision per disk;
+ * NULL on failure. *created gets the seconds of ds_create: random
+ * placement this close to its jamming limit (0.547) takes seconds at
+ * 10^6 disks, so each system is created once and timed in every round. */
+static ds_sim *relaxed(size_t n, double *created)
+{
+    const double t0 = ds_now();
+    ds_sim *sim = create(n, 0.5, DS_EVENT_DRIVEN, 0.0);
+    *created = ds_now() - t0;
+    if (sim)
+        ds_run(sim, at_least(0.5 * (double)n / collisions_per_step(n), 2));
+    return sim;
+}
+
+/* ns per collision over about 10^6 more collisions. */
+static double ns_per_collision(ds_sim *sim)
+{
+    const size_t n = ds_count(sim);
+    const uint64_t c0 = ds_collision_count(sim);
+    const double s0 = ds_collision_seconds(sim);
+    ds_run(sim, at_least(1e6 / collisions_per_step(n), 4));
+    return 1e9 * (ds_collision_seconds(sim) - s0) / (double)(ds_collision_count(sim) - c0);
+}
+
+int bench_events_one(unsigned long n)
+{
+    double created;
+    ds_sim *sim = n >= 2 ? relaxed(n, &created) : NULL;
+    if (!sim)
+        return 0;
+    const double ns = ns_per_collision(sim);
+    ds_destroy(sim);
+    printf("N = %lu, area fraction 0.5, event-driven: %.0f ns per collision, %.3g "
+           "collisions/s; create %.2f s; peak RSS %ld KB\n",
+           n, ns, 1e9 / ns, created, peak_rss_kb());
+    return 1;
+}
+
+/* Z = P A / E from the collision virial (A = (box - 2R)^2) over `units`
+ * time units after 2 of relaxation, and the wall-clock seconds of ds_run
+ * per time unit. */
+static int virial_z(ds_integrator integrator, double dt, int units, double *z, double *seconds)
+{
+    const size_t n = 4000;
+    ds_sim *sim = create(n, 0.3, integrator, dt);
+    if (!sim)
+        return 0;
+    const unsigned long per_unit = (unsigned long)llround(1.0 / dt);
+    ds_run(sim, 2 * per_unit);
+    ds_reset_observables(sim);
+    const double t0 = ds_now();
+    ds_run(sim, (unsigned long)units * per_unit);
+    *seconds = (ds_now() - t0) / units;
+    const double span = 1000.0 - 2.0 * ds_radius(sim);
+    *z = ds_virial_pressure(sim) * span * span / ds_kinetic_energy(sim);
+    ds_destroy(sim);
+    return 1;
+}
+
+int bench_events(void)
+{
+    static const size_t sizes[] = {1000, 10000, 100000, 1000000};
+    enum { SIZES = sizeof sizes / sizeof sizes[0] };
+    double ns[SIZES][ROUNDS], created[SIZES];
+    ds_sim *sims[SIZES] = {NULL};
+    int ok = 1;
+    for (int c = 0; ok && c < SIZES; ++c)
+        ok = (sims[c] = relaxed(sizes[c], &created[c])) != NULL;
+    for (int k = 0; ok && k < ROUNDS; ++k)
+        for (int c = 0; c < SIZES; ++c)
+            ns[c][k] = ns_per_collision(sims[c]);
+    for (int c = 0; c < SIZES; ++c)
+        ds_destroy(sims[c]);
+    if (!ok)
+        return 0;
+    printf("\n5. Event-driven integrator, area fraction 0.5, walls: ~10^6 collisions per case\n"
+           "   after ~1 per disk of relaxation; ns per collision from ds_collision_seconds\n");
+    /* median() sorts its input: the ratio first, while the rounds pair up. */
+    const double scaling = median_ratio(ns[3], ns[0]);
+    printf("%8s %8s %14s %14s %10s\n", "N", "R", "ns/collision", "collisions/s", "create s");
+    double m[SIZES];
+    for (int c = 0; c < SIZES; ++c) {
+        m[c] = median(ns[c], ROUNDS);
+        printf("%8zu %8.4f %14.0f %14.3g %10.2f\n", sizes[c], radius_at(sizes[c], 0.5), m[c],
+               1e9 / m[c], created[c]);
+    }
+    printf("   collisions/s at N = 10^5: %.3g (target >= 2e6)\n", 1e9 / m[2]);
+    printf("   ns/collision, N = 10^6 / N = 10^3: %.2f (target <= 1.5)\n", scaling);
+    fflush(stdout);
+
+    double z_exact, s_exact, z2, s2, z1, s1;
+    if (!virial_z(DS_EVENT_DRIVEN, 0.001, 10, &z_exact, &s_exact) ||
+        !virial_z(DS_TIME_STEP, 0.002, 10, &z2, &s2) ||
+        !virial_z(DS_TIME_STEP, 0.001, 10, &z1, &s1))
+        return 0;
+    /* The bias is a dt (fitted through the exact value, weighting the two
+     * points equally); 0.1% of Z needs dt = 0.001 Z / |a|, and costs the
+     * time step's seconds per step at dt = 0.001 times 1 / dt steps. */
+    const double slope = 0.5 * ((z2 - z_exact) / 0.002 + (z1 - z_exact) / 0.001);
+    const double dt_needed = 1e-3 * z_exact / fabs(slope);
+    const double step_cost = s1 * 1e-3 / dt_needed;
+    printf("\n   What exactness costs (N = 4000, area fraction 0.3, walls; Z from the virial):\n");
+    printf("   event-driven Z = %.4f, %.3f s per time unit\n", z_exact, s_exact);
+    printf("   time step: Z = %.4f at dt = 0.002, %.4f at dt = 0.001: bias %.1f dt\n", z2, z1,
+           slope);
+    printf("   a 0.1%% bias needs dt = %.2g: %.3f s per time unit, %.0f times the event-driven "
+           "cost\n",
+           dt_needed, step_cost, step_cost / s_exact);
+    return 1;
+}
