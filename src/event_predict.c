@@ -110,36 +110,94 @@ typedef struct predictor {
     uint32_t kind, partner_changes;
     uint32_t count;
     uint64_t tested;
-    uint32_t disk[GATHER_CAP];
-    uint8_t image[GATHER_CAP]; /* index into sx, sy */
+    uint32_t disk[GATHER_CAP + 1]; /* + 1: room to pad to an even count */
+    uint8_t image[GATHER_CAP + 1]; /* index into sx, sy */
     double sx[9], sy[9];
 } predictor;
 
-/* Tests the gathered candidates. Only a collision no later than the
- * partner's own next event is kept: if the partner changes course first,
- * it is predicted again then and finds the pair itself. Without shifts
- * (shifted == 0, a constant where it is inlined) every image is the disk
- * itself. */
+/* Keeps candidate k (time t) if it beats the best so far. Only a
+ * collision no later than the partner's own next event is kept: if the
+ * partner changes course first, it is predicted again then and finds the
+ * pair itself. */
+static inline void keep_if_earlier(predictor *pr, uint32_t k, double t)
+{
+    if (t < pr->best && t <= pr->e->queue_slot[k].time) {
+        pr->best = t;
+        pr->kind = k;
+        pr->partner_changes = pr->e->disk[k].changes;
+    }
+}
+
+#if defined(__SSE2__)
+/* Two candidates per iteration, lane by lane the same arithmetic as
+ * pair_time (so the same times to the bit): a disk's fields are gathered
+ * into the two lanes with one load each. A lane that beats the best so far
+ * is rare (a few per prediction), and then handled one lane at a time. */
+static inline __m128d load_pair(const double *a, const double *b)
+{
+    return _mm_loadh_pd(_mm_load_sd(a), b);
+}
+
 static inline void test_gathered(predictor *pr, int shifted)
 {
     const ds_events *e = pr->e;
-    const ds_eq_slot *queue_slot = e->queue_slot;
-    for (uint32_t j = 0; j < pr->count; ++j) {
-        const uint32_t k = pr->disk[j];
-        const ed_disk *p = &e->disk[k];
-        const double sx = shifted ? pr->sx[pr->image[j]] : 0.0;
-        const double sy = shifted ? pr->sy[pr->image[j]] : 0.0;
-        double t = pair_time(pr->d, p, pr->now, sx, sy, e->sigma2);
-        t = t <= queue_slot[k].time ? t : INFINITY;
-        if (t < pr->best) {
-            pr->best = t;
-            pr->kind = k;
-            pr->partner_changes = p->changes;
+    const ed_disk *d = pr->d;
+    if (pr->count & 1) { /* pad with the disk itself: b = 0, never */
+        pr->disk[pr->count] = pr->self;
+        pr->image[pr->count] = 0;
+    }
+    const __m128d dx = _mm_set1_pd(d->x), dy = _mm_set1_pd(d->y);
+    const __m128d dvx = _mm_set1_pd(d->vx), dvy = _mm_set1_pd(d->vy);
+    const __m128d now = _mm_set1_pd(pr->now), sigma2 = _mm_set1_pd(e->sigma2);
+    const __m128d zero = _mm_setzero_pd(), sign = _mm_set1_pd(-0.0);
+    const __m128d never = _mm_set1_pd((double)INFINITY);
+    for (uint32_t j = 0; j < pr->count; j += 2) {
+        const uint32_t k0 = pr->disk[j], k1 = pr->disk[j + 1];
+        const ed_disk *p0 = &e->disk[k0], *p1 = &e->disk[k1];
+        const __m128d pvx = load_pair(&p0->vx, &p1->vx), pvy = load_pair(&p0->vy, &p1->vy);
+        const __m128d lag = _mm_sub_pd(now, load_pair(&p0->t, &p1->t));
+        __m128d rx = _mm_add_pd(load_pair(&p0->x, &p1->x), _mm_mul_pd(pvx, lag));
+        __m128d ry = _mm_add_pd(load_pair(&p0->y, &p1->y), _mm_mul_pd(pvy, lag));
+        if (shifted) {
+            rx = _mm_add_pd(rx, load_pair(&pr->sx[pr->image[j]], &pr->sx[pr->image[j + 1]]));
+            ry = _mm_add_pd(ry, load_pair(&pr->sy[pr->image[j]], &pr->sy[pr->image[j + 1]]));
+        } else {
+            rx = _mm_add_pd(rx, zero);
+            ry = _mm_add_pd(ry, zero);
         }
+        rx = _mm_sub_pd(rx, dx);
+        ry = _mm_sub_pd(ry, dy);
+        const __m128d vx = _mm_sub_pd(pvx, dvx), vy = _mm_sub_pd(pvy, dvy);
+        const __m128d b = _mm_add_pd(_mm_mul_pd(rx, vx), _mm_mul_pd(ry, vy));
+        const __m128d c = _mm_sub_pd(_mm_add_pd(_mm_mul_pd(rx, rx), _mm_mul_pd(ry, ry)), sigma2);
+        const __m128d disc = _mm_sub_pd(
+            _mm_mul_pd(b, b), _mm_mul_pd(_mm_add_pd(_mm_mul_pd(vx, vx), _mm_mul_pd(vy, vy)), c));
+        const __m128d den = _mm_add_pd(_mm_sqrt_pd(_mm_max_pd(disc, zero)), _mm_andnot_pd(sign, b));
+        const __m128d t = _mm_add_pd(now, _mm_div_pd(_mm_max_pd(c, zero), den));
+        const __m128d ok = _mm_and_pd(_mm_cmplt_pd(b, zero), _mm_cmpgt_pd(disc, zero));
+        const __m128d time = _mm_or_pd(_mm_and_pd(ok, t), _mm_andnot_pd(ok, never));
+        const int earlier = _mm_movemask_pd(_mm_cmplt_pd(time, _mm_set1_pd(pr->best)));
+        if (earlier & 1)
+            keep_if_earlier(pr, k0, _mm_cvtsd_f64(time));
+        if (earlier & 2)
+            keep_if_earlier(pr, k1, _mm_cvtsd_f64(_mm_unpackhi_pd(time, time)));
     }
     pr->tested += pr->count;
     pr->count = 0;
 }
+#else
+static inline void test_gathered(predictor *pr, int shifted)
+{
+    for (uint32_t j = 0; j < pr->count; ++j) {
+        const uint32_t k = pr->disk[j];
+        const double sx = shifted ? pr->sx[pr->image[j]] : 0.0;
+        const double sy = shifted ? pr->sy[pr->image[j]] : 0.0;
+        keep_if_earlier(pr, k, pair_time(pr->d, &pr->e->disk[k], pr->now, sx, sy, pr->e->sigma2));
+    }
+    pr->tested += pr->count;
+    pr->count = 0;
+}
+#endif
 
 static void test_candidates(predictor *pr) { test_gathered(pr, 1); }
 static void test_unshifted(predictor *pr) { test_gathered(pr, 0); }
