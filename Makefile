@@ -130,9 +130,16 @@ $(OUT)tools/bench: tools/bench.c tools/bench_events.c tools/bench.h $(LIB) inclu
 bench: $(OUT)tools/bench
 	./$(OUT)tools/bench
 
+# tools/pressure: Z with block-average errors for one system (public API
+# only), run by tools/pressure_vs_dt.sh and tools/eos.sh. Built by `make`.
+all: $(OUT)tools/pressure
+$(OUT)tools/pressure: tools/pressure.c $(LIB) include/disk_sim.h
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 clean: clean-bench
 clean-bench:
-	rm -f tools/bench
+	rm -f tools/bench tools/pressure
 
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,

@@ -369,7 +369,7 @@ ds_status ds_ed_create(ds_sim *sim)
     e->fetching =
         ds_ed_bytes(n, sim->radius, e->box_x, e->box_y, sim->broadphase) > FETCH_AHEAD_BYTES;
     if (e->fetching)
-        ds_eq_on_soon(e->queue, ds_ed_on_soon, e);
+        ds_eq_on_soon(e->queue, ds_ed_on_soon, e, FETCH_LOOKAHEAD);
     return DS_OK;
 }
 

@@ -25,6 +25,9 @@
  * the size of state from which that pays (see "Fetching ahead"). */
 #define AHEAD_MASK 63u
 #define FETCH_AHEAD_BYTES (8u << 20)
+/* Times the calendar keeps sorted ahead while fetching: the disks whose
+ * buckets it has read are a few events ahead of their turn. */
+#define FETCH_LOOKAHEAD 16
 
 /* One disk: everything an event reads or writes about it, in one 64-byte
  * cache line. Events visit disks in no spatial order, so a disk's fields

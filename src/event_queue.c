@@ -12,10 +12,11 @@
  *   reach the top of the heap (the count has moved on).
  * - A bucket is one cache line of disk numbers (a rare full bucket spills
  *   into a pool), so draining one reads one line.
- * - Insertions are buffered: each one's bucket line is requested at once
- *   and written some insertions later, when it has arrived.
- * - Buckets are read two ahead of their turn: the slots of their disks are
- *   requested, and the integrator is told (ds_eq_on_soon). */
+ * - For a calendar larger than the caches (ds_eq_on_soon): insertions are
+ *   buffered, each one's bucket line requested at once and written some
+ *   insertions later, when it has arrived; and buckets are read two ahead
+ *   of their turn, their disks' slots requested and the integrator told.
+ *   In cache, both would be work for nothing. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -24,8 +25,7 @@
 
 #define NONE UINT32_MAX
 
-/* Scheduled times per bucket near the front of the calendar. The heap
- * then takes a few buckets to hold DS_EQ_LOOKAHEAD times. */
+/* Scheduled times per bucket near the front of the calendar. */
 #define EVENTS_PER_BUCKET 4.0
 #define BUCKET_CAP 14
 /* Buffered insertions: each is written PENDING_LAG insertions after its
@@ -89,6 +89,7 @@ struct ds_event_queue {
     int64_t pending_min; /* earliest bucket among pending (or FAR_BUCKET) */
     ds_eq_soon_fn soon;
     void *soon_ctx;
+    size_t lookahead; /* times kept sorted ahead (ds_eq_on_soon) */
 };
 
 static size_t bucket_count(size_t n)
@@ -146,6 +147,7 @@ ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind)
         q->slot[i].where = 0;
     }
     q->inv_width = 1.0;
+    q->lookahead = 1;
     *out = q;
     return DS_OK;
 }
@@ -165,10 +167,11 @@ void ds_eq_destroy(ds_event_queue *q)
 ds_eq_kind ds_eq_kind_of(const ds_event_queue *q) { return q->kind; }
 const ds_eq_slot *ds_eq_slots(const ds_event_queue *q) { return q->slot; }
 
-void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx)
+void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx, unsigned lookahead)
 {
     q->soon = soon;
     q->soon_ctx = ctx;
+    q->lookahead = lookahead < 1 ? 1 : lookahead > 64 ? 64 : lookahead;
 }
 
 /* ------------------------------------------------------------------ */
@@ -470,7 +473,8 @@ static void advance(ds_event_queue *q)
         flush_pending(q);
     if (q->current >= q->next_scan)
         scan_far(q);
-    announce(q, q->current + SOON);
+    if (q->soon)
+        announce(q, q->current + SOON);
     drain(q, q->current);
 }
 
@@ -496,6 +500,8 @@ void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
     const int64_t b = bucket_of(q, t);
     if (b <= q->current) {
         heap_push(q, t, i, s->seq);
+    } else if (b - q->current < (int64_t)q->nbuckets && !q->soon) {
+        bucket_add(q, b, i); /* a calendar in cache: at once */
     } else if (b - q->current < (int64_t)q->nbuckets) {
         /* Request the bucket's line now, write the entry later. */
         ds_prefetch(&q->bucket[(uint64_t)b & q->mask]);
@@ -515,7 +521,7 @@ uint32_t ds_eq_first(ds_event_queue *q)
     if (q->kind == DS_EQ_HEAP)
         return q->heap[0].disk;
     for (;;) {
-        while (q->heap_count < DS_EQ_LOOKAHEAD && (q->windowed || q->far_count))
+        while (q->heap_count < q->lookahead && (q->windowed || q->far_count))
             advance(q);
         if (q->heap_count == 0)
             return NONE;

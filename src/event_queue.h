@@ -61,14 +61,15 @@ static inline double ds_eq_time(const ds_event_queue *q, uint32_t i)
 
 ds_eq_kind ds_eq_kind_of(const ds_event_queue *q);
 
-/* The calendar keeps at least DS_EQ_LOOKAHEAD times sorted ahead of the
- * next one, and calls soon(ctx, i) for a disk a couple of buckets before
- * its time joins them: some events before its turn, early enough to fetch
- * what its event will touch. A disk may be named more than once, or named
- * and then rescheduled. NULL (the default) calls nothing. */
-#define DS_EQ_LOOKAHEAD 16
+/* For a calendar larger than the caches: keeps at least `lookahead` times
+ * sorted ahead of the next one (at most 64; 1 by default), reads buckets
+ * ahead and calls soon(ctx, i) for a disk a couple of buckets before its
+ * time joins them (some events before its turn, early enough to fetch what
+ * its event will touch; a disk may be named more than once, or named and
+ * then rescheduled), and buffers insertions until their bucket has been
+ * fetched. soon = NULL (the default) does none of it. */
 typedef void (*ds_eq_soon_fn)(void *ctx, uint32_t i);
-void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx);
+void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx, unsigned lookahead);
 
 /* Bytes a queue of n disks allocates, not counting the calendar's spill
  * pool, which holds the rare bucket that overflows and grows on demand. */

@@ -12,13 +12,33 @@ typedef struct pair {
     ds_event_queue *calendar, *heap;
 } pair;
 
-static pair make(size_t n)
+/* The calendar's mode for systems larger than the caches (buffered
+ * insertions, buckets read ahead, disks announced) or its plain mode: every
+ * comparison with the heap runs in both (the tests' `large` flag). */
+typedef struct announced {
+    uint64_t count;
+} announced;
+
+static void count_soon(void *ctx, uint32_t i)
+{
+    (void)i;
+    ++((announced *)ctx)->count;
+}
+
+static announced soon_calls;
+
+static pair make_mode(size_t n, int large)
 {
     pair p;
     assert_int_equal(ds_eq_create(&p.calendar, n, DS_EQ_CALENDAR), DS_OK);
     assert_int_equal(ds_eq_create(&p.heap, n, DS_EQ_HEAP), DS_OK);
+    if (large)
+        ds_eq_on_soon(p.calendar, count_soon, &soon_calls, 16);
     return p;
 }
+
+static int large_mode;
+static pair make(size_t n) { return make_mode(n, large_mode); }
 
 static void destroy(pair p)
 {
@@ -166,6 +186,18 @@ static void test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory(vo
     destroy(p);
 }
 
+static void test_the_large_mode_names_disks_before_their_turn(void **state)
+{
+    (void)state;
+    /* In a gas-like run every disk whose time comes first was named ahead
+     * of it (at least once per bucket read: about one name per event). */
+    soon_calls.count = 0;
+    large_mode = 1;
+    run_like_a_simulation(2000, 100000, 0.0, 5);
+    large_mode = 0;
+    assert_true(soon_calls.count > 50000);
+}
+
 static void test_bad_sizes_are_refused(void **state)
 {
     (void)state;
@@ -176,15 +208,35 @@ static void test_bad_sizes_are_refused(void **state)
     ds_eq_destroy(NULL);
 }
 
+static int plain(void **state)
+{
+    (void)state;
+    large_mode = 0;
+    return 0;
+}
+
+static int large(void **state)
+{
+    (void)state;
+    large_mode = 1;
+    return 0;
+}
+
 int main(void)
 {
-    const struct CMUnitTest tests[] = {
+    const struct CMUnitTest in_both_modes[] = {
         cmocka_unit_test(test_calendar_agrees_with_heap_in_a_gas_like_run),
         cmocka_unit_test(test_calendar_agrees_with_heap_with_times_beyond_its_window),
         cmocka_unit_test(test_rest_and_ties_are_handled),
         cmocka_unit_test(test_a_bucket_fuller_than_a_cache_line_loses_nothing),
         cmocka_unit_test(test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory),
+    };
+    int failed = cmocka_run_group_tests_name("calendar in cache", in_both_modes, plain, NULL);
+    failed +=
+        cmocka_run_group_tests_name("calendar larger than the caches", in_both_modes, large, plain);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_the_large_mode_names_disks_before_their_turn),
         cmocka_unit_test(test_bad_sizes_are_refused),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return failed + cmocka_run_group_tests(tests, NULL, NULL);
 }
