@@ -421,6 +421,28 @@ static void test_set_refuses_an_overlap_and_keeps_the_state(void **state)
     ds_destroy(sim);
 }
 
+static void test_a_pair_a_hair_inside_contact_is_never_stuck(void **state)
+{
+    (void)state;
+    /* Centres 2R (1 - 1e-11) apart, inside contact by rounding, which
+     * ds_set accepts (up to 1e-9). Separating, they are left alone and fly
+     * apart; approaching, they collide at once, then separate: time never
+     * runs backwards, and no pair collides over and over. */
+    const double gap = 10.0 * (1.0 - 1e-11);
+    ds_sim *sim = create(4, 5.0, BIG_BOX, 1, DS_AUTO);
+    place(sim, 0, 400.0, 500.0, -100.0, 0.0);
+    place(sim, 1, 400.0 + gap, 500.0, 100.0, 0.0); /* separating */
+    place(sim, 2, 400.0, 900.0, 100.0, 0.0);
+    place(sim, 3, 400.0 + gap, 900.0, -100.0, 0.0); /* approaching */
+    ds_run(sim, 1000);
+    assert_int_equal(ds_collision_count(sim), 1);
+    assert_disk(sim, 0, 300.0, 500.0, -100.0, 0.0);
+    assert_disk(sim, 1, 500.0 + gap, 500.0, 100.0, 0.0);
+    assert_disk(sim, 2, 300.0, 900.0, -100.0, 0.0);
+    assert_disk(sim, 3, 500.0 + gap, 900.0, 100.0, 0.0);
+    ds_destroy(sim);
+}
+
 static void test_set_between_steps_changes_the_course(void **state)
 {
     (void)state;
@@ -546,6 +568,7 @@ int main(void)
         cmocka_unit_test(test_wall_pressure_follows_the_virial_series),
         cmocka_unit_test(test_time_step_pressure_approaches_the_exact_one_linearly_in_dt),
         cmocka_unit_test(test_set_refuses_an_overlap_and_keeps_the_state),
+        cmocka_unit_test(test_a_pair_a_hair_inside_contact_is_never_stuck),
         cmocka_unit_test(test_set_between_steps_changes_the_course),
         cmocka_unit_test(test_a_run_cut_into_steps_gives_the_same_trajectory),
         cmocka_unit_test(test_brute_force_and_cells_follow_the_same_trajectory),
