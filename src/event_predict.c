@@ -10,44 +10,6 @@
 #include <emmintrin.h>
 #endif
 
-/* The time at which disk d (at time now) and disk p (at its own time,
- * its centre shifted by (sx, sy) to the image in question) come within
- * sqrt(sigma2), or +infinity. Positive b means separating: never. The
- * root is taken in the form that does not cancel (c / (-b + sqrt(disc))
- * rather than (-b - sqrt(disc)) / v2), and an approaching pair already
- * at or inside contact (c <= 0) collides now.
- *
- * Every value is computed and the answer chosen at the end: about half
- * the pairs separate, at random, and a branch on it mispredicted once
- * every other pair, which cost more than the square root and the
- * division that are now always done. With b < 0 the denominator
- * sqrt(disc) + |b| is sqrt(disc) - b > 0; otherwise the quotient is
- * discarded (it may then be an infinity or a NaN). On x86 the choice is
- * written with SSE2 masks: in plain C the compiler moves the square root
- * and the division back under a branch of its own. */
-static inline double pair_time(const ed_disk *d, const ed_disk *p, double now, double sx, double sy,
-                               double sigma2)
-{
-    const double lag = now - p->t;
-    const double rx = p->x + p->vx * lag + sx - d->x, ry = p->y + p->vy * lag + sy - d->y;
-    const double vx = p->vx - d->vx, vy = p->vy - d->vy;
-    const double b = rx * vx + ry * vy;
-    const double c = rx * rx + ry * ry - sigma2;
-    const double disc = b * b - (vx * vx + vy * vy) * c;
-#if defined(__SSE2__)
-    const __m128d zero = _mm_setzero_pd(), vb = _mm_set_sd(b), vdisc = _mm_set_sd(disc);
-    const __m128d root = _mm_sqrt_sd(zero, _mm_max_sd(vdisc, zero));
-    const __m128d den = _mm_add_sd(root, _mm_andnot_pd(_mm_set_sd(-0.0), vb));
-    const __m128d t = _mm_add_sd(_mm_set_sd(now), _mm_div_sd(_mm_max_sd(_mm_set_sd(c), zero), den));
-    const __m128d ok = _mm_and_pd(_mm_cmplt_sd(vb, zero), _mm_cmpgt_sd(vdisc, zero));
-    return _mm_cvtsd_f64(
-        _mm_or_pd(_mm_and_pd(ok, t), _mm_andnot_pd(ok, _mm_set_sd((double)INFINITY))));
-#else
-    const double t = now + (c > 0.0 ? c : 0.0) / (sqrt(disc > 0.0 ? disc : 0.0) + fabs(b));
-    return b < 0.0 && disc > 0.0 ? t : INFINITY;
-#endif
-}
-
 /* The boundary event of one axis: the edge of the disk's cell it moves
  * towards or, in a cell at a wall, the wall line R inside that edge,
  * whichever it reaches (one division, not one per kind). Never before now:
@@ -128,10 +90,25 @@ static inline void keep_if_earlier(predictor *pr, uint32_t k, double t)
     }
 }
 
+/* Pair times: when disk d (at time now) and disk p (at its own time, its
+ * centre shifted by (sx, sy) to the image in question) come within
+ * sqrt(sigma2), or +infinity. Positive b means separating: never. The
+ * root is taken in the form that does not cancel (c / (-b + sqrt(disc))
+ * rather than (-b - sqrt(disc)) / v2), and an approaching pair already
+ * at or inside contact (c <= 0) collides now.
+ *
+ * Every value is computed and the answer chosen at the end: about half
+ * the pairs separate, at random, and a branch on it mispredicted once
+ * every other pair, which cost more than the square root and the
+ * division that are now always done. With b < 0 the denominator
+ * sqrt(disc) + |b| is sqrt(disc) - b > 0; otherwise the quotient is
+ * discarded (it may then be an infinity or a NaN). On x86 the choice is
+ * written with SSE2 masks: in plain C the compiler moves the square root
+ * and the division back under a branch of its own. */
 #if defined(__SSE2__)
-/* Two candidates per iteration, lane by lane the same arithmetic as
- * pair_time (so the same times to the bit): a disk's fields are gathered
- * into the two lanes with one load each. A lane that beats the best so far
+/* Two candidates per iteration, lane by lane the same arithmetic as the
+ * plain-C pair_time below (so the same times to the bit): a disk's fields
+ * are gathered into the two lanes with one load each. A lane that beats the best so far
  * is rare (a few per prediction), and then handled one lane at a time. */
 static inline __m128d load_pair(const double *a, const double *b)
 {
@@ -186,6 +163,23 @@ static inline void test_gathered(predictor *pr, int shifted)
     pr->count = 0;
 }
 #else
+/* The time at which disk d (at time now) and disk p (at its own time,
+ * its centre shifted by (sx, sy) to the image in question) come within
+ * sqrt(sigma2), or +infinity: the plain-C form of test_gathered's SSE2
+ * lanes above, for machines without SSE2. */
+static inline double pair_time(const ed_disk *d, const ed_disk *p, double now, double sx, double sy,
+                               double sigma2)
+{
+    const double lag = now - p->t;
+    const double rx = p->x + p->vx * lag + sx - d->x, ry = p->y + p->vy * lag + sy - d->y;
+    const double vx = p->vx - d->vx, vy = p->vy - d->vy;
+    const double b = rx * vx + ry * vy;
+    const double c = rx * rx + ry * ry - sigma2;
+    const double disc = b * b - (vx * vx + vy * vy) * c;
+    const double t = now + (c > 0.0 ? c : 0.0) / (sqrt(disc > 0.0 ? disc : 0.0) + fabs(b));
+    return b < 0.0 && disc > 0.0 ? t : INFINITY;
+}
+
 static inline void test_gathered(predictor *pr, int shifted)
 {
     for (uint32_t j = 0; j < pr->count; ++j) {
