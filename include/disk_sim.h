@@ -102,7 +102,11 @@ typedef enum ds_integrator {
 /* What happens at the edges of the box. */
 typedef enum ds_boundary {
     DS_WALLS = 0, /* hard walls: a centre turns at R from each wall */
-    DS_PERIODIC   /* periodic in x and y, minimum image; needs box >= 4R */
+    /* Periodic in x and y: a disk leaving at one edge comes back at the
+     * opposite one, and pairs interact through their nearest image.
+     * Positions stay in [0, box) x [0, box_y). Needs R < box/4 and
+     * R < box_y/4 (so a pair touches through one image only). */
+    DS_PERIODIC
 } ds_boundary;
 
 /* Where the disks start. */
@@ -130,7 +134,7 @@ typedef enum ds_broadphase {
 
 typedef struct ds_params {
     size_t n;      /* number of disks, >= 1 */
-    double radius; /* disk radius, 0 < radius < box/2 */
+    double radius; /* disk radius: < box/2 and box_y/2 (walls), /4 (periodic) */
     uint64_t seed; /* seed of the placement and direction generator */
     double box;    /* 0 means 1000 */
     double speed;  /* 0 means 100  */
@@ -195,7 +199,8 @@ void ds_run(ds_sim *sim, uint64_t steps);
 
 size_t ds_count(const ds_sim *sim);
 double ds_radius(const ds_sim *sim);
-double ds_box(const ds_sim *sim);
+double ds_box(const ds_sim *sim);   /* width */
+double ds_box_y(const ds_sim *sim); /* height (box_y, or box when square) */
 double ds_dt(const ds_sim *sim);
 double ds_time(const ds_sim *sim);                   /* simulated time = steps * dt */
 uint64_t ds_steps(const ds_sim *sim);                /* steps taken since creation */
@@ -203,6 +208,8 @@ ds_broadphase ds_broadphase_used(const ds_sim *sim); /* never DS_AUTO */
 const char *ds_broadphase_name(ds_broadphase bp);    /* "sap", "cells", ... */
 ds_integrator ds_integrator_used(const ds_sim *sim);
 const char *ds_integrator_name(ds_integrator integrator); /* "step" or "event" */
+ds_boundary ds_boundary_used(const ds_sim *sim);
+const char *ds_boundary_name(ds_boundary boundary); /* "walls" or "periodic" */
 
 /* Disk i, in generation order (i < n; out of range gives all zeros). */
 ds_disk ds_get(const ds_sim *sim, size_t i);
@@ -235,15 +242,18 @@ uint64_t ds_wall_count(const ds_sim *sim); /* wall reflections since reset */
 /* Momentum handed to the walls since the last reset: sum of 2|v_n|. */
 double ds_wall_impulse(const ds_sim *sim);
 /* Wall impulse per unit time per unit length of wall the centres reach
- * (perimeter 4 (box - 2R)), averaged since the last reset; 0 before any
- * step. In 2D this is a force per length, the ideal gas has P A = N <v^2>/2. */
+ * (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the last
+ * reset; 0 before any step. In 2D this is a force per length, the ideal
+ * gas has P A = N <v^2>/2. A periodic box has no walls: there it is
+ * ds_virial_pressure. */
 double ds_pressure(const ds_sim *sim);
 /* Pressure from the collision virial, averaged since the last reset, 0
  * before any step: in 2D with unit masses (N kT = E, the kinetic energy)
  * P A = E + (1 / (2 t)) * sum over collisions of r_ij . dp_i, where r_ij
- * joins the centres and dp_i is disk i's change of momentum. A is the area
- * the centres reach, (box - 2R)^2 with walls: there the virial theorem
- * makes it equal to ds_pressure over a long run. With the time step the
+ * joins the centres (nearest image) and dp_i is disk i's change of
+ * momentum. A is the area the centres reach: (box - 2R) (box_y - 2R) with
+ * walls, where the virial theorem makes it equal to ds_pressure over a
+ * long run, and box box_y in a periodic box. With the time step the
  * collisions happen a little inside 2R, which biases it low (README). */
 double ds_virial_pressure(const ds_sim *sim);
 /* Zeroes the wall impulse, wall count, collision virial and pressure clock

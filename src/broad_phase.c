@@ -4,9 +4,13 @@
  * insertion sort (nearly linear, since the order barely changes between
  * steps) and test a pair only while their x distance is below 2R.
  * DS_BRUTE_FORCE tests all pairs and is the reference the others are
- * checked against. DS_SAP_STRIPS lives in broad_phase_strips.c. */
+ * checked against. DS_SAP_STRIPS lives in broad_phase_strips.c; in a
+ * periodic box both sweeps are followed by the seam pass
+ * (broad_phase_seam.c), while brute force takes every pair to its nearest
+ * image. */
 #include <math.h>
 
+#include "boundary.h"
 #include "sim_internal.h"
 #include "sweep_block.h"
 
@@ -284,18 +288,40 @@ static uint64_t sweep_brute_force(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
     return (uint64_t)n * (n - 1) / 2;
 }
 
+static uint64_t sweep_brute_force_periodic(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
+{
+    const size_t n = sim->n;
+    const double *x = sim->x, *y = sim->y;
+    const double diameter = 2.0 * sim->radius, d2max = diameter * diameter;
+
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j) {
+            const double dx = ds_nearest(x[j] - x[i], sim->box);
+            const double dy = ds_nearest(y[j] - y[i], sim->box_y);
+            if (dx * dx + dy * dy < d2max)
+                on_pair(sim, i, j, ctx);
+        }
+    return (uint64_t)n * (n - 1) / 2;
+}
+
 uint64_t ds_bp_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx)
 {
+    const int periodic = sim->boundary == DS_PERIODIC;
+    uint64_t tested;
     switch (sim->broadphase) {
     case DS_BRUTE_FORCE:
-        return sweep_brute_force(sim, on_pair, ctx);
+        return periodic ? sweep_brute_force_periodic(sim, on_pair, ctx)
+                        : sweep_brute_force(sim, on_pair, ctx);
     case DS_SAP_STRIPS:
-        return ds_strips_find_pairs(sim, on_pair, ctx);
+        tested = ds_strips_find_pairs(sim, on_pair, ctx);
+        break;
     case DS_SAP:
     case DS_AUTO:
     case DS_CELLS: /* never with the time step */
+    default:
+        ds_bp_insertion_sort_x(sim);
+        tested = sweep_sap(sim, on_pair, ctx);
         break;
     }
-    ds_bp_insertion_sort_x(sim);
-    return sweep_sap(sim, on_pair, ctx);
+    return periodic ? tested + ds_seam_find_pairs(sim, on_pair, ctx) : tested;
 }

@@ -67,7 +67,7 @@ struct ds_strips {
  * box * DBL_EPSILON; the slack keeps h - 2m above 2R despite it. */
 static void strips_geometry(const ds_sim *sim, size_t *count, double *height, double *margin)
 {
-    const double diameter = 2.0 * sim->radius, box = sim->box;
+    const double diameter = 2.0 * sim->radius, box = sim->box_y; /* strips cut the height */
     double s = floor(box / (STRIP_HEIGHT_DIAMETERS * diameter));
     /* No more strips than disks: empty strips cost a loop iteration each. */
     if (s > (double)sim->n)

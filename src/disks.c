@@ -31,6 +31,8 @@ typedef struct options {
     ds_broadphase broadphase;
     ds_integrator integrator;
     ds_placement placement;
+    ds_boundary boundary;
+    double box_y; /* 0: square */
 } options;
 
 static const char *const usage_text =
@@ -47,6 +49,8 @@ static const char *const usage_text =
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
     "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
     "  --lattice            start on a triangular lattice instead of at random\n"
+    "  --periodic           periodic box (nearest image) instead of walls\n"
+    "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
     "  --integrator I       step (the fixed time step, default) or event (exact\n"
     "                       event-driven dynamics)\n"
     "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
@@ -131,6 +135,15 @@ static double radius_arg(const char *s)
     return r;
 }
 
+static double box_y_arg(const char *s)
+{
+    char *end;
+    double h = strtod(s, &end);
+    if (!is_decimal_text(s) || end == s || *end != '\0' || !isfinite(h) || !(h > 0.0 && h <= 1e9))
+        die(EXIT_USAGE, "--box-y must be a number > 0 and <= 1e9, got '%s'", s);
+    return h;
+}
+
 static ds_broadphase broadphase_arg(const char *s)
 {
     const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO, DS_CELLS};
@@ -185,13 +198,18 @@ static options parse_args(int argc, char **argv)
             o.placement = DS_LATTICE;
             continue;
         }
+        if (strcmp(a, "--periodic") == 0) {
+            o.boundary = DS_PERIODIC;
+            continue;
+        }
         if (a[0] == '-' && a[1] == '-') {
             /* --name VALUE or --name=VALUE */
             const char *eq = strchr(a, '=');
             size_t len = eq ? (size_t)(eq - a) : strlen(a);
             const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
-            const char *names[] = {"--seed",  "--frames",     "--steps-per-frame", "--out",
-                                   "--stats", "--broadphase", "--integrator",      "--trajectory"};
+            const char *names[] = {"--seed",       "--frames",     "--steps-per-frame",
+                                   "--out",        "--stats",      "--broadphase",
+                                   "--integrator", "--trajectory", "--box-y"};
             int which = -1;
             for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
                 if (strlen(names[k]) == len && strncmp(a, names[k], len) == 0)
@@ -228,10 +246,13 @@ static options parse_args(int argc, char **argv)
             case 6:
                 o.integrator = integrator_arg(value);
                 break;
-            default:
+            case 7:
                 if (!*value)
                     die(EXIT_USAGE, "--trajectory needs a file name");
                 o.trajectory_path = value;
+                break;
+            default:
+                o.box_y = box_y_arg(value);
             }
             continue;
         }
@@ -274,7 +295,18 @@ static void check_request(const options *o, const ds_params *p)
             (double)bytes / 1073741824.0, (double)pages * (double)page / 1073741824.0);
     /* The two refusals of ds_check_params (see DS_MANY_DISKS): many disks
      * beyond what random placement reaches, or more than can fit at all. */
-    const double fraction = (double)o->n * 3.141592653589793 * o->radius * o->radius / 1e6;
+    const double height = o->box_y > 0.0 ? o->box_y : 1000.0;
+    const double fraction =
+        (double)o->n * 3.141592653589793 * o->radius * o->radius / (1000.0 * height);
+    if (st == DS_ERR_ARG && o->boundary == DS_PERIODIC &&
+        !(o->radius < 0.25 * fmin(1000.0, height)))
+        die(EXIT_USAGE,
+            "R = %g is too large for a periodic box of %g x %g: R must be below a quarter of "
+            "each side",
+            o->radius, 1000.0, height);
+    if (st == DS_ERR_ARG && !(o->radius < 0.5 * height))
+        die(EXIT_USAGE, "R = %g does not fit a box %g high: R must be below half of it", o->radius,
+            height);
     if (st == DS_ERR_PLACEMENT && o->placement == DS_LATTICE)
         die(EXIT_RUN,
             "N = %zu disks of R = %g cover %.3f of the box; no triangular lattice of them "
@@ -583,6 +615,8 @@ int main(int argc, char **argv)
     p.broadphase = o.broadphase;
     p.integrator = o.integrator;
     p.placement = o.placement;
+    p.boundary = o.boundary;
+    p.box_y = o.box_y;
     check_request(&o, &p);
     char stats_dir[4096], trajectory_dir[4096];
     const char *stats_base =
@@ -600,13 +634,19 @@ int main(int argc, char **argv)
             o.radius, (unsigned long long)o.seed, "try another --seed, or fewer or smaller disks");
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
-    if (!o.quiet)
-        printf("disks: N = %zu, R = %g, seed = %llu, integrator = %s, broad phase = %s, %ld "
+    if (!o.quiet) {
+        /* The box is named only when it is not the seed's square with walls. */
+        char box[96] = "";
+        if (ds_boundary_used(sim) != DS_WALLS || ds_box_y(sim) != ds_box(sim))
+            snprintf(box, sizeof box, ", box = %g x %g %s", ds_box(sim), ds_box_y(sim),
+                     ds_boundary_name(ds_boundary_used(sim)));
+        printf("disks: N = %zu, R = %g, seed = %llu%s, integrator = %s, broad phase = %s, %ld "
                "frames x %llu steps -> %s\n",
-               o.n, o.radius, (unsigned long long)o.seed,
+               o.n, o.radius, (unsigned long long)o.seed, box,
                ds_integrator_name(ds_integrator_used(sim)),
                ds_broadphase_name(ds_broadphase_used(sim)), o.frames,
                (unsigned long long)o.steps_per_frame, o.out_dir);
+    }
     fflush(stdout);
 
     size_t cap = ds_frame_size(sim, o.velocities), len = 0;

@@ -36,6 +36,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "boundary.h"
 #include "event_driven.h"
 
 static void schedule(ds_sim *sim, ds_events *e, uint32_t i)
@@ -56,17 +57,10 @@ static inline void advance(ed_disk *d, double t)
 }
 
 /* The separation of two centres along one axis, to the nearest image in
- * a periodic box: a pair in contact is 2R <= box/2 apart, so it is
- * unambiguous. */
+ * a periodic box. */
 static inline double nearest(double r, double box, int periodic)
 {
-    if (periodic) {
-        if (r > 0.5 * box)
-            r -= box;
-        else if (r < -0.5 * box)
-            r += box;
-    }
-    return r;
+    return periodic ? ds_nearest(r, box) : r;
 }
 
 static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
@@ -166,16 +160,6 @@ static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
 /* Showing the disks, moving the epoch                                  */
 /* ------------------------------------------------------------------ */
 
-static double wrap(double u, double box)
-{
-    if (u >= box)
-        u -= box;
-    else if (u < 0.0)
-        u += box;
-    /* -tiny + box rounds to box itself: the same point as 0. */
-    return u < box ? u : 0.0;
-}
-
 /* Writes every disk at integrator time t into the simulation's arrays. */
 static void show_at(ds_sim *sim, const ds_events *e, double t)
 {
@@ -184,8 +168,8 @@ static void show_at(ds_sim *sim, const ds_events *e, double t)
         const double lag = t - d->t;
         double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
         if (e->periodic) {
-            x = wrap(x, e->box_x);
-            y = wrap(y, e->box_y);
+            x = ds_wrap(x, e->box_x);
+            y = ds_wrap(y, e->box_y);
         }
         sim->x[k] = x;
         sim->y[k] = y;

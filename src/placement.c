@@ -1,11 +1,15 @@
-/* Random sequential placement: disk i is drawn uniformly in [R, box-R]^2
- * and redrawn until it overlaps none of disks 0..i-1. A uniform grid of
+/* Random sequential placement: disk i is drawn uniformly where a centre
+ * may be ([R, box - R] x [R, box_y - R] with walls, [0, box) x [0, box_y)
+ * in a periodic box) and redrawn until it overlaps none of disks
+ * 0..i-1 (through the nearest image in a periodic box). A uniform grid of
  * cells at least 2R wide keeps each overlap test to the 3x3 cells around
- * the candidate, so placement is O(N) instead of O(N^2). Directions are
- * drawn afterwards from a second generator. */
+ * the candidate (wrapping in a periodic box), so placement is O(N)
+ * instead of O(N^2). Directions are drawn afterwards from a second
+ * generator. */
 #include <math.h>
 #include <stdlib.h>
 
+#include "boundary.h"
 #include "sim_internal.h"
 
 /* Draws allowed for one disk before giving up. Near the jamming limit the
@@ -31,35 +35,68 @@ typedef struct grid_node {
 } grid_node;
 
 typedef struct grid {
-    size_t side; /* cells per row */
-    double inv_cell;
+    size_t side, side_y; /* cells per row, rows */
+    double inv_cell, inv_cell_y;
     uint32_t *head; /* first disk in each cell, UINT32_MAX when empty */
     grid_node *node;
 } grid;
 
-static size_t cell_coord(const grid *g, double v)
+static size_t coord(double v, double inv_cell, size_t side)
 {
-    double c = v * g->inv_cell;
+    double c = v * inv_cell;
     if (c < 0.0)
         return 0;
     size_t k = (size_t)c;
-    return k < g->side ? k : g->side - 1;
+    return k < side ? k : side - 1;
+}
+
+static size_t cell_coord(const grid *g, double v) { return coord(v, g->inv_cell, g->side); }
+static size_t cell_row(const grid *g, double v) { return coord(v, g->inv_cell_y, g->side_y); }
+
+static int overlaps_in_cell(const grid *g, size_t cell, double px, double py, double d2min)
+{
+    for (uint32_t k = g->head[cell]; k != UINT32_MAX; k = g->node[k].next) {
+        double dx = g->node[k].x - px, dy = g->node[k].y - py;
+        if (dx * dx + dy * dy < d2min)
+            return 1;
+    }
+    return 0;
 }
 
 static int overlaps_any(const ds_sim *sim, const grid *g, double px, double py)
 {
     const double d2min = 4.0 * sim->radius * sim->radius;
-    size_t cx = cell_coord(g, px), cy = cell_coord(g, py);
+    size_t cx = cell_coord(g, px), cy = cell_row(g, py);
     size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
-    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side ? cy + 1 : cy;
+    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side_y ? cy + 1 : cy;
 
     for (size_t gy = y0; gy <= y1; ++gy)
         for (size_t gx = x0; gx <= x1; ++gx)
+            if (overlaps_in_cell(g, gy * g->side + gx, px, py, d2min))
+                return 1;
+    return 0;
+}
+
+/* The same in a periodic box: the cells past an edge are those at the
+ * opposite edge, holding disks one box away. Fewer than three cells along
+ * an axis are each visited once. */
+static int overlaps_any_periodic(const ds_sim *sim, const grid *g, double px, double py)
+{
+    const double d2min = 4.0 * sim->radius * sim->radius;
+    const size_t cx = cell_coord(g, px), cy = cell_row(g, py);
+    const size_t nx = g->side < 3 ? g->side : 3, ny = g->side_y < 3 ? g->side_y : 3;
+    for (size_t oy = 0; oy < ny; ++oy) {
+        const size_t gy = g->side_y < 3 ? oy : (cy + g->side_y - 1 + oy) % g->side_y;
+        for (size_t ox = 0; ox < nx; ++ox) {
+            const size_t gx = g->side < 3 ? ox : (cx + g->side - 1 + ox) % g->side;
             for (uint32_t k = g->head[gy * g->side + gx]; k != UINT32_MAX; k = g->node[k].next) {
-                double dx = g->node[k].x - px, dy = g->node[k].y - py;
+                const double dx = ds_nearest(g->node[k].x - px, sim->box);
+                const double dy = ds_nearest(g->node[k].y - py, sim->box_y);
                 if (dx * dx + dy * dy < d2min)
                     return 1;
             }
+        }
+    }
     return 0;
 }
 
@@ -67,9 +104,9 @@ static int overlaps_any(const ds_sim *sim, const grid *g, double px, double py)
 static void prefetch_cells(const grid *g, double px, double py)
 {
 #if defined(__GNUC__)
-    size_t cx = cell_coord(g, px), cy = cell_coord(g, py);
+    size_t cx = cell_coord(g, px), cy = cell_row(g, py);
     size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
-    size_t y1 = cy + 1 < g->side ? cy + 1 : cy;
+    size_t y1 = cy + 1 < g->side_y ? cy + 1 : cy;
     for (size_t gy = y0; gy <= y1; ++gy)
         __builtin_prefetch(&g->head[gy * g->side + x0]);
 #else
@@ -84,9 +121,9 @@ static void prefetch_cells(const grid *g, double px, double py)
 static void prefetch_nodes(const grid *g, double px, double py)
 {
 #if defined(__GNUC__)
-    size_t cx = cell_coord(g, px), cy = cell_coord(g, py);
+    size_t cx = cell_coord(g, px), cy = cell_row(g, py);
     size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
-    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side ? cy + 1 : cy;
+    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side_y ? cy + 1 : cy;
     for (size_t gy = y0; gy <= y1; ++gy)
         for (size_t gx = x0; gx <= x1; ++gx) {
             uint32_t k = g->head[gy * g->side + gx];
@@ -102,26 +139,29 @@ static void prefetch_nodes(const grid *g, double px, double py)
 
 ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
 {
-    const double r = sim->radius, box = sim->box;
+    const double r = sim->radius, box = sim->box, box_y = sim->box_y;
+    const int periodic = sim->boundary == DS_PERIODIC;
     grid g;
     /* Cells at least 2R wide, but no more cells than ~4 per disk so tiny
-     * radii with few disks do not allocate a huge empty grid. */
-    double side = floor(box / (2.0 * r));
-    double max_side = floor(sqrt(4.0 * (double)sim->n)) + 1.0;
-    if (side > max_side)
-        side = max_side;
-    if (side < 1.0)
-        side = 1.0;
+     * radii with few disks do not allocate a huge empty grid (in a square
+     * box, side^2 <= 4 n; a rectangle shares those cells by its aspect). */
+    double side = floor(box / (2.0 * r)), side_y = floor(box_y / (2.0 * r));
+    double max_side = floor(sqrt(4.0 * (double)sim->n * box / box_y)) + 1.0;
+    double max_side_y = floor(sqrt(4.0 * (double)sim->n * box_y / box)) + 1.0;
+    side = fmax(fmin(side, max_side), 1.0);
+    side_y = fmax(fmin(side_y, max_side_y), 1.0);
     g.side = (size_t)side;
+    g.side_y = (size_t)side_y;
     g.inv_cell = side / box;
-    g.head = malloc(g.side * g.side * sizeof *g.head);
+    g.inv_cell_y = side_y / box_y;
+    g.head = malloc(g.side * g.side_y * sizeof *g.head);
     g.node = malloc(sim->n * sizeof *g.node);
     if (!g.head || !g.node) {
         free(g.head);
         free(g.node);
         return DS_ERR_NOMEM;
     }
-    for (size_t c = 0; c < g.side * g.side; ++c)
+    for (size_t c = 0; c < g.side * g.side_y; ++c)
         g.head[c] = UINT32_MAX;
 
     /* Centres and directions come from two generators, so the sequence of
@@ -134,12 +174,14 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
 
     /* Below ~1 MB of heads the grid stays in cache and prefetching only
      * costs instructions. */
-    const int big_grid = g.side * g.side >= ((size_t)1 << 18);
-    const double lo = r, hi = box - r;
+    const int big_grid = g.side * g.side_y >= ((size_t)1 << 18);
+    /* ds_rng_uniform draws in [lo, hi): in a periodic box, all of it. */
+    const double lo = periodic ? 0.0 : r, hi = periodic ? box : box - r;
+    const double lo_y = periodic ? 0.0 : r, hi_y = periodic ? box_y : box_y - r;
     double ahead_x[AHEAD], ahead_y[AHEAD];
     for (size_t k = 0; k < AHEAD; ++k) {
         ahead_x[k] = ds_rng_uniform(&centres, lo, hi);
-        ahead_y[k] = ds_rng_uniform(&centres, lo, hi);
+        ahead_y[k] = ds_rng_uniform(&centres, lo_y, hi_y);
         if (big_grid)
             prefetch_cells(&g, ahead_x[k], ahead_y[k]);
     }
@@ -160,18 +202,18 @@ ds_status ds_place_disks(ds_sim *sim, uint64_t seed)
              * now, and NODES_AHEAD candidates before its test its first
              * disks (the heads have arrived by then). */
             ahead_x[next] = ds_rng_uniform(&centres, lo, hi);
-            ahead_y[next] = ds_rng_uniform(&centres, lo, hi);
+            ahead_y[next] = ds_rng_uniform(&centres, lo_y, hi_y);
             if (big_grid) {
                 prefetch_cells(&g, ahead_x[next], ahead_y[next]);
                 size_t soon = (next + NODES_AHEAD) & (AHEAD - 1);
                 prefetch_nodes(&g, ahead_x[soon], ahead_y[soon]);
             }
             next = (next + 1) & (AHEAD - 1);
-        } while (overlaps_any(sim, &g, px, py));
+        } while (periodic ? overlaps_any_periodic(sim, &g, px, py) : overlaps_any(sim, &g, px, py));
 
         sim->x[i] = px;
         sim->y[i] = py;
-        size_t c = cell_coord(&g, py) * g.side + cell_coord(&g, px);
+        size_t c = cell_row(&g, py) * g.side + cell_coord(&g, px);
         g.node[i].x = px;
         g.node[i].y = py;
         g.node[i].next = g.head[c];

@@ -55,15 +55,18 @@ static int broadphase_fits(ds_broadphase bp, ds_integrator integrator)
 
 /* Oler's inequality (1961; Folkman and Graham 1969 for any convex set):
  * points at mutual distance >= 1 inside a convex polygon of area A and
- * perimeter P number at most (2/sqrt 3) A + P/2 + 1. Disk centres are
- * 2R apart inside the square of side box - 2R, so in units of 2R that
- * square has side s and at most (2/sqrt 3) s^2 + 2 s + 1 disks fit. The
- * bound is exact for one disk (s >= 0 gives 1) and tends to the hexagonal
- * packing, area fraction pi / (2 sqrt 3) = 0.907, for many. */
-static int disks_cannot_fit(size_t n, double radius, double box)
+ * perimeter P number at most (2/sqrt 3) A + P/2 + 1. With walls, disk
+ * centres are 2R apart inside the rectangle of sides box - 2R and
+ * box_y - 2R, so in units of 2R that rectangle has sides s, t and at most
+ * (2/sqrt 3) s t + s + t + 1 disks fit. The bound is exact for one disk
+ * and tends to the hexagonal packing, area fraction pi / (2 sqrt 3) =
+ * 0.907, for many. A periodic box has no edge: the hexagonal packing
+ * density bounds it, (2/sqrt 3) box box_y / (2R)^2 disks. */
+static int disks_cannot_fit(size_t n, double radius, double box, double box_y, int periodic)
 {
-    const double s = (box - 2.0 * radius) / (2.0 * radius);
-    const double most = 1.1547005383792515 * s * s + 2.0 * s + 1.0;
+    const double d = 2.0 * radius;
+    const double s = periodic ? box / d : (box - d) / d, t = periodic ? box_y / d : (box_y - d) / d;
+    const double most = 1.1547005383792515 * s * t + (periodic ? 0.0 : s + t + 1.0);
     return (double)n > most * (1.0 + 1e-12); /* slack: never refuse a fit to rounding */
 }
 
@@ -75,29 +78,30 @@ ds_status ds_check_params(const ds_params *p, unsigned *warnings)
         return DS_ERR_ARG;
     resolved r = resolve_defaults(p);
     /* Bounds keep every coordinate far below 2^53 so frames print exactly. */
-    if (!(r.box > 0.0 && r.box <= 1e9) || !(r.speed > 0.0 && r.speed <= 1e9) ||
-        !(r.dt > 0.0 && r.dt <= 1.0))
-        return DS_ERR_ARG;
-    if (p->n < 1 || !(p->radius > 0.0) || !(p->radius < 0.5 * r.box))
+    if (!(r.box > 0.0 && r.box <= 1e9) || !(r.box_y > 0.0 && r.box_y <= 1e9) ||
+        !(r.speed > 0.0 && r.speed <= 1e9) || !(r.dt > 0.0 && r.dt <= 1.0))
         return DS_ERR_ARG;
     if ((unsigned)p->integrator > (unsigned)DS_EVENT_DRIVEN ||
+        (unsigned)p->boundary > (unsigned)DS_PERIODIC ||
+        (unsigned)p->placement > (unsigned)DS_LATTICE ||
         !broadphase_fits(p->broadphase, p->integrator))
         return DS_ERR_ARG;
-    /* Not yet: a periodic box, a rectangle. */
-    if (p->boundary != DS_WALLS || r.box_y != r.box)
-        return DS_ERR_ARG;
-    if ((unsigned)p->placement > (unsigned)DS_LATTICE)
+    /* A disk fits between the walls; in a periodic box two disks in
+     * contact must be so through one image only (boundary.h), so each
+     * side is more than two diameters. */
+    const double most_radius = (p->boundary == DS_PERIODIC ? 0.25 : 0.5) * fmin(r.box, r.box_y);
+    if (p->n < 1 || !(p->radius > 0.0) || !(p->radius < most_radius))
         return DS_ERR_ARG;
     /* Ids are 32-bit, the event calendar's 30-bit; beyond that no machine
      * this runs on has the memory. */
     if (p->n >= UINT32_MAX || p->n > (SIZE_MAX - 64) / BYTES_PER_DISK ||
         (p->integrator == DS_EVENT_DRIVEN && p->n >= ((size_t)1 << 30)))
         return DS_ERR_NOMEM;
-    double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box);
+    double fraction = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius / (r.box * r.box_y);
     if (p->placement == DS_LATTICE) {
         if (!ds_lattice_fits(p->n, p->radius, r.box, r.box_y, p->boundary == DS_PERIODIC))
             return DS_ERR_PLACEMENT;
-    } else if (disks_cannot_fit(p->n, p->radius, r.box) ||
+    } else if (disks_cannot_fit(p->n, p->radius, r.box, r.box_y, p->boundary == DS_PERIODIC) ||
                (p->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)) {
         return DS_ERR_PLACEMENT;
     }
@@ -123,6 +127,9 @@ ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
         *bytes += ds_ed_bytes(params->n, params->radius, r.box, r.box_y, params->broadphase);
     else if (choose_broadphase(params, r.box) == DS_SAP_STRIPS)
         *bytes += (params->n + 2) * DS_STRIPS_BYTES_PER_DISK;
+    if (params->integrator == DS_TIME_STEP && params->boundary == DS_PERIODIC &&
+        choose_broadphase(params, r.box) != DS_BRUTE_FORCE)
+        *bytes += ds_seam_bytes(params->n);
     return DS_OK;
 }
 
@@ -207,6 +214,14 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     } else if (sim->broadphase == DS_SAP) {
         ds_bp_insertion_sort_x(sim);
     }
+    if (sim->integrator == DS_TIME_STEP && sim->boundary == DS_PERIODIC &&
+        sim->broadphase != DS_BRUTE_FORCE) {
+        st = ds_seam_create(sim);
+        if (st != DS_OK) {
+            ds_destroy(sim);
+            return st;
+        }
+    }
     ds_rebuild_slots(sim);
     ds_timer_reset(&sim->collision_timer);
     *out = sim;
@@ -218,6 +233,7 @@ void ds_destroy(ds_sim *sim)
     if (!sim)
         return;
     ds_strips_destroy(sim);
+    ds_seam_destroy(sim);
     ds_ed_destroy(sim);
     free(sim->x);
     free(sim->y);
@@ -249,6 +265,19 @@ void ds_step(ds_sim *sim) { ds_run(sim, 1); }
 size_t ds_count(const ds_sim *sim) { return sim ? sim->n : 0; }
 double ds_radius(const ds_sim *sim) { return sim ? sim->radius : 0.0; }
 double ds_box(const ds_sim *sim) { return sim ? sim->box : 0.0; }
+double ds_box_y(const ds_sim *sim) { return sim ? sim->box_y : 0.0; }
+ds_boundary ds_boundary_used(const ds_sim *sim) { return sim ? sim->boundary : DS_WALLS; }
+
+const char *ds_boundary_name(ds_boundary boundary)
+{
+    switch (boundary) {
+    case DS_WALLS:
+        return "walls";
+    case DS_PERIODIC:
+        return "periodic";
+    }
+    return "unknown";
+}
 double ds_dt(const ds_sim *sim) { return sim ? sim->dt : 0.0; }
 /* steps * dt rather than a running sum, so time carries no rounding drift. */
 double ds_time(const ds_sim *sim) { return sim ? (double)sim->steps * sim->dt : 0.0; }
@@ -318,9 +347,13 @@ ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
 {
     if (!sim || i >= sim->n)
         return DS_ERR_ARG;
-    const double lo = sim->radius, hi = sim->box - sim->radius;
-    if (!(d.x >= lo && d.x <= hi && d.y >= lo && d.y <= hi) || !isfinite(d.vx) || !isfinite(d.vy) ||
-        fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
+    /* With walls the centre stays R from each wall; a periodic box takes
+     * any point of [0, box) x [0, box_y), as its frames show them. */
+    const int inside = sim->boundary == DS_PERIODIC
+                           ? d.x >= 0.0 && d.x < sim->box && d.y >= 0.0 && d.y < sim->box_y
+                           : d.x >= sim->radius && d.x <= sim->box - sim->radius &&
+                                 d.y >= sim->radius && d.y <= sim->box_y - sim->radius;
+    if (!inside || !isfinite(d.vx) || !isfinite(d.vy) || fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
         return DS_ERR_ARG;
     size_t k = sim->slot[i];
     if (sim->integrator == DS_EVENT_DRIVEN)
@@ -371,8 +404,11 @@ double ds_pressure(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
+    if (sim->boundary == DS_PERIODIC) /* no wall to push on */
+        return ds_virial_pressure(sim);
     double elapsed = (double)(sim->steps - sim->observables_since_step) * sim->dt;
-    double perimeter = 4.0 * (sim->box - 2.0 * sim->radius);
+    double perimeter =
+        2.0 * (sim->box - 2.0 * sim->radius) + 2.0 * (sim->box_y - 2.0 * sim->radius);
     return sim->wall_impulse / (elapsed * perimeter);
 }
 

@@ -37,6 +37,8 @@ struct ds_sim {
 
     /* DS_SAP_STRIPS state, NULL otherwise (see broad_phase_strips.c). */
     struct ds_strips *strips;
+    /* Periodic box with a sweep: the seam pass's scratch (broad_phase_seam.c). */
+    struct ds_seam *seam;
     /* DS_EVENT_DRIVEN state, NULL otherwise (see event_driven.c). With it,
      * x, y, vx, vy show the disks at ds_time, refreshed after each run. */
     struct ds_events *events;
@@ -48,7 +50,7 @@ struct ds_sim {
 
     uint64_t wall_count;
     double wall_impulse;
-    double virial; /* sum over collisions of r_ij . dp_i since the reset */
+    double virial;                   /* sum over collisions of r_ij . dp_i since the reset */
     uint64_t observables_since_step; /* step count at the last reset */
 
     char radius_text[32]; /* R as written in frames, shortest round trip */
@@ -79,6 +81,14 @@ ds_status ds_strips_create(ds_sim *sim);
 void ds_strips_destroy(ds_sim *sim);
 uint64_t ds_strips_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
 
+/* The pairs across the seams of a periodic box that the sweeps, which see
+ * the box as the coordinates stand, miss (broad_phase_seam.c). */
+typedef struct ds_seam ds_seam;
+ds_status ds_seam_create(ds_sim *sim);
+void ds_seam_destroy(ds_sim *sim);
+uint64_t ds_seam_find_pairs(ds_sim *sim, ds_pair_fn on_pair, void *ctx);
+size_t ds_seam_bytes(size_t n);
+
 /* The integrators' loops: ds_run dispatches to one of them. */
 void ds_ts_run(ds_sim *sim, uint64_t steps); /* time_step.c */
 void ds_ed_run(ds_sim *sim, uint64_t steps); /* event_driven.c */
@@ -92,9 +102,13 @@ ds_status ds_ed_set(ds_sim *sim, size_t k, ds_disk d);
 /* Bytes the event-driven state of params would allocate. */
 size_t ds_ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp);
 
-/* Collision response (collision.c). */
+/* Collision response (collision.c): the pair callbacks for walls and for
+ * a periodic box (separation to the nearest image), and free flight with
+ * wall reflection or with the periodic wrap. */
 void ds_resolve_pair(ds_sim *sim, size_t a, size_t b, void *ctx);
+void ds_resolve_pair_periodic(ds_sim *sim, size_t a, size_t b, void *ctx);
 void ds_move_and_reflect(ds_sim *sim);
+void ds_move_and_wrap(ds_sim *sim);
 
 /* Placement: fills x, y, vx, vy in generation order. Random sequential
  * (placement.c) or a triangular lattice (placement_lattice.c), which

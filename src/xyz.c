@@ -31,14 +31,17 @@ size_t ds_xyz_frame_size(const ds_sim *sim)
 /* The count and comment lines; returns their length. */
 static size_t format_header(const ds_sim *sim, char *out)
 {
-    char box[32], height[32], time[DS_FIELD_MAX];
+    char box[32], box_y[32], height[32], time[DS_FIELD_MAX];
     ds_format_shortest(box, sizeof box, sim->box);
+    ds_format_shortest(box_y, sizeof box_y, sim->box_y);
     ds_format_shortest(height, sizeof height, 2.0 * sim->radius);
     time[ds_format_fixed6(time, ds_time(sim))] = '\0';
+    /* Periodic along x and y, never along the flat z of the layer. */
+    const char *pbc = sim->boundary == DS_PERIODIC ? "T T F" : "F F F";
     int len = snprintf(out, XYZ_HEADER_MAX,
                        "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
-                       " Time=%s pbc=\"F F F\"\n",
-                       sim->n, box, box, height, time);
+                       " Time=%s pbc=\"%s\"\n",
+                       sim->n, box, box_y, height, time, pbc);
     return len > 0 && len < XYZ_HEADER_MAX ? (size_t)len : 0;
 }
 

@@ -1,8 +1,10 @@
 /* Broad phases: every one reports exactly the overlapping pairs the
  * all-pairs reference reports, each once, over random configurations
  * (sparse, dense, on the walls, with many equal coordinates), before and
- * after the disks move; and the insertion sort keeps every disk's data
- * together while it sorts. */
+ * after the disks move, with walls and in a periodic box (square and
+ * rectangular, where the reference takes every pair to its nearest
+ * image); and the insertion sort keeps every disk's data together while
+ * it sorts. */
 #include "test_util.h"
 
 #include "sim_internal.h"
@@ -63,22 +65,36 @@ static size_t assert_same_pairs_as_brute_force(ds_sim *sim)
 }
 
 typedef enum layout {
-    UNIFORM,     /* anywhere in [R, box-R]^2, overlaps allowed */
-    ON_WALLS,    /* every coordinate exactly R or box-R, or uniform */
+    UNIFORM,     /* anywhere a centre may be, overlaps allowed */
+    ON_WALLS,    /* every coordinate exactly at an edge of that range, or uniform */
     COARSE_GRID, /* coordinates on a grid of step R/2: many equal x and y */
     CLUSTERED    /* all in a small square: every disk overlaps ~20 */
 } layout;
 
-/* Places every disk by ds_set (velocities random, speed ~100). */
+/* A periodic coordinate brought into [0, side). */
+static double wrapped(double u, double side)
+{
+    u = fmod(u, side);
+    u = u < 0.0 ? u + side : u;
+    return u < side ? u : 0.0;
+}
+
+/* Places every disk by ds_set (velocities random, speed ~100). With
+ * walls the centres range over [R, box - R] x [R, box_y - R]; in a
+ * periodic box over [0, box) x [0, box_y), the edges being the seams,
+ * and the clusters sit on the corner, across both seams. */
 static void scatter(ds_sim *sim, layout how, ds_rng *rng)
 {
-    const double r = ds_radius(sim), box = ds_box(sim), lo = r, hi = box - r;
+    const int periodic = ds_boundary_used(sim) == DS_PERIODIC;
+    const double r = ds_radius(sim), box = ds_box(sim), box_y = ds_box_y(sim);
+    const double lo = periodic ? 0.0 : r, hi = periodic ? nextafter(box, 0.0) : box - r;
+    const double hi_y = periodic ? nextafter(box_y, 0.0) : box_y - r;
     /* Clusters sized for ~20 overlapping neighbours per disk. */
     const double spread = 3.0 * r * sqrt((double)ds_count(sim) / 50.0 + 1.0);
     for (size_t i = 0; i < ds_count(sim); ++i) {
         ds_disk d;
         d.x = ds_rng_uniform(rng, lo, hi);
-        d.y = ds_rng_uniform(rng, lo, hi);
+        d.y = ds_rng_uniform(rng, lo, hi_y);
         switch (how) {
         case UNIFORM:
             break;
@@ -86,15 +102,20 @@ static void scatter(ds_sim *sim, layout how, ds_rng *rng)
             if (ds_rng_next(rng) & 1u)
                 d.x = (ds_rng_next(rng) & 1u) ? lo : hi;
             if (ds_rng_next(rng) & 1u)
-                d.y = (ds_rng_next(rng) & 1u) ? lo : hi;
+                d.y = (ds_rng_next(rng) & 1u) ? lo : hi_y;
             break;
         case COARSE_GRID:
             d.x = lo + 0.5 * r * floor((d.x - lo) / (0.5 * r));
             d.y = lo + 0.5 * r * floor((d.y - lo) / (0.5 * r));
             break;
         case CLUSTERED:
-            d.x = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
-            d.y = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
+            if (periodic) {
+                d.x = wrapped(ds_rng_uniform(rng, -spread, spread), box);
+                d.y = wrapped(ds_rng_uniform(rng, -spread, spread), box_y);
+            } else {
+                d.x = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
+                d.y = fmin(fmax(0.5 * box_y + ds_rng_uniform(rng, -spread, spread), lo), hi_y);
+            }
             break;
         }
         d.vx = ds_rng_uniform(rng, -100.0, 100.0);
@@ -110,24 +131,42 @@ static const struct {
 } CASES[] = {{1, 5.0},    {2, 300.0},  {9, 5.0},     {50, 40.0}, {400, 5.0},
              {400, 20.0}, {1000, 1.0}, {1500, 12.0}, {2000, 3.0}};
 
-static void check_broad_phase(ds_broadphase bp, ds_scan scan)
+/* The boxes every broad phase is checked in: the seed's, and periodic
+ * ones, square and rectangular (both taller and wider than square). */
+static const struct {
+    ds_boundary boundary;
+    double box_y;
+} BOXES[] = {{DS_WALLS, 0.0}, {DS_PERIODIC, 0.0}, {DS_PERIODIC, 700.0}, {DS_PERIODIC, 1300.0}};
+
+static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
 {
     ds_rng rng;
-    ds_rng_seed(&rng, 42 + (uint64_t)bp);
+    ds_rng_seed(&rng, 42 + (uint64_t)bp + 100 * box);
     size_t total = 0;
     for (size_t c = 0; c < sizeof CASES / sizeof CASES[0]; ++c) {
-        ds_sim *sim = test_create(CASES[c].n, 1e-3, 7 + c, bp);
+        ds_params p = ds_default_params(CASES[c].n, 1e-3);
+        p.seed = 7 + c;
+        p.broadphase = bp;
+        p.boundary = BOXES[box].boundary;
+        p.box_y = BOXES[box].box_y;
+        ds_sim *sim = NULL;
+        assert_int_equal(ds_create(&p, &sim), DS_OK);
         sim->scan = scan;
         /* ds_create refuses overlapping packings; these tests want any
-         * configuration, so create small disks and widen them here. */
-        sim->radius = CASES[c].radius;
+         * configuration, so create small disks and widen them here (a
+         * periodic box takes R below a quarter of its shorter side). */
+        const double most = p.boundary == DS_PERIODIC ? 0.24 * fmin(sim->box, sim->box_y) : 1e9;
+        sim->radius = fmin(CASES[c].radius, most);
         if (bp == DS_SAP_STRIPS) { /* strip geometry depends on R: rebuild */
             ds_strips_destroy(sim);
             assert_int_equal(ds_strips_create(sim), DS_OK);
             ds_rebuild_slots(sim);
         }
+        /* The seed's box gets four configurations of each layout; each
+         * periodic box, three more of them, two (one under valgrind). */
+        const int reps = box == 0 ? 4 : quick_mode() ? 1 : 2;
         for (int how = UNIFORM; how <= CLUSTERED; ++how)
-            for (int rep = 0; rep < 4; ++rep) {
+            for (int rep = 0; rep < reps; ++rep) {
                 scatter(sim, (layout)how, &rng);
                 total += assert_same_pairs_as_brute_force(sim);
                 /* Let them move (and collide) from there: the broad phase
@@ -140,6 +179,15 @@ static void check_broad_phase(ds_broadphase bp, ds_scan scan)
         ds_destroy(sim);
     }
     assert_true(total > 10000); /* the cases are not all empty */
+}
+
+static void check_broad_phase(ds_broadphase bp, ds_scan scan) { check_broad_phase_in(bp, scan, 0); }
+
+/* The seam pass is the same code whatever the block scan: the widest. */
+static void check_broad_phase_periodic(ds_broadphase bp)
+{
+    for (size_t box = 1; box < sizeof BOXES / sizeof BOXES[0]; ++box)
+        check_broad_phase_in(bp, ds_bp_widest_scan(), box);
 }
 
 /* ------------------------------------------------------------ tests */
@@ -159,6 +207,18 @@ static void test_strips_find_exactly_the_brute_force_pairs(void **state)
     check_broad_phase(DS_SAP_STRIPS, ds_bp_widest_scan());
 }
 
+static void test_sap_finds_the_nearest_image_pairs_in_periodic_boxes(void **state)
+{
+    (void)state;
+    check_broad_phase_periodic(DS_SAP);
+}
+
+static void test_strips_find_the_nearest_image_pairs_in_periodic_boxes(void **state)
+{
+    (void)state;
+    check_broad_phase_periodic(DS_SAP_STRIPS);
+}
+
 /* A long run at the seed's density: strips keep agreeing with brute force
  * while disks cross strip boundaries thousands of times. */
 static void test_strips_agree_with_brute_force_over_a_long_run(void **state)
@@ -172,6 +232,30 @@ static void test_strips_agree_with_brute_force_over_a_long_run(void **state)
     }
     assert_true(pairs > 0);
     ds_destroy(sim);
+}
+
+/* The same in a periodic rectangle, where disks keep crossing the seams
+ * and meeting through them: both sweeps with their seam pass. */
+static void test_sweeps_agree_with_brute_force_over_a_long_periodic_run(void **state)
+{
+    (void)state;
+    const ds_broadphase sweeps[] = {DS_SAP, DS_SAP_STRIPS};
+    for (size_t b = 0; b < 2; ++b) {
+        ds_params p = ds_default_params(2000, 4.0);
+        p.seed = 12;
+        p.broadphase = sweeps[b];
+        p.boundary = DS_PERIODIC;
+        p.box_y = 600.0;
+        ds_sim *sim = NULL;
+        assert_int_equal(ds_create(&p, &sim), DS_OK);
+        size_t pairs = 0;
+        for (int k = 0; k < 20; ++k) {
+            ds_run(sim, 50);
+            pairs += assert_same_pairs_as_brute_force(sim);
+        }
+        assert_true(pairs > 0);
+        ds_destroy(sim);
+    }
 }
 
 /* Every disk keeps its own state through the strips' merges and sorts:
@@ -294,7 +378,10 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sap_finds_exactly_the_brute_force_pairs),
         cmocka_unit_test(test_strips_find_exactly_the_brute_force_pairs),
+        cmocka_unit_test(test_sap_finds_the_nearest_image_pairs_in_periodic_boxes),
+        cmocka_unit_test(test_strips_find_the_nearest_image_pairs_in_periodic_boxes),
         cmocka_unit_test(test_strips_agree_with_brute_force_over_a_long_run),
+        cmocka_unit_test(test_sweeps_agree_with_brute_force_over_a_long_periodic_run),
         cmocka_unit_test(test_strips_keep_each_disk_with_its_own_data),
         cmocka_unit_test(test_insertion_sort_keeps_records_together),
         cmocka_unit_test(test_insertion_sort_is_stable_for_equal_x),

@@ -243,22 +243,6 @@ static void test_speeds_relax_to_rayleigh(void **state)
 /* Pressure                                                             */
 /* ------------------------------------------------------------------ */
 
-/* The hard-disk virial series through B10 (Clisby and McCoy 2006, J.
- * Stat. Phys. 122, 15; reduced coefficients B_k / B_2^(k-1)), in 2 eta =
- * B_2 rho. A strict lower bound on Z, tight below eta = 0.4: Z = 1.23614
- * at 0.1 and 2.06316 at 0.3. */
-static double virial_series(double eta)
-{
-    static const double b[] = {1.0,     0.78200443, 0.53223180, 0.33355604, 0.19884,
-                               0.11487, 0.06499,    0.03622,    0.01995};
-    double z = 1.0, power = 1.0;
-    for (size_t k = 0; k < sizeof b / sizeof b[0]; ++k) {
-        power *= 2.0 * eta;
-        z += b[k] * power;
-    }
-    return z;
-}
-
 static void test_the_series_reproduces_the_published_values(void **state)
 {
     (void)state;

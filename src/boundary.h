@@ -1,0 +1,34 @@
+/* The periodic box in one place: wrapping a coordinate into the box and
+ * the separation to the nearest image. Every part that meets the
+ * boundary (the integrators, the broad phases, placement) calls these.
+ *
+ * Both assume what ds_check_params guarantees: a periodic box is more
+ * than two diameters wide along each axis, so two disks within 2R of each
+ * other are so along exactly one image, and a coordinate is never more
+ * than one box outside [0, box). */
+#ifndef DS_BOUNDARY_H
+#define DS_BOUNDARY_H
+
+/* u moved into [0, box), given -box <= u < 2 box. */
+static inline double ds_wrap(double u, double box)
+{
+    if (u >= box)
+        u -= box;
+    else if (u < 0.0)
+        u += box;
+    /* -tiny + box rounds to box itself: the same point as 0. */
+    return u < box ? u : 0.0;
+}
+
+/* A separation r along one axis of a periodic box of side box, taken to
+ * the nearest image: into [-box/2, box/2], given |r| < 1.5 box. */
+static inline double ds_nearest(double r, double box)
+{
+    if (r > 0.5 * box)
+        r -= box;
+    else if (r < -0.5 * box)
+        r += box;
+    return r;
+}
+
+#endif
