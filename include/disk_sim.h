@@ -20,9 +20,9 @@ extern "C" {
 #endif
 
 #define DS_VERSION_MAJOR 2
-#define DS_VERSION_MINOR 0
+#define DS_VERSION_MINOR 1
 #define DS_VERSION_PATCH 0
-#define DS_VERSION_STRING "2.0.0"
+#define DS_VERSION_STRING "2.1.0"
 
 /* ------------------------------------------------------------------ */
 /* Status codes                                                        */

@@ -3,10 +3,11 @@
  * tools/pressure_vs_dt.sh and tools/eos.sh run it over parameter sweeps.
  *
  *   pressure N ETA [--integrator step|event] [--dt DT] [--periodic]
- *            [--lattice] [--relax T] [--blocks B] [--block T] [--seed S]
+ *            [--lattice] [--box-y H] [--relax T] [--blocks B] [--block T]
+ *            [--seed S]
  *
- * The N disks cover the area fraction ETA of the 1000 x 1000 box:
- * R = sqrt(ETA 1000^2 / (N pi)). After T time units of relaxation (default
+ * The N disks cover the area fraction ETA of the 1000 x H box (H = 1000
+ * unless --box-y): R = sqrt(ETA 1000 H / (N pi)). After T time units of relaxation (default
  * 5) it runs B blocks (default 20) of T time units each (default 1),
  * taking Z in each block from the collision virial (ds_virial_pressure),
  * and with walls also from the walls (ds_pressure), both with A the area
@@ -32,7 +33,7 @@
 static void usage(void)
 {
     fputs("usage: pressure N ETA [--integrator step|event] [--dt DT] [--periodic] [--lattice]\n"
-          "                [--relax T] [--blocks B] [--block T] [--seed S]\n",
+          "                [--box-y H] [--relax T] [--blocks B] [--block T] [--seed S]\n",
           stderr);
     exit(2);
 }
@@ -74,8 +75,9 @@ int main(int argc, char **argv)
         usage();
     const size_t n = (size_t)number(argv[1], 1, 1e8, "N");
     const double eta = number(argv[2], 1e-9, 0.9069, "ETA");
-    ds_params p = ds_default_params(n, sqrt(eta * 1e6 / ((double)n * PI)));
+    ds_params p = ds_default_params(n, 1.0);
     p.integrator = DS_EVENT_DRIVEN;
+    p.box_y = 1000.0;
     double relax = 5.0, block = 1.0;
     int blocks = 20;
     for (int i = 3; i < argc; ++i) {
@@ -103,11 +105,14 @@ int main(int argc, char **argv)
             blocks = (int)number(v, 2, 100000, "--blocks");
         else if (strcmp(a, "--block") == 0)
             block = number(v, 1e-6, 1e6, "--block");
+        else if (strcmp(a, "--box-y") == 0)
+            p.box_y = number(v, 1e-3, 1e9, "--box-y");
         else if (strcmp(a, "--seed") == 0)
             p.seed = (uint64_t)number(v, 0, 9007199254740992.0, "--seed");
         else
             usage();
     }
+    p.radius = sqrt(eta * 1000.0 * p.box_y / ((double)n * PI));
     ds_sim *sim = NULL;
     const ds_status st = ds_create(&p, &sim);
     if (st != DS_OK) {
@@ -118,8 +123,8 @@ int main(int argc, char **argv)
     const uint64_t per_block = (uint64_t)llround(block / dt);
     ds_run(sim, (uint64_t)llround(relax / dt));
     const int walls = p.boundary == DS_WALLS;
-    const double span = ds_box(sim) - (walls ? 2.0 * p.radius : 0.0);
-    const double area = span * span;
+    const double inset = walls ? 2.0 * p.radius : 0.0;
+    const double area = (ds_box(sim) - inset) * (ds_box_y(sim) - inset);
     stats virial = {0, 0, 0}, wall = {0, 0, 0};
     const uint64_t collisions = ds_collision_count(sim);
     for (int b = 0; b < blocks; ++b) {

@@ -13,7 +13,7 @@ out=pressure_vs_dt.dat
 : > "$out"
 for eta in 0.1 0.3 0.5; do
     tools/pressure "$n" "$eta" --periodic --lattice --relax 10 --blocks 20 >> "$out"
-    for dt in 0.004 0.002 0.001 0.0005; do
+    for dt in 0.0005 0.001 0.002 0.004; do
         tools/pressure "$n" "$eta" --periodic --lattice --relax 10 --blocks 20 \
             --integrator step --dt "$dt" >> "$out"
     done
