@@ -130,8 +130,10 @@ static long shifted(size_t c, int d, size_t cells, int periodic)
     return s;
 }
 
-/* The minimum image of a separation along a periodic side of length len:
- * exact for separations within one box, as centres inside the box have. */
+/* The minimum image of a separation along a periodic side of length len.
+ * round, not a single shift by len: a caller of the public function may
+ * pass centres that are not wrapped into the box, any number of boxes
+ * away. */
 static double nearest_image(double d, double len) { return d - len * round(d / len); }
 
 ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x, double box_y,

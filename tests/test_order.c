@@ -262,6 +262,31 @@ static void test_a_dense_lattice_is_ordered(void **state)
     }
 }
 
+static void test_a_periodic_lattice_is_ordered_and_a_tiny_periodic_box_has_no_psi6(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(4096, sqrt(0.85 * 1e6 / (PI * 4096.0)));
+    p.placement = DS_LATTICE;
+    p.boundary = DS_PERIODIC;
+    ds_sim *sim = NULL;
+    if (ds_create(&p, &sim) == DS_ERR_ARG) {
+        print_message("skipped: this build has no periodic boxes\n");
+        skip();
+    }
+    assert_non_null(sim);
+    /* The bonds across the seams count: as ordered as with walls. */
+    assert_true(ds_psi6(sim) > 0.99);
+    ds_destroy(sim);
+    /* A box 50 wide holds one disk of R = 10, but the cutoff 1.4 d = 28 is
+     * more than half of it: no unique nearest image, NaN. */
+    p = ds_default_params(1, 10.0);
+    p.box = 50.0;
+    p.boundary = DS_PERIODIC;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_true(isnan(ds_psi6(sim)));
+    ds_destroy(sim);
+}
+
 static void test_a_dilute_gas_has_no_global_order(void **state)
 {
     (void)state;
@@ -292,6 +317,7 @@ int main(void)
         cmocka_unit_test(test_a_tiny_cutoff_in_a_huge_box_allocates_a_bounded_grid),
         cmocka_unit_test(test_bad_arguments_are_refused),
         cmocka_unit_test(test_a_dense_lattice_is_ordered),
+        cmocka_unit_test(test_a_periodic_lattice_is_ordered_and_a_tiny_periodic_box_has_no_psi6),
         cmocka_unit_test(test_a_dilute_gas_has_no_global_order),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
