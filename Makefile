@@ -35,7 +35,7 @@ LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
            src/broad_phase.c src/broad_phase_strips.c src/broad_phase_seam.c src/time_step.c \
            src/cells.c src/event_queue.c src/event_driven.c src/event_predict.c \
            src/event_fetch.c src/number_text.c \
-           src/placement_lattice.c src/frame_io.c src/xyz.c src/sim.c
+           src/placement_lattice.c src/frame_io.c src/xyz.c src/order.c src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean
@@ -69,7 +69,8 @@ CMOCKA_LIBS   := $(or $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --libs cmock
 TEST_SRC := $(filter-out tests/test_render.c,$(wildcard tests/test_*.c))
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 # test_cli runs the disks and render of this build (relative to the top).
-TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"' -DDS_TEST_RENDER='"$(OUT)tools/render"'
+TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"' -DDS_TEST_RENDER='"$(OUT)tools/render"' \
+             -DDS_TEST_GR='"$(OUT)tools/gr"'
 
 $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	@mkdir -p $(BUILD)/tests
@@ -137,9 +138,16 @@ $(OUT)tools/pressure: tools/pressure.c $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# tools/gr: g(r) of one frame file (public API only), plotted by
+# tools/plot_gr.plt. Built by `make`.
+all: $(OUT)tools/gr
+$(OUT)tools/gr: tools/gr.c $(LIB) include/disk_sim.h
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 clean: clean-bench
 clean-bench:
-	rm -f tools/bench tools/pressure
+	rm -f tools/bench tools/pressure tools/gr
 
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,

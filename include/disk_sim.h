@@ -262,6 +262,34 @@ double ds_virial_pressure(const ds_sim *sim);
 void ds_reset_observables(ds_sim *sim);
 
 /* ------------------------------------------------------------------ */
+/* Order: bond-orientational order psi6                                */
+/* ------------------------------------------------------------------ */
+
+/* Per-disk bond-orientational order of the n centres (x[j], y[j]):
+ *   psi6_j = (1/n_j) sum_k exp(6 i theta_jk)  ->  re[j] + i im[j],
+ * over the n_j disks k whose centres are closer than cutoff to j's (a
+ * coincident centre is no bond), theta_jk the angle of the bond j -> k from
+ * the x axis. 0 for a disk with no neighbour. |psi6_j| = 1 for six
+ * neighbours at multiples of 60 degrees; arg(psi6_j) / 6 is then the
+ * lattice's orientation. The box is [0, box_x] x [0, box_y]; with
+ * DS_PERIODIC separations are minimum images (centres anywhere, wrapped),
+ * which is unique only if cutoff < min(box_x, box_y) / 2. O(n) with a cell
+ * grid allocated inside. n = 0 is DS_OK and writes nothing. DS_ERR_ARG if
+ * a pointer is NULL, box_x, box_y or cutoff is not finite and positive, a
+ * centre is not finite, boundary is unknown, or a periodic cutoff is not
+ * below half the shorter side; DS_ERR_NOMEM if the grid cannot be
+ * allocated. */
+ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x, double box_y,
+                        ds_boundary boundary, double cutoff, double *re, double *im);
+/* Global order |(1/N) sum_j psi6_j| of the disks at ds_time, in the sim's
+ * box and boundary, with cutoff 1.4 d (d = 2R: the first minimum of g(r) of
+ * the dense hard-disk liquid is near 1.4 d). Near 1 for a crystal of one
+ * orientation, O(1/sqrt N) for a liquid; a lattice sparser than 1.4 d has
+ * no bonds and gives 0. NaN if sim is NULL, memory runs out, or a periodic
+ * box is narrower than 2.8 d. */
+double ds_psi6(const ds_sim *sim);
+
+/* ------------------------------------------------------------------ */
 /* Frames: text files of lines "x y R" or "x y R vx vy"                */
 /* ------------------------------------------------------------------ */
 

@@ -583,13 +583,14 @@ static void progress_clear(const progress *pr)
 
 static void stats_row(char **buf, size_t *len, size_t *cap, long frame, const ds_sim *sim)
 {
-    char row[256];
+    char row[320];
     double px, py;
     ds_momentum(sim, &px, &py);
-    int l = snprintf(
-        row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g\n", frame, ds_time(sim),
-        ds_kinetic_energy(sim), px, py, (unsigned long long)ds_collision_count(sim),
-        (unsigned long long)ds_wall_count(sim), ds_pressure(sim), ds_virial_pressure(sim));
+    int l = snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g\n",
+                     frame, ds_time(sim), ds_kinetic_energy(sim), px, py,
+                     (unsigned long long)ds_collision_count(sim),
+                     (unsigned long long)ds_wall_count(sim), ds_pressure(sim),
+                     ds_virial_pressure(sim), ds_psi6(sim));
     if (*len + (size_t)l + 1 > *cap) {
         size_t ncap = *cap * 2 + sizeof row;
         char *grown = realloc(*buf, ncap);
@@ -657,7 +658,7 @@ int main(int argc, char **argv)
         die(EXIT_RUN, "out of memory for the frame buffer");
     if (o.stats_path) {
         const char *header = "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,"
-                             "virial_pressure\n";
+                             "virial_pressure,psi6\n";
         stats_cap = 4096;
         stats = malloc(stats_cap);
         if (!stats)

@@ -423,6 +423,117 @@ static void test_binary_garbage_is_refused(void **state)
     expect_failure(*state, bad_file("garbage.txt", bytes, sizeof bytes), "garbage.txt:1: ");
 }
 
+static void test_cyclic_map_closes_on_itself_without_jumps(void **state)
+{
+    (void)state;
+    rc_rgb a = rc_cyclic(0.0), b = rc_cyclic(1.0), c = rc_cyclic(-1.0);
+    assert_true(fabs(a.r - b.r) < 1e-6 && fabs(a.g - b.g) < 1e-6 && fabs(a.b - b.b) < 1e-6);
+    assert_true(fabs(a.r - c.r) < 1e-6 && fabs(a.g - c.g) < 1e-6 && fabs(a.b - c.b) < 1e-6);
+    /* Every step of 1/256 moves each channel by little (no seam, no jump),
+     * and the colours stay inside the sRGB cube unclipped. */
+    rc_rgb prev = rc_cyclic(0.0);
+    for (int k = 1; k <= 256; ++k) {
+        rc_rgb now = rc_cyclic(k / 256.0);
+        assert_true(now.r > 0.0f && now.r < 1.0f && now.g > 0.0f && now.g < 1.0f && now.b > 0.0f &&
+                    now.b < 1.0f);
+        assert_true(fabs(now.r - prev.r) < 0.03 && fabs(now.g - prev.g) < 0.03 &&
+                    fabs(now.b - prev.b) < 0.03);
+        prev = now;
+    }
+    /* Opposite orientations are far apart in colour. */
+    rc_rgb half = rc_cyclic(0.5);
+    assert_true(fabs(a.r - half.r) + fabs(a.g - half.g) + fabs(a.b - half.b) > 0.6);
+    /* psi6 = 1 (bonds along x) is the middle of the map at full
+     * brightness; no order at all is that colour at 0.3. */
+    rc_rgb one = rc_psi6(1.0, 0.0), none = rc_psi6(0.0, 0.0);
+    assert_true(fabs(one.r - half.r) < 1e-6 && fabs(one.g - half.g) < 1e-6);
+    assert_true(fabs(none.r - 0.3f * half.r) < 1e-6 && fabs(none.b - 0.3f * half.b) < 1e-6);
+}
+
+static void test_psi6_colours_a_hexagon_by_its_orientation(void **state)
+{
+    /* Six disks touching a seventh, the whole turned by 0.1 rad: every
+     * one of the seven has |psi6| = 1 at phase 0.6. A lone disk far away
+     * has no neighbour, psi6 = 0. */
+    char text[1024];
+    size_t len = (size_t)snprintf(text, sizeof text, "500 500 40\n150 150 40\n");
+    for (int k = 0; k < 6; ++k)
+        len += (size_t)snprintf(text + len, sizeof text - len, "%.6f %.6f 40\n",
+                                500.0 + 80.0 * cos(0.1 + k * 3.14159265358979 / 3.0),
+                                500.0 + 80.0 * sin(0.1 + k * 3.14159265358979 / 3.0));
+    image img = render_text(*state, text, 400, "--colour psi6");
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 1);
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 500)), rc_psi6(cos(0.6), sin(0.6)),
+                  "centre of the hexagon");
+    assert_colour(pixel(&img, rl_px(&l, 500 + 80 * cos(0.1)), rl_py(&l, 500 + 80 * sin(0.1))),
+                  rc_psi6(cos(0.6), sin(0.6)), "a disk of the ring");
+    assert_colour(pixel(&img, rl_px(&l, 150), rl_py(&l, 150)), rc_psi6(0.0, 0.0), "the lone disk");
+    /* The legend's bar is the cyclic map: its middle is orientation 0. */
+    /* The bar's slice at a row shows the map at the slice's middle. */
+    const double row = floor(0.5 * l.bar_h);
+    assert_colour(pixel(&img, l.bar_x + 0.5 * l.bar_w, l.bar_y + row + 0.5),
+                  rc_cyclic((row + 0.5) / l.bar_h), "legend middle");
+    free(img.rgb);
+    /* --color is the same option. */
+    img = render_text(*state, text, 400, "--color psi6");
+    assert_colour(pixel(&img, rl_px(&l, 150), rl_py(&l, 150)), rc_psi6(0.0, 0.0), "--color");
+    free(img.rgb);
+}
+
+static void test_psi6_counts_neighbours_across_a_periodic_edge(void **state)
+{
+    /* Two disks touching across the left/right edge: bonded only when the
+     * box is periodic (a lone pair's bond gives |psi6| = 1). */
+    const char *text = "30 500 40\n970 500 40\n";
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 1);
+    image img = render_text(*state, text, 400, "--colour psi6 --periodic");
+    assert_colour(pixel(&img, rl_px(&l, 30), rl_py(&l, 500)), rc_psi6(1.0, 0.0), "periodic");
+    free(img.rgb);
+    img = render_text(*state, text, 400, "--colour psi6");
+    assert_colour(pixel(&img, rl_px(&l, 30), rl_py(&l, 500)), rc_psi6(0.0, 0.0), "walls");
+    free(img.rgb);
+}
+
+static void test_a_tall_box_is_drawn_with_its_own_height(void **state)
+{
+    /* A 500 x 1000 box: as tall as a square box would be, half as wide. */
+    image img = render_text(*state, "250 900 40\n", 400, "--box 500 --box-y 1000");
+    rl_layout l, square;
+    rl_make_rect(&l, 400, 500.0, 1000.0, 0);
+    rl_make(&square, 400, 1000.0, 0);
+    assert_true(fabs(l.scale - square.scale) < 1e-12);
+    assert_colour(pixel(&img, rl_px(&l, 250), rl_py(&l, 900)), RC_DISK, "disk near the top");
+    assert_colour(pixel(&img, rl_px(&l, 250), rl_py(&l, 100)), RC_BACKGROUND, "its mirror image");
+    /* The right edge of the box is drawn at x = 500, centred in the image. */
+    const double right = rl_px(&l, 500.0), mid = rl_py(&l, 500.0);
+    assert_colour(pixel(&img, right - 0.25 * l.outline + 0.01, mid), RC_OUTLINE, "right edge");
+    assert_colour(pixel(&img, rl_px(&l, 750.0), mid), RC_BACKGROUND, "beyond the right edge");
+    assert_true(fabs(rl_px(&l, 250.0) - 200.0) <= 1.0);
+    free(img.rgb);
+}
+
+static void test_bad_colour_requests_are_refused(void **state)
+{
+    /* path_in's buffers are reused: keep the frame's path. */
+    char frame[512];
+    snprintf(frame, sizeof frame, "%s", path_in(fresh_dir("colour"), "frame_0000.txt"));
+    write_text(frame, "500 500 10\n");
+    char args[1024];
+    snprintf(args, sizeof args, "--colour hue %s", frame);
+    assert_int_equal(run(*state, args), 2);
+    assert_non_null(strstr(last_stderr(), "--colour must be speed or psi6, got 'hue'"));
+    snprintf(args, sizeof args, "--quiet --colour speed %s", frame);
+    assert_int_equal(run(*state, args), 1);
+    assert_non_null(strstr(last_stderr(), "--colour speed needs frames of"));
+    /* A periodic box too small for the psi6 cutoff is named. */
+    snprintf(args, sizeof args, "--quiet --colour psi6 --periodic --box 50 %s", frame);
+    assert_int_equal(run(*state, args), 1);
+    if (!strstr(last_stderr(), "narrower than 2.8 diameters"))
+        fail_msg("stderr: %s", last_stderr());
+}
+
 static void test_a_missing_file_is_refused(void **state)
 {
     expect_failure(*state, path_in(scratch, "no_such_frame.txt"),
@@ -709,6 +820,10 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_disk_edges_are_antialiased, binary),                        \
         cmocka_unit_test_prestate(test_box_outline_is_drawn_on_the_box_edges, binary),             \
         cmocka_unit_test_prestate(test_speeds_colour_slow_and_fast_disks_differently, binary),     \
+        cmocka_unit_test_prestate(test_psi6_colours_a_hexagon_by_its_orientation, binary),         \
+        cmocka_unit_test_prestate(test_psi6_counts_neighbours_across_a_periodic_edge, binary),     \
+        cmocka_unit_test_prestate(test_a_tall_box_is_drawn_with_its_own_height, binary),           \
+        cmocka_unit_test_prestate(test_bad_colour_requests_are_refused, binary),                   \
         cmocka_unit_test_prestate(test_dir_renders_every_frame_of_a_disks_run, binary),            \
         cmocka_unit_test_prestate(test_version_names_the_backend_and_the_gl_renderer, binary),     \
         cmocka_unit_test_prestate(test_a_short_line_is_reported_with_file_and_line, binary),       \
@@ -739,6 +854,7 @@ int main(void)
 {
     const struct CMUnitTest colours[] = {
         cmocka_unit_test(test_viridis_gets_lighter_from_slow_to_fast),
+        cmocka_unit_test(test_cyclic_map_closes_on_itself_without_jumps),
         cmocka_unit_test(test_speed_scale_is_two_and_a_half_rms_speeds),
     };
     int failed = cmocka_run_group_tests_name("render colour map", colours, NULL, NULL);

@@ -33,11 +33,20 @@ static const char usage[] =
     "       render [options] --dir DIR\n"
     "Writes one PNG per frame file: frame_0012.txt -> frame_0012.png, next to\n"
     "the frame or in --out DIR. Frames are lines \"x y R\" (one colour) or\n"
-    "\"x y R vx vy\" (coloured by speed, with a legend).\n"
+    "\"x y R vx vy\" (coloured by speed, with a legend); --colour psi6 colours\n"
+    "either by the local crystal orientation.\n"
     "  --dir DIR    render every frame_*.txt in DIR, in name order\n"
     "  --out DIR    write the PNGs into DIR (created if missing)\n"
     "  --size PX    image width and height, 32..16384 (default 800)\n"
-    "  --box L      side of the simulation box (default 1000)\n"
+    "  --box L      side of the simulation box, its width if --box-y is given\n"
+    "               (default 1000)\n"
+    "  --box-y H    height of the box (default: the width)\n"
+    "  --colour C   what the colours show (also --color): speed (the default for\n"
+    "               \"x y R vx vy\" frames) or psi6, the orientation arg(psi6)/6\n"
+    "               of each disk's neighbours closer than 1.4 diameters, -30 to\n"
+    "               +30 degrees on a cyclic colour wheel, darker where |psi6| is\n"
+    "               small (brightness 0.3 + 0.7 |psi6|)\n"
+    "  --periodic   the box is periodic: psi6 counts neighbours across its edges\n"
     "  --vmax V     speed at the top of the colour scale (default 2.5 x rms speed)\n"
     "  -j N         frames rendered at once, 1..256 (default: number of cores)\n"
     "  --movie FILE write one H.264 MP4 movie of the frames instead of PNGs\n"
@@ -330,8 +339,9 @@ static int render_all(job *j, size_t workers, int quiet)
 int main(int argc, char **argv)
 {
     const char *out_dir = NULL, *movie = NULL;
-    double size = 800, box = 1000, vmax = 0, jobs = 0, fps = 25;
-    int quiet = 0, rc = 0;
+    double size = 800, box = 1000, box_y = 0, vmax = 0, jobs = 0, fps = 25;
+    int quiet = 0, rc = 0, periodic = 0;
+    rd_colour colour = RD_COLOUR_AUTO;
     char **inputs = NULL;
     size_t count = 0, cap = 0;
     job j;
@@ -347,6 +357,20 @@ int main(int argc, char **argv)
             goto done;
         } else if (!strcmp(s, "--quiet")) {
             quiet = 1;
+            continue;
+        } else if (!strcmp(s, "--periodic")) {
+            periodic = 1;
+            continue;
+        } else if ((!strcmp(s, "--colour") || !strcmp(s, "--color")) && v) {
+            ++a;
+            if (!strcmp(v, "speed")) {
+                colour = RD_COLOUR_SPEED;
+            } else if (!strcmp(v, "psi6")) {
+                colour = RD_COLOUR_PSI6;
+            } else {
+                fprintf(stderr, "render: %s must be speed or psi6, got '%s'\n", s, v);
+                rc = 2;
+            }
             continue;
         } else if (!strcmp(s, "--dir") && v) {
             /* Listed now, so files and directories keep the command's order. */
@@ -364,6 +388,8 @@ int main(int argc, char **argv)
             bad = parse_number(s, v, RL_MIN_SIZE, RL_MAX_SIZE, &size) || size != (int)size;
         } else if (!strcmp(s, "--box")) {
             bad = parse_number(s, v, 1e-9, 1e15, &box);
+        } else if (!strcmp(s, "--box-y")) {
+            bad = parse_number(s, v, 1e-9, 1e15, &box_y);
         } else if (!strcmp(s, "--vmax")) {
             bad = parse_number(s, v, 1e-300, 1e300, &vmax);
         } else if (!strcmp(s, "-j")) {
@@ -411,6 +437,9 @@ int main(int argc, char **argv)
             goto done;
     j.draw.size = (int)size;
     j.draw.box = box;
+    j.draw.box_y = box_y;
+    j.draw.periodic = periodic;
+    j.draw.colour = colour;
     j.draw.vmax = vmax;
     j.mode = umask(0);
     umask(j.mode);

@@ -32,6 +32,45 @@ rc_rgb rc_viridis(double t)
     return out;
 }
 
+/* sRGB transfer function: linear light to the encoded value in [0, 1]. */
+static double srgb_encode(double c)
+{
+    c = c < 0.0 ? 0.0 : c > 1.0 ? 1.0 : c;
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
+rc_rgb rc_cyclic(double t)
+{
+    if (!isfinite(t))
+        t = 0.0;
+    const double h = 2.0 * 3.14159265358979323846 * (t - floor(t));
+    const double lightness = 0.74, chroma = 0.12;
+    const double a = chroma * cos(h), b = chroma * sin(h);
+    /* OKLab to linear sRGB (Ottosson 2020): to the cone responses l, m, s
+     * (cube roots), cube them, then to red, green, blue. */
+    const double l_ = lightness + 0.3963377774 * a + 0.2158037573 * b;
+    const double m_ = lightness - 0.1055613458 * a - 0.0638541728 * b;
+    const double s_ = lightness - 0.0894841775 * a - 1.2914855480 * b;
+    const double l = l_ * l_ * l_, m = m_ * m_ * m_, s = s_ * s_ * s_;
+    const double r = 4.0767416621 * l - 3.3077115913 * m + 0.2309699292 * s;
+    const double g = -1.2684380046 * l + 2.6097574011 * m - 0.3413193965 * s;
+    const double bl = -0.0041960863 * l - 0.7034186147 * m + 1.7076147010 * s;
+    rc_rgb out = {(float)srgb_encode(r), (float)srgb_encode(g), (float)srgb_encode(bl)};
+    return out;
+}
+
+rc_rgb rc_psi6(double re, double im)
+{
+    const double order = fmin(hypot(re, im), 1.0);
+    const double t = atan2(im, re) / (2.0 * 3.14159265358979323846) + 0.5;
+    const float k = (float)(0.3 + 0.7 * (order >= 0.0 ? order : 0.0));
+    rc_rgb c = rc_cyclic(t);
+    c.r *= k;
+    c.g *= k;
+    c.b *= k;
+    return c;
+}
+
 double rc_speed_scale(const ds_frame *frame)
 {
     double sum = 0.0;

@@ -1,4 +1,5 @@
-/* Colours of the renderer: the perceptual map for speeds and the fixed
+/* Colours of the renderer: the perceptual map for speeds, the cyclic map
+ * for the bond orientation, and the fixed
  * colours of 3-column frames. GL-free, so the tests link it directly. */
 #ifndef RENDER_COLORMAP_H
 #define RENDER_COLORMAP_H
@@ -15,6 +16,21 @@ typedef struct rc_rgb {
  * at 0.5, yellow at 1, lightness increasing throughout, readable in grey
  * and by colour-blind viewers. t is clamped to [0, 1]. */
 rc_rgb rc_viridis(double t);
+
+/* A cyclic map: t and t + 1 give the same colour. A circle of hues at
+ * constant lightness and chroma in Ottosson's OKLab space (L = 0.74,
+ * C = 0.12, the widest circle sRGB holds at every hue at that lightness),
+ * so equal steps of t look like equal steps of hue and no phase looks
+ * brighter than another. t = 0 is pink, 1/4 ochre, 1/2 teal, 3/4
+ * lavender blue. */
+rc_rgb rc_cyclic(double t);
+
+/* The colour of a disk with local bond order psi6 = re + i im: the cyclic
+ * map at the bond orientation arg(psi6) / 6, t = arg(psi6) / (2 pi) + 1/2
+ * (so t = 0 and 1 are an orientation of -30 = +30 degrees), darkened by
+ * the order: brightness 0.3 + 0.7 |psi6| (|psi6| taken as at most 1), so a
+ * disordered disk is dark whatever its phase. */
+rc_rgb rc_psi6(double re, double im);
 
 /* Plain frames: gnuplot's disk blue of animate_disk.plt on white. */
 #define RC_DISK ((rc_rgb){0.165f, 0.435f, 0.690f})

@@ -110,28 +110,63 @@ static int text(rd_renderer *r, double x, double y, double px, const char *s, rc
     return 0;
 }
 
-static int legend(rd_renderer *r, const rl_layout *l, double vmax)
+/* The legend: a bar of the map from bottom to top, its two end labels and
+ * a caption above. */
+static int legend(rd_renderer *r, const rl_layout *l, rc_rgb (*map)(double), const char *bottom,
+                  const char *top, const char *caption)
 {
     /* The bar is a stack of thin solid slices, one per pixel row, each the
-     * map's colour at its middle: what a disk of that speed looks like. */
+     * map's colour at its middle: what a disk of that value looks like. */
     const int rows = (int)l->bar_h;
     for (int k = 0; k < rows; ++k) {
         double y = l->bar_y + k;
-        if (rect(r, l->bar_x, y, l->bar_x + l->bar_w, y + 1.0, rc_viridis((k + 0.5) / rows)))
+        if (rect(r, l->bar_x, y, l->bar_x + l->bar_w, y + 1.0, map((k + 0.5) / rows)))
             return -1;
     }
     const double line = l->text_px, gap = 4.0 * l->text_px, h = RF_HEIGHT * l->text_px;
-    char top[32];
-    snprintf(top, sizeof top, vmax >= 10.0 ? "%.0f" : "%.2g", vmax);
     if (rect(r, l->bar_x - line, l->bar_y - line, l->bar_x + l->bar_w + line, l->bar_y,
              RC_OUTLINE) ||
         rect(r, l->bar_x - line, l->bar_y + l->bar_h, l->bar_x + l->bar_w + line,
              l->bar_y + l->bar_h + line, RC_OUTLINE) ||
         text(r, l->bar_x, l->bar_y + l->bar_h + gap, l->text_px, top, RC_OUTLINE) ||
-        text(r, l->bar_x, l->bar_y + l->bar_h + 2.0 * gap + h, l->text_px, "speed", RC_OUTLINE) ||
-        text(r, l->bar_x, l->bar_y - gap - h, l->text_px, "0", RC_OUTLINE))
+        text(r, l->bar_x, l->bar_y + l->bar_h + 2.0 * gap + h, l->text_px, caption, RC_OUTLINE) ||
+        text(r, l->bar_x, l->bar_y - gap - h, l->text_px, bottom, RC_OUTLINE))
         return -1;
     return 0;
+}
+
+static int speed_legend(rd_renderer *r, const rl_layout *l, double vmax)
+{
+    char top[32];
+    snprintf(top, sizeof top, vmax >= 10.0 ? "%.0f" : "%.2g", vmax);
+    return legend(r, l, rc_viridis, "0", top, "speed");
+}
+
+/* psi6 of every disk of the frame (cutoff 1.4 diameters of the largest
+ * disk, the first minimum of the dense liquid's g(r)) into re, im. */
+static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y, double *re,
+                      double *im, char *err, size_t errlen)
+{
+    const size_t n = frame->count;
+    double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), radius = 0.0;
+    ds_status st = DS_ERR_NOMEM;
+    if (x && y) {
+        for (size_t i = 0; i < n; ++i) {
+            x[i] = frame->disks[i].x;
+            y[i] = frame->disks[i].y;
+            radius = fmax(radius, frame->disks[i].r);
+        }
+        st = ds_local_psi6(n, x, y, r->opt.box, box_y, r->opt.periodic ? DS_PERIODIC : DS_WALLS,
+                           2.8 * radius, re, im);
+    }
+    free(x);
+    free(y);
+    if (st == DS_ERR_ARG && r->opt.periodic)
+        snprintf(err, errlen, "psi6: the periodic box is narrower than 2.8 diameters (%g)",
+                 2.8 * 2.0 * radius);
+    else if (st != DS_OK)
+        snprintf(err, errlen, "psi6: %s", ds_status_str(st));
+    return st == DS_OK ? 0 : -1;
 }
 
 static GLuint compile(GLenum type, const char *src, char *err, size_t errlen)
@@ -212,15 +247,35 @@ rd_renderer *rd_create(const rd_options *opt, char *err, size_t errlen)
 
 int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
 {
-    const int speeds = frame->columns == 5;
+    const rd_colour colour = r->opt.colour != RD_COLOUR_AUTO ? r->opt.colour
+                             : frame->columns == 5           ? RD_COLOUR_SPEED
+                                                             : RD_COLOUR_AUTO;
+    if (colour == RD_COLOUR_SPEED && frame->columns != 5) {
+        snprintf(err, errlen, "--colour speed needs frames of \"x y R vx vy\" lines");
+        return -1;
+    }
+    const int speeds = colour == RD_COLOUR_SPEED, psi6 = colour == RD_COLOUR_PSI6;
+    const double box_y = r->opt.box_y > 0.0 ? r->opt.box_y : r->opt.box;
     rl_layout l;
-    rl_make(&l, r->opt.size, r->opt.box, speeds);
+    rl_make_rect(&l, r->opt.size, r->opt.box, box_y, speeds || psi6);
     const double vmax = !speeds ? 0.0 : r->opt.vmax > 0.0 ? r->opt.vmax : rc_speed_scale(frame);
 
     r->count = 0;
     if (grow(r, frame->count * VERTICES_PER_QUAD)) {
         snprintf(err, errlen, "out of memory for %zu disks", frame->count);
         return -1;
+    }
+    double *re = NULL, *im = NULL;
+    if (psi6) {
+        re = malloc(frame->count * sizeof *re);
+        im = malloc(frame->count * sizeof *im);
+        if (!re || !im)
+            snprintf(err, errlen, "out of memory for %zu disks", frame->count);
+        if (!re || !im || frame_psi6(r, frame, box_y, re, im, err, errlen) != 0) {
+            free(re);
+            free(im);
+            return -1;
+        }
     }
     for (size_t i = 0; i < frame->count; ++i) {
         const ds_frame_disk *d = &frame->disks[i];
@@ -229,20 +284,28 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
         if (speeds) {
             double v = d->vx * d->vx + d->vy * d->vy;
             c = rc_viridis(sqrt(v) / vmax);
+        } else if (psi6) {
+            c = rc_psi6(re[i], im[i]);
         }
         /* One pixel beyond the radius holds the whole antialiased ramp. */
         const double e = rad + 1.0;
         quad(r, cx - e, cy - e, cx + e, cy + e, cx, cy, rad, c);
     }
+    free(re);
+    free(im);
     /* The outline goes over the disks: a disk touching a wall overlaps the
      * edge by a fraction of a step, and the box must stay visible. */
     const double h = 0.5 * l.outline;
     const double a0 = rl_px(&l, 0.0), a1 = rl_px(&l, l.box);
-    const double b0 = rl_py(&l, 0.0), b1 = rl_py(&l, l.box);
+    const double b0 = rl_py(&l, 0.0), b1 = rl_py(&l, l.box_y);
     if (rect(r, a0 - h, b0 - h, a1 + h, b0 + h, RC_OUTLINE) ||
         rect(r, a0 - h, b1 - h, a1 + h, b1 + h, RC_OUTLINE) ||
         rect(r, a0 - h, b0 + h, a0 + h, b1 - h, RC_OUTLINE) ||
-        rect(r, a1 - h, b0 + h, a1 + h, b1 - h, RC_OUTLINE) || (speeds && legend(r, &l, vmax))) {
+        rect(r, a1 - h, b0 + h, a1 + h, b1 - h, RC_OUTLINE) ||
+        (speeds && speed_legend(r, &l, vmax)) ||
+        /* The psi6 bar: bond orientations from -30 to +30 degrees at full
+         * order, t as rc_psi6 maps the phase. */
+        (psi6 && legend(r, &l, rc_cyclic, "-30", "30", "psi6"))) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }

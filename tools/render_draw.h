@@ -11,10 +11,20 @@
 
 typedef struct rd_renderer rd_renderer;
 
+/* What a disk's colour shows. */
+typedef enum rd_colour {
+    RD_COLOUR_AUTO = 0, /* speed for "x y R vx vy" frames, one colour otherwise */
+    RD_COLOUR_SPEED,    /* speed (viridis); the frame must have velocities */
+    RD_COLOUR_PSI6      /* bond orientation arg(psi6) / 6, darkened where |psi6| is small */
+} rd_colour;
+
 typedef struct rd_options {
-    int size;    /* image side in pixels */
-    double box;  /* box side in frame units (1000) */
-    double vmax; /* top of the speed scale for 5-column frames, 0 = automatic */
+    int size;         /* image side in pixels */
+    double box;       /* box width in frame units (1000) */
+    double box_y;     /* box height, 0 = box (square) */
+    int periodic;     /* psi6 neighbours across the edges (minimum image) */
+    rd_colour colour; /* what the colours show */
+    double vmax;      /* top of the speed scale for 5-column frames, 0 = automatic */
 } rd_options;
 
 /* Compiles the shaders and makes the buffers, once per context. */

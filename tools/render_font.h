@@ -1,5 +1,5 @@
 /* A 5x7 bitmap font for the legend: digits, '.', '-', '+', 'e' and the
- * letters of "speed". Enough for the labels; no font library needed. */
+ * letters of "speed" and "psi6". Enough for the labels; no font library needed. */
 #ifndef RENDER_FONT_H
 #define RENDER_FONT_H
 

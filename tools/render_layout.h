@@ -6,7 +6,8 @@
 
 typedef struct rl_layout {
     int size;                          /* the image is size x size pixels */
-    double box;                        /* side of the simulation box in frame units */
+    double box;                        /* width of the simulation box in frame units */
+    double box_y;                      /* its height */
     double scale;                      /* pixels per frame unit */
     double x0, y0;                     /* pixel position of the box corner (0, 0) */
     double outline;                    /* width of the box outline, centred on the box edge */
@@ -15,11 +16,15 @@ typedef struct rl_layout {
     double text_px;                    /* size of one font pixel */
 } rl_layout;
 
-/* size >= RL_MIN_SIZE. The box is square and keeps a margin on every side
- * so its outline is always visible; a legend takes a strip on the right. */
+/* size >= RL_MIN_SIZE. The box keeps a margin on every side so its outline
+ * is always visible; a legend takes a strip on the right. rl_make lays out
+ * a square box of side box, filling the width left of the legend;
+ * rl_make_rect a box_x by box_y box, as large as fits in the same space,
+ * centred in it (a square box is laid out exactly as by rl_make). */
 #define RL_MIN_SIZE 32
 #define RL_MAX_SIZE 16384
 void rl_make(rl_layout *l, int size, double box, int legend);
+void rl_make_rect(rl_layout *l, int size, double box_x, double box_y, int legend);
 
 /* Frame coordinates to pixels. */
 static inline double rl_px(const rl_layout *l, double x) { return l->x0 + x * l->scale; }
