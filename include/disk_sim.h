@@ -282,8 +282,9 @@ void ds_reset_observables(ds_sim *sim);
 ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x, double box_y,
                         ds_boundary boundary, double cutoff, double *re, double *im);
 /* Global order |(1/N) sum_j psi6_j| of the disks at ds_time, in the sim's
- * box and boundary, with cutoff 1.4 d (d = 2R: the first minimum of g(r) of
- * the dense hard-disk liquid is near 1.4 d). Near 1 for a crystal of one
+ * box and boundary, with cutoff 1.4 d (d = 2R: past the first shell of
+ * neighbours, short of the dense liquid's first minimum of g(r), 1.55 d at
+ * area fraction 0.70, and of a crystal's second shell). Near 1 for a crystal of one
  * orientation, O(1/sqrt N) for a liquid; a lattice sparser than 1.4 d has
  * no bonds and gives 0. NaN if sim is NULL, memory runs out, or a periodic
  * box is narrower than 2.8 d. */

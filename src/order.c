@@ -13,8 +13,10 @@
 
 #include "sim_internal.h"
 
-/* The first minimum of g(r) of the dense hard-disk liquid lies near 1.4
- * diameters: closer centres are the first shell of neighbours. */
+/* Closer centres are the first shell of neighbours: the first peak of
+ * g(r) of the dense liquid has fallen below 1 by 1.4 diameters, and its
+ * first minimum (1.55 d at area fraction 0.70) and a crystal's second
+ * shell (sqrt 3 spacings) lie beyond. */
 #define PSI6_CUTOFF_DIAMETERS 1.4
 
 /* A dilute system would want more cells than disks (a tiny cutoff in a huge

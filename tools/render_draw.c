@@ -143,7 +143,7 @@ static int speed_legend(rd_renderer *r, const rl_layout *l, double vmax)
 }
 
 /* psi6 of every disk of the frame (cutoff 1.4 diameters of the largest
- * disk, the first minimum of the dense liquid's g(r)) into re, im. */
+ * disk, as ds_psi6) into re, im. */
 static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y, double *re,
                       double *im, char *err, size_t errlen)
 {
