@@ -10,7 +10,7 @@
 #
 # Writes eos.dat (rows of tools/pressure) for N disks, eos_size.dat (area
 # fraction 0.70 at several N, for the finite-size effect) and, with
-# gnuplot, eos.png (tools/plot_eos.plt). About an hour on one core of the
+# gnuplot, eos.png (tools/plot_eos.plt). About 70 minutes on one core of the
 # machine in README.md, with the defaults.
 #
 #   sh tools/eos.sh [N] [RELAX] [BLOCKS] [BLOCK]    (run from the top directory)
@@ -35,7 +35,7 @@ done
 # The same point at a quarter and at four times N (shorter for the large one).
 : > eos_size.dat
 run $((n / 4)) 0.70 $((2 * relax)) 20 "$block" | tee -a eos_size.dat
-grep '^0.7 ' eos.dat >> eos_size.dat
+awk '$1 == 0.7' eos.dat >> eos_size.dat
 run $((4 * n)) 0.70 "$relax" 8 "$((block / 2))" | tee -a eos_size.dat
 if command -v gnuplot >/dev/null 2>&1; then
     gnuplot tools/plot_eos.plt && echo "wrote eos.png"
