@@ -116,7 +116,7 @@ typedef enum ds_placement {
      * spread evenly), the (c, m) whose closest sites are farthest apart;
      * it fits without strain, up to close packing (area fraction
      * pi / (2 sqrt 3) = 0.9069), in a periodic box of aspect
-     * box_y / box = sqrt(3) c / (2 m). ds_check_params refuses
+     * box_y / box = sqrt(3) m / (2 c). ds_check_params refuses
      * (DS_ERR_PLACEMENT) a request whose best lattice would overlap. In a
      * periodic box the total momentum is made zero. */
     DS_LATTICE

@@ -7,7 +7,7 @@
  * alternate across the seam too); with walls they span the rectangle the
  * centres reach, edge to edge.
  * Of all (c, m), the one whose closest pair of sites is farthest apart is
- * taken; a box of aspect sqrt(3) c / (2 m) fits it without strain, up to
+ * taken; a box with box_y / box = sqrt(3) m / (2 c) fits it without strain, up to
  * close packing (area fraction pi / (2 sqrt 3) = 0.9069). The c m - n
  * sites left empty are spread evenly over the lattice.
  *
