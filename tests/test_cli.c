@@ -498,6 +498,11 @@ static void interrupt_a_run(int sig)
         dup2(devnull, STDERR_FILENO);
         if (chdir(dir) != 0)
             _exit(125);
+        /* As from a terminal: a shell starts background jobs with SIGINT
+         * ignored, disks keeps an ignored signal ignored (as nohup wants),
+         * and the run would then not stop. */
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
         alarm(CASE_TIMEOUT_SECONDS);
         execl(disks_path, disks_path, "3000", "2", "--frames", "10000", "--steps-per-frame", "1",
               "--quiet", "--out", "out", "--trajectory", "t.xyz", (char *)NULL);
