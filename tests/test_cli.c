@@ -526,7 +526,7 @@ static void interrupt_a_run(int sig)
     if (done != pid)
         fail_msg("signal %d: waitpid returned %d (%s)", sig, (int)done, strerror(errno));
     if (!WIFSIGNALED(ws))
-        fail_msg("signal %d: disks exited with status %d before it was signalled", sig,
+        fail_msg("signal %d: disks exited with status %d, not by the signal", sig,
                  WIFEXITED(ws) ? WEXITSTATUS(ws) : -1);
     assert_int_equal(WTERMSIG(ws), sig);
 
