@@ -26,22 +26,6 @@ static ds_sim *create(size_t n, double radius, double box, uint64_t seed, ds_bro
     return sim;
 }
 
-static void place(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
-{
-    const ds_disk d = {x, y, vx, vy};
-    assert_int_equal(ds_set(sim, i, d), DS_OK);
-}
-
-/* |got - want| within 1e-9 of |want| (or of 1 for want = 0). */
-static void assert_close(double got, double want)
-{
-    const double scale = fabs(want) > 1.0 ? fabs(want) : 1.0;
-    if (!(fabs(got - want) <= 1e-9 * scale)) {
-        print_error("got %.17g, want %.17g\n", got, want);
-        fail();
-    }
-}
-
 static void assert_disk(const ds_sim *sim, size_t i, double x, double y, double vx, double vy)
 {
     const ds_disk d = ds_get(sim, i);

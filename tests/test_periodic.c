@@ -24,22 +24,6 @@ static ds_sim *create_box(size_t n, double radius, double box, double box_y, ds_
     return sim;
 }
 
-static void place(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
-{
-    const ds_disk d = {x, y, vx, vy};
-    assert_int_equal(ds_set(sim, i, d), DS_OK);
-}
-
-/* |got - want| within 1e-9 of max(|want|, 1): the header's promise. */
-static void assert_close(double got, double want)
-{
-    const double scale = fabs(want) > 1.0 ? fabs(want) : 1.0;
-    if (!(fabs(got - want) <= 1e-9 * scale)) {
-        print_error("got %.17g, want %.17g\n", got, want);
-        fail();
-    }
-}
-
 static double nearest(double r, double side)
 {
     return r > 0.5 * side ? r - side : r < -0.5 * side ? r + side : r;

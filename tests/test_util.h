@@ -82,6 +82,24 @@ static inline double ks_distance_to_rayleigh(const ds_sim *sim)
  * differs from Rayleigh by O(1/N) ~ 5e-4, far below the critical value. */
 static inline double ks_critical_1_percent(size_t n) { return 1.628 / sqrt((double)n); }
 
+/* Sets disk i, which must be accepted. */
+static inline void place(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
+{
+    const ds_disk d = {x, y, vx, vy};
+    assert_int_equal(ds_set(sim, i, d), DS_OK);
+}
+
+/* |got - want| within 1e-9 of max(|want|, 1): the header's promise for
+ * the event-driven integrator's contacts and wall turns. */
+static inline void assert_close(double got, double want)
+{
+    const double scale = fabs(want) > 1.0 ? fabs(want) : 1.0;
+    if (!(fabs(got - want) <= 1e-9 * scale)) {
+        print_error("got %.17g, want %.17g\n", got, want);
+        fail();
+    }
+}
+
 /* The hard-disk virial series through B10 (Clisby and McCoy 2006, J.
  * Stat. Phys. 122, 15; reduced coefficients B_k / B_2^(k-1)), in 2 eta =
  * B_2 rho. A strict lower bound on Z, tight below eta = 0.4: Z = 1.23614
