@@ -34,7 +34,7 @@ DISKS := $(OUT)disks
 LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
            src/broad_phase.c src/broad_phase_strips.c src/broad_phase_seam.c src/time_step.c \
            src/cells.c src/event_queue.c src/event_driven.c src/event_predict.c \
-           src/event_fetch.c src/number_text.c \
+           src/event_fetch.c src/large_alloc.c src/number_text.c \
            src/placement_lattice.c src/frame_io.c src/xyz.c src/order.c src/sim.c
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "cells.h"
+#include "large_alloc.h"
 
 /* Cells per dimension for a side of length box: the most that are still
  * at least min_side wide, at most cap. The relative slack keeps the cells
@@ -25,8 +26,8 @@ static void grid_shape(size_t n, double box_x, double box_y, double min_side, ui
     const double total = 4.0 * (double)n + 16.0;
     const double cap_x = fmin(ceil(sqrt(total * box_x / box_y)), (double)max_side);
     const double cap_y = fmin(ceil(sqrt(total * box_y / box_x)), (double)max_side);
-    *nx = cells_along(box_x, min_side, fmin(cap_x, 65536.0));
-    *ny = cells_along(box_y, min_side, fmin(cap_y, 65536.0));
+    *nx = cells_along(box_x, min_side, fmin(cap_x, (double)DS_CELLS_MAX_SIDE));
+    *ny = cells_along(box_y, min_side, fmin(cap_y, (double)DS_CELLS_MAX_SIDE));
 }
 
 size_t ds_cells_bytes(size_t n, double box_x, double box_y, double min_side,
@@ -48,7 +49,7 @@ ds_status ds_cells_init(ds_cells *cells, size_t n, double box_x, double box_y, d
     cells->inv_wy = cells->ny / box_y;
     cells->empty = (uint32_t)n;
     const size_t count = (size_t)cells->nx * cells->ny;
-    cells->slot = malloc(count * DS_CELL_SLOTS * sizeof *cells->slot);
+    cells->slot = ds_large_alloc(count * DS_CELL_SLOTS * sizeof *cells->slot);
     cells->more = malloc(count * sizeof *cells->more);
     cells->next = malloc((n ? n : 1) * sizeof *cells->next);
     if (!cells->slot || !cells->more || !cells->next) {

@@ -22,6 +22,8 @@
 #include "disk_sim.h"
 
 #define DS_CELL_SLOTS 4
+/* Cells per dimension at most: a column or row fits in 16 bits. */
+#define DS_CELLS_MAX_SIDE 65535u
 
 typedef struct ds_cells {
     uint32_t nx, ny; /* cells per row and per column */

@@ -38,10 +38,13 @@
 
 #include "boundary.h"
 #include "event_driven.h"
+#include "large_alloc.h"
 
 static void schedule(ds_sim *sim, ds_events *e, uint32_t i)
 {
-    ds_eq_set(e->queue, i, ds_ed_predict(sim, e, i));
+    const double t = ds_ed_predict(sim, e, i);
+    e->disk[i].next = t;
+    ds_eq_set(e->queue, i, t);
 }
 
 /* ------------------------------------------------------------------ */
@@ -111,7 +114,7 @@ static void cross_cell(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis
     ds_cells *cells = &e->cells;
     advance(d, t);
     ds_cells_remove(cells, ds_cells_index(cells, d->column, d->row), i);
-    uint32_t *c = axis_y ? &d->row : &d->column;
+    uint16_t *c = axis_y ? &d->row : &d->column;
     const uint32_t count = axis_y ? cells->ny : cells->nx;
     double *u = axis_y ? &d->y : &d->x;
     const double box = axis_y ? e->box_y : e->box_x;
@@ -120,11 +123,10 @@ static void cross_cell(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis
             *c = 0;
             *u -= box;
         }
+    } else if (*c == 0) {
+        *c = (uint16_t)(count - 1);
+        *u += box;
     } else {
-        if (*c == 0) {
-            *c = count;
-            *u += box;
-        }
         --*c;
     }
     ds_cells_add(cells, ds_cells_index(cells, d->column, d->row), i);
@@ -185,7 +187,8 @@ static void rebase(ds_events *e, size_t n, double t, double *times)
     for (size_t k = 0; k < n; ++k) {
         advance(&e->disk[k], t);
         e->disk[k].t = 0.0;
-        times[k] = ds_eq_time(e->queue, (uint32_t)k) - t;
+        e->disk[k].next -= t;
+        times[k] = e->disk[k].next;
     }
     ds_eq_build(e->queue, times, 0.0);
     e->epoch += t;
@@ -201,7 +204,7 @@ void ds_ed_run(ds_sim *sim, uint64_t steps)
         target = (double)(sim->steps + 1) * sim->dt - e->epoch;
         for (;;) {
             const uint32_t i = ds_eq_first(e->queue);
-            const double t = ds_eq_time(e->queue, i);
+            const double t = e->disk[i].next;
             if (!(t < target))
                 break;
             if (e->fetching)
@@ -229,7 +232,7 @@ size_t ds_ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broad
 {
     size_t cells = ds_cells_bytes(n, box_x, box_y, 2.0 * radius,
                                   grid_of(bp) == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
-    return sizeof(ds_events) + 64 + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
+    return sizeof(ds_events) + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
 }
 
 void ds_ed_destroy(ds_sim *sim)
@@ -239,7 +242,7 @@ void ds_ed_destroy(ds_sim *sim)
         return;
     ds_eq_destroy(e->queue);
     ds_cells_free(&e->cells);
-    free(e->disk_block);
+    free(e->disk);
     free(e);
     sim->events = NULL;
 }
@@ -304,22 +307,19 @@ ds_status ds_ed_create(ds_sim *sim)
      * cheap beside them, and times stay below ~10 crossing times. */
     e->rebase_time = fmax(sim->box, sim->box_y) / sim->speed;
 
-    e->disk_block = malloc(n * sizeof(ed_disk) + 63);
-    ds_status st = e->disk_block ? DS_OK : DS_ERR_NOMEM;
+    e->disk = ds_large_alloc(n * sizeof(ed_disk));
+    ds_status st = e->disk ? DS_OK : DS_ERR_NOMEM;
     if (st == DS_OK)
         st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * sim->radius,
                            sim->broadphase == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
     if (st == DS_OK)
         st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR);
-    if (st == DS_OK) {
-        e->queue_slot = ds_eq_slots(e->queue);
+    if (st == DS_OK)
         st = sort_slots_by_cell(sim, &e->cells);
-    }
     if (st != DS_OK) {
         ds_ed_destroy(sim);
         return st;
     }
-    e->disk = (ed_disk *)(((uintptr_t)e->disk_block + 63) & ~(uintptr_t)63);
 
     for (size_t k = n; k-- > 0;) {
         ed_disk *d = &e->disk[k];
@@ -328,8 +328,9 @@ ds_status ds_ed_create(ds_sim *sim)
         d->y = sim->y[k];
         d->vx = sim->vx[k];
         d->vy = sim->vy[k];
-        d->column = ds_cells_column(&e->cells, d->x);
-        d->row = ds_cells_row(&e->cells, d->y);
+        d->column = (uint16_t)ds_cells_column(&e->cells, d->x);
+        d->row = (uint16_t)ds_cells_row(&e->cells, d->y);
+        d->next = INFINITY;
         ds_cells_add(&e->cells, ds_cells_index(&e->cells, d->column, d->row), (uint32_t)k);
     }
     /* Predict everyone, then build the calendar from all the times at once
@@ -343,6 +344,8 @@ ds_status ds_ed_create(ds_sim *sim)
     const uint64_t tested = sim->pairs_tested;
     for (size_t k = 0; k < n; ++k)
         times[k] = ds_ed_predict(sim, e, (uint32_t)k);
+    for (size_t k = 0; k < n; ++k)
+        e->disk[k].next = times[k];
     sim->pairs_tested = tested;
     ds_eq_build(e->queue, times, 0.0);
     free(times);
@@ -408,8 +411,8 @@ ds_status ds_ed_set(ds_sim *sim, size_t k, ds_disk nd)
     d->vx = nd.vx;
     d->vy = nd.vy;
     d->t = now;
-    d->column = column;
-    d->row = row;
+    d->column = (uint16_t)column;
+    d->row = (uint16_t)row;
     ds_cells_add(cells, ds_cells_index(cells, column, row), (uint32_t)k);
     ++d->changes; /* whatever was predicted against the old disk is stale */
     schedule(sim, e, (uint32_t)k);

@@ -31,24 +31,24 @@
 
 /* One disk: everything an event reads or writes about it, in one 64-byte
  * cache line. Events visit disks in no spatial order, so a disk's fields
- * side by side cost one memory access where separate arrays cost five. */
+ * side by side cost one memory access where separate arrays cost five.
+ * The time of its scheduled event is here as well as in the calendar:
+ * predicting a neighbour reads it, beside the neighbour's state. */
 typedef struct ed_disk {
     double x, y, vx, vy;
     double t;                 /* the time x, y belong to */
-    uint32_t column, row;     /* its cell */
+    double next;              /* the time of its scheduled event */
+    uint16_t column, row;     /* its cell (DS_CELLS_MAX_SIDE per side) */
     uint32_t changes;         /* velocity changes so far */
     uint32_t partner;         /* the scheduled event: a disk or an EV_* */
     uint32_t partner_changes; /* the partner's changes when it was predicted */
-    uint32_t unused;
 } ed_disk;
 
 struct ds_events {
-    ed_disk *disk; /* n, 64-byte aligned inside disk_block */
-    void *disk_block;
+    ed_disk *disk; /* n, 64-byte aligned */
     ds_cells cells;
     ds_event_queue *queue;
-    const ds_eq_slot *queue_slot; /* the queue's times, read in the hot loop */
-    int fetching;                 /* fetch ahead (large systems) */
+    int fetching; /* fetch ahead (large systems) */
     /* Disks whose events come up soon (the calendar's drained times), for
      * fetching ahead; see "Fetching ahead". */
     uint32_t ahead[AHEAD_MASK + 1];
@@ -71,6 +71,13 @@ typedef struct ds_ed_stencil_cells {
 } ds_ed_stencil_cells;
 
 void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st);
+
+/* Whether disk d's 3 x 3 cells are all inside the grid, none across an
+ * edge (unsigned arithmetic: column 0 wraps to a huge column - 1). */
+static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
+{
+    return (uint32_t)d->column - 1u < cells->nx - 2u && (uint32_t)d->row - 1u < cells->ny - 2u;
+}
 
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):
  * records it in the disk and returns its time. */

@@ -7,7 +7,7 @@
  * ahead, so their memory is requested then, in three stages a few events
  * apart, each needing what the one before brought in: the disk's record;
  * then its partner's record and its three rows of cells; then the records
- * of the disks in those cells and their scheduled times. */
+ * of the disks in those cells (state and scheduled time, one line each). */
 #include "event_driven.h"
 #include "prefetch.h"
 
@@ -28,9 +28,9 @@
 FETCHER const uint32_t *cells_around(const ds_events *e, const ed_disk *d)
 {
     const ds_cells *cells = &e->cells;
-    if (d->column - 1 >= cells->nx - 2 || d->row - 1 >= cells->ny - 2)
+    if (!ds_ed_interior(cells, d))
         return NULL;
-    return ds_cells_slots(cells, ds_cells_index(cells, d->column - 1, d->row - 1));
+    return ds_cells_slots(cells, ds_cells_index(cells, d->column - 1u, d->row - 1u));
 }
 
 FETCHER void fetch_cell_rows(const ds_events *e, const ed_disk *d)
@@ -53,10 +53,8 @@ FETCHER void fetch_cell_disks(const ds_events *e, const ed_disk *d)
     const size_t stride = (size_t)e->cells.nx * DS_CELL_SLOTS;
     for (int r = 0; r < 3; ++r, slot += stride)
         for (int k = 0; k < 3 * DS_CELL_SLOTS; ++k)
-            if (slot[k] != e->cells.empty) {
+            if (slot[k] != e->cells.empty)
                 ds_prefetch(&e->disk[slot[k]]);
-                ds_prefetch(&e->queue_slot[slot[k]]);
-            }
 }
 
 /* The calendar names a disk whose event comes up soon: the first stage.

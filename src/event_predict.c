@@ -77,19 +77,6 @@ typedef struct predictor {
     double sx[9], sy[9];
 } predictor;
 
-/* Keeps candidate k (time t) if it beats the best so far. Only a
- * collision no later than the partner's own next event is kept: if the
- * partner changes course first, it is predicted again then and finds the
- * pair itself. */
-static inline void keep_if_earlier(predictor *pr, uint32_t k, double t)
-{
-    if (t < pr->best && t <= pr->e->queue_slot[k].time) {
-        pr->best = t;
-        pr->kind = k;
-        pr->partner_changes = pr->e->disk[k].changes;
-    }
-}
-
 /* Pair times: when disk d (at time now) and disk p (at its own time, its
  * centre shifted by (sx, sy) to the image in question) come within
  * sqrt(sigma2), or +infinity. Positive b means separating: never. The
@@ -108,11 +95,20 @@ static inline void keep_if_earlier(predictor *pr, uint32_t k, double t)
 #if defined(__SSE2__)
 /* Two candidates per iteration, lane by lane the same arithmetic as the
  * plain-C pair_time below (so the same times to the bit): a disk's fields
- * are gathered into the two lanes with one load each. A lane that beats the best so far
- * is rare (a few per prediction), and then handled one lane at a time. */
+ * are gathered into the two lanes with one load each. Each lane keeps its
+ * earliest time and that candidate's place, chosen with masks: which
+ * candidate beats the best so far is a coin toss the branch predictor
+ * lost a few times per prediction, each time throwing away the square
+ * roots and divisions in flight. The two lanes are merged at the end,
+ * the earlier place winning a tie, as in the plain-C loop. */
 static inline __m128d load_pair(const double *a, const double *b)
 {
     return _mm_loadh_pd(_mm_load_sd(a), b);
+}
+
+static inline __m128d select_pd(__m128d mask, __m128d yes, __m128d no)
+{
+    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
 }
 
 static inline void test_gathered(predictor *pr, int shifted)
@@ -127,10 +123,11 @@ static inline void test_gathered(predictor *pr, int shifted)
     const __m128d dvx = _mm_set1_pd(d->vx), dvy = _mm_set1_pd(d->vy);
     const __m128d now = _mm_set1_pd(pr->now), sigma2 = _mm_set1_pd(e->sigma2);
     const __m128d zero = _mm_setzero_pd(), sign = _mm_set1_pd(-0.0);
-    const __m128d never = _mm_set1_pd((double)INFINITY);
-    for (uint32_t j = 0; j < pr->count; j += 2) {
-        const uint32_t k0 = pr->disk[j], k1 = pr->disk[j + 1];
-        const ed_disk *p0 = &e->disk[k0], *p1 = &e->disk[k1];
+    const __m128d never = _mm_set1_pd((double)INFINITY), two = _mm_set1_pd(2.0);
+    __m128d best = _mm_set1_pd(pr->best), best_place = _mm_set1_pd(-1.0);
+    __m128d place = _mm_set_pd(1.0, 0.0);
+    for (uint32_t j = 0; j < pr->count; j += 2, place = _mm_add_pd(place, two)) {
+        const ed_disk *p0 = &e->disk[pr->disk[j]], *p1 = &e->disk[pr->disk[j + 1]];
         const __m128d pvx = load_pair(&p0->vx, &p1->vx), pvy = load_pair(&p0->vy, &p1->vy);
         const __m128d lag = _mm_sub_pd(now, load_pair(&p0->t, &p1->t));
         __m128d rx = _mm_add_pd(load_pair(&p0->x, &p1->x), _mm_mul_pd(pvx, lag));
@@ -152,17 +149,41 @@ static inline void test_gathered(predictor *pr, int shifted)
         const __m128d den = _mm_add_pd(_mm_sqrt_pd(_mm_max_pd(disc, zero)), _mm_andnot_pd(sign, b));
         const __m128d t = _mm_add_pd(now, _mm_div_pd(_mm_max_pd(c, zero), den));
         const __m128d ok = _mm_and_pd(_mm_cmplt_pd(b, zero), _mm_cmpgt_pd(disc, zero));
-        const __m128d time = _mm_or_pd(_mm_and_pd(ok, t), _mm_andnot_pd(ok, never));
-        const int earlier = _mm_movemask_pd(_mm_cmplt_pd(time, _mm_set1_pd(pr->best)));
-        if (earlier & 1)
-            keep_if_earlier(pr, k0, _mm_cvtsd_f64(time));
-        if (earlier & 2)
-            keep_if_earlier(pr, k1, _mm_cvtsd_f64(_mm_unpackhi_pd(time, time)));
+        const __m128d time = select_pd(ok, t, never);
+        /* keep_if_earlier (below), lane by lane. */
+        const __m128d partner_next = load_pair(&p0->next, &p1->next);
+        const __m128d take = _mm_and_pd(_mm_cmplt_pd(time, best), _mm_cmple_pd(time, partner_next));
+        best = select_pd(take, time, best);
+        best_place = select_pd(take, place, best_place);
     }
     pr->tested += pr->count;
     pr->count = 0;
+    const double t0 = _mm_cvtsd_f64(best), t1 = _mm_cvtsd_f64(_mm_unpackhi_pd(best, best));
+    const double j0 = _mm_cvtsd_f64(best_place);
+    const double j1 = _mm_cvtsd_f64(_mm_unpackhi_pd(best_place, best_place));
+    const int second = t1 < t0 || (t1 == t0 && j1 >= 0.0 && (j0 < 0.0 || j1 < j0));
+    const double t = second ? t1 : t0, j = second ? j1 : j0;
+    if (j >= 0.0 && t < pr->best) {
+        const uint32_t k = pr->disk[(uint32_t)j];
+        pr->best = t;
+        pr->kind = k;
+        pr->partner_changes = e->disk[k].changes;
+    }
 }
 #else
+/* Keeps candidate k (time t) if it beats the best so far. Only a
+ * collision no later than the partner's own next event is kept: if the
+ * partner changes course first, it is predicted again then and finds the
+ * pair itself. */
+static inline void keep_if_earlier(predictor *pr, uint32_t k, double t)
+{
+    if (t < pr->best && t <= pr->e->disk[k].next) {
+        pr->best = t;
+        pr->kind = k;
+        pr->partner_changes = pr->e->disk[k].changes;
+    }
+}
+
 /* The time at which disk d (at time now) and disk p (at its own time,
  * its centre shifted by (sx, sy) to the image in question) come within
  * sqrt(sigma2), or +infinity: the plain-C form of test_gathered's SSE2
@@ -257,11 +278,11 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
     axis_event(d->y, d->vy, d->row, cells->ny, cells->wy, e->lo_y, e->hi_y, walls, EV_CELL_Y,
                EV_WALL_Y, pr.now, &pr.best, &pr.kind);
 
-    if (d->column - 1 < cells->nx - 2 && d->row - 1 < cells->ny - 2) {
+    if (ds_ed_interior(cells, d)) {
         /* Away from the edges of the grid (nearly every disk of a large
          * system): three rows of three cells, twelve consecutive slots
          * each, no shifts, no wrap; the disk itself is among them once. */
-        uint32_t cell = ds_cells_index(cells, d->column - 1, d->row - 1);
+        uint32_t cell = ds_cells_index(cells, d->column - 1u, d->row - 1u);
         for (int r = 0; r < 3; ++r, cell += cells->nx) {
             const uint32_t *slot = ds_cells_slots(cells, cell);
             if (pr.count + 3 * DS_CELL_SLOTS > GATHER_CAP)

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 
 #include "event_queue.h"
+#include "large_alloc.h"
 #include "prefetch.h"
 
 #define NONE UINT32_MAX
@@ -71,8 +72,7 @@ struct ds_event_queue {
 
     /* Calendar only. Bucket b (absolute) covers [b, b+1) / inv_width and
      * lives in bucket[b & mask] while current < b < current + nbuckets. */
-    void *bucket_block; /* bucket, aligned to a cache line inside it */
-    bucket *bucket;
+    bucket *bucket; /* aligned to a cache line */
     size_t nbuckets;
     uint64_t mask;
     double inv_width;
@@ -107,7 +107,7 @@ size_t ds_eq_bytes(size_t n, ds_eq_kind kind)
     size_t bytes = sizeof(ds_event_queue) + n * sizeof(ds_eq_slot);
     if (kind == DS_EQ_HEAP)
         return bytes + n * sizeof(heap_node);
-    return bytes + (n + 4096) * sizeof(heap_node) + (bucket_count(n) + 1) * sizeof(bucket) +
+    return bytes + (n + 4096) * sizeof(heap_node) + bucket_count(n) * sizeof(bucket) +
            n * (sizeof(pool_entry) + sizeof(uint32_t));
 }
 
@@ -123,19 +123,16 @@ ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind)
     q->n = n;
     /* The calendar's heap also holds stale entries, until compacted. */
     q->heap_cap = kind == DS_EQ_HEAP ? n : n + 4096;
-    q->slot = malloc(n * sizeof *q->slot);
+    q->slot = ds_large_alloc(n * sizeof *q->slot);
     q->heap = malloc(q->heap_cap * sizeof *q->heap);
     int failed = !q->slot || !q->heap;
     if (kind == DS_EQ_CALENDAR) {
         q->nbuckets = bucket_count(n);
         q->mask = q->nbuckets - 1;
-        q->bucket_block = malloc((q->nbuckets + 1) * sizeof(bucket));
+        q->bucket = ds_large_alloc(q->nbuckets * sizeof(bucket));
         q->pool = malloc(n * sizeof *q->pool);
         q->far_next = malloc(n * sizeof *q->far_next);
-        failed = failed || !q->bucket_block || !q->pool || !q->far_next;
-        if (!failed)
-            q->bucket = (bucket *)(((uintptr_t)q->bucket_block + sizeof(bucket) - 1) &
-                                   ~(uintptr_t)(sizeof(bucket) - 1));
+        failed = failed || !q->bucket || !q->pool || !q->far_next;
     }
     if (failed) {
         ds_eq_destroy(q);
@@ -158,7 +155,7 @@ void ds_eq_destroy(ds_event_queue *q)
         return;
     free(q->slot);
     free(q->heap);
-    free(q->bucket_block);
+    free(q->bucket);
     free(q->pool);
     free(q->far_next);
     free(q);
