@@ -55,6 +55,13 @@ static void test_a_dilute_gas_gets_a_few_cells_per_disk_not_millions(void **stat
     assert_int_equal(ds_cells_init(&cells, 100, 1000.0, 1000.0, 0.02, UINT32_MAX), DS_OK);
     assert_true((size_t)cells.nx * cells.ny <= 4 * 100 + 64);
     ds_cells_free(&cells);
+    /* A long channel, 1e6 x 4 with 5,000 disks of R = 0.5: 1e6 cells of
+     * 2R along it would fit, and sqrt(4 n) shared out by aspect would be
+     * 70,700; a disk's column is 16 bits, so 65,535 at most. */
+    assert_int_equal(ds_cells_init(&cells, 5000, 1e6, 4.0, 1.0, UINT32_MAX), DS_OK);
+    assert_int_equal(cells.nx, DS_CELLS_MAX_SIDE);
+    assert_true(cells.wx >= 1.0);
+    ds_cells_free(&cells);
     /* max_side_cells = 1: one cell, everyone's candidate (brute force). */
     assert_int_equal(ds_cells_init(&cells, 100, 1000.0, 1000.0, 2.0, 1), DS_OK);
     assert_int_equal(cells.nx, 1);

@@ -475,6 +475,78 @@ static void test_brute_force_and_cells_follow_the_same_trajectory(void **state)
     ds_destroy(brute);
 }
 
+static int by_x(const void *a, const void *b)
+{
+    const double xa = ((const ds_disk *)a)->x, xb = ((const ds_disk *)b)->x;
+    return (xa > xb) - (xa < xb);
+}
+
+/* The closest centres in a periodic channel much longer than it is high
+ * (y by the nearest image), over 2R: a sweep along x, the disks near x = 0
+ * appended again one box further. */
+static double closest_in_channel(const ds_sim *sim)
+{
+    const size_t n = ds_count(sim);
+    const double box = ds_box(sim), box_y = ds_box_y(sim), d = 2.0 * ds_radius(sim);
+    ds_disk *all = malloc(2 * n * sizeof *all);
+    assert_non_null(all);
+    assert_int_equal(ds_get_all(sim, all), DS_OK);
+    qsort(all, n, sizeof *all, by_x);
+    size_t m = n;
+    for (size_t k = 0; k < n && all[k].x < d; ++k) {
+        all[m] = all[k];
+        all[m++].x += box;
+    }
+    double m2 = INFINITY;
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < m && all[j].x - all[i].x < d; ++j) {
+            const double dx = all[j].x - all[i].x, dy = remainder(all[j].y - all[i].y, box_y);
+            m2 = fmin(m2, dx * dx + dy * dy);
+        }
+    free(all);
+    return sqrt(m2) / d;
+}
+
+static void test_a_long_channel_caps_its_grid_and_keeps_its_disks_apart(void **state)
+{
+    (void)state;
+    /* 5,000 disks of R = 0.5 in a periodic channel 1e6 x 4: the grid is
+     * capped at 65,535 columns of 15.3 (test_cells; a disk's column is 16
+     * bits). One disk is sent across the seam from the last column to the
+     * first. After 10 units of travel: it has wrapped, every centre is in
+     * the box, no pair is closer than 2R (up to the header's 1e-9), energy
+     * holds to rounding and momentum to the rounding of its terms. */
+    ds_params p = ds_default_params(5000, 0.5);
+    p.integrator = DS_EVENT_DRIVEN;
+    p.boundary = DS_PERIODIC;
+    p.box = 1e6;
+    p.box_y = 4.0;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    /* Area fraction 0.001: the first free height will do. */
+    double y = 0.5;
+    while (ds_set(sim, 0, (ds_disk){p.box - 1.0, y, 100.0, 0.0}) != DS_OK)
+        y += 1.0;
+    const double e0 = ds_kinetic_energy(sim);
+    double px0, py0;
+    ds_momentum(sim, &px0, &py0);
+    ds_run(sim, 100);
+    const ds_disk crossed = ds_get(sim, 0);
+    assert_true(crossed.x >= 0.0 && crossed.x < 10.0); /* 9.0 unless it met a disk */
+    for (size_t i = 0; i < ds_count(sim); ++i) {
+        const ds_disk d = ds_get(sim, i);
+        assert_true(d.x >= 0.0 && d.x < p.box && d.y >= 0.0 && d.y < p.box_y);
+    }
+    assert_true(ds_collision_count(sim) > 0);
+    assert_true(closest_in_channel(sim) >= 1.0 - 1e-9);
+    assert_true(fabs(ds_kinetic_energy(sim) / e0 - 1.0) < 1e-12);
+    double px, py;
+    ds_momentum(sim, &px, &py);
+    /* Momenta of 5,000 disks of speed 100 summed: rounding ~1e-10. */
+    assert_true(fabs(px - px0) < 1e-8 && fabs(py - py0) < 1e-8);
+    ds_destroy(sim);
+}
+
 static void test_disks_at_rest_are_no_trouble(void **state)
 {
     (void)state;
@@ -528,6 +600,7 @@ int main(void)
         cmocka_unit_test(test_a_wall_turns_the_centre_at_exactly_R),
         cmocka_unit_test(test_a_corner_turns_both_components),
         cmocka_unit_test(test_newtons_cradle_passes_the_velocity_down_the_row),
+        cmocka_unit_test(test_a_long_channel_caps_its_grid_and_keeps_its_disks_apart),
         cmocka_unit_test(test_no_pair_ever_overlaps_in_a_dense_gas),
         cmocka_unit_test(test_energy_is_conserved_to_rounding_over_a_million_collisions),
         cmocka_unit_test(test_momentum_is_conserved_with_the_walls_out_of_reach),
