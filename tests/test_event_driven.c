@@ -184,8 +184,7 @@ static void test_momentum_is_conserved_with_the_walls_out_of_reach(void **state)
     /* As for the time step: 400 disks 12 apart (R = 5) in the middle of
      * the big box, random directions at 100. Every collision adds to one
      * disk what it takes from the other, so only rounding can change the
-     * sum: each collision changes it by at most ~eps vmax, and each of the
-     * two ds_momentum sums adds up to n eps sqrt(n) vmax. */
+     * sum (momentum_rounding_bound, test_util.h). */
     const size_t side = 20, n = side * side;
     ds_sim *sim = create(n, 5.0, BIG_BOX, 3, DS_AUTO);
     ds_rng rng;
@@ -202,8 +201,7 @@ static void test_momentum_is_conserved_with_the_walls_out_of_reach(void **state)
     ds_momentum(sim, &px, &py);
     assert_int_equal(ds_wall_count(sim), 0);
     assert_true(ds_collision_count(sim) > 100);
-    const double bound = 2.220446049250313e-16 * vmax *
-                         ((double)ds_collision_count(sim) + 2.0 * (double)n * sqrt((double)n));
+    const double bound = momentum_rounding_bound(ds_collision_count(sim), vmax, n);
     assert_true(fabs(px - px0) <= bound);
     assert_true(fabs(py - py0) <= bound);
     ds_destroy(sim);

@@ -103,18 +103,6 @@ static void test_kinetic_energy_is_conserved_over_50000_steps(void **state)
     ds_destroy(sim);
 }
 
-/* Rounding bound for the change of total momentum over `collisions` pair
- * resolutions, with speeds never above vmax. A pair adds t = s*dx to one
- * disk and subtracts the same computed t from the other, so the exact
- * change cancels and only the two roundings remain: <= eps * vmax per
- * component per collision. Each of the two ds_momentum sums compared adds
- * <= n eps sum|v| <= n eps sqrt(n) vmax (Cauchy-Schwarz, sum v^2 <= vmax^2
- * with vmax = sqrt(2E)). */
-static double momentum_rounding_bound(uint64_t collisions, double vmax, size_t n)
-{
-    return DBL_EPSILON * vmax * ((double)collisions + 2.0 * (double)n * sqrt((double)n));
-}
-
 static void test_momentum_is_conserved_when_the_walls_are_out_of_reach(void **state)
 {
     (void)state;

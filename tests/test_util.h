@@ -3,6 +3,7 @@
 #define DS_TEST_UTIL_H
 
 #define _POSIX_C_SOURCE 200809L
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -81,6 +82,18 @@ static inline double ks_distance_to_rayleigh(const ds_sim *sim)
  * relaxed gas fails with probability below 1%. The microcanonical marginal
  * differs from Rayleigh by O(1/N) ~ 5e-4, far below the critical value. */
 static inline double ks_critical_1_percent(size_t n) { return 1.628 / sqrt((double)n); }
+
+/* Rounding bound for the change of total momentum over `collisions` pair
+ * resolutions, with speeds never above vmax. A pair adds t = s*dx to one
+ * disk and subtracts the same computed t from the other, so the exact
+ * change cancels and only the two roundings remain: <= eps * vmax per
+ * component per collision. Each of the two ds_momentum sums compared adds
+ * <= n eps sum|v| <= n eps sqrt(n) vmax (Cauchy-Schwarz, sum v^2 <= vmax^2
+ * with vmax = sqrt(2E)). */
+static inline double momentum_rounding_bound(uint64_t collisions, double vmax, size_t n)
+{
+    return DBL_EPSILON * vmax * ((double)collisions + 2.0 * (double)n * sqrt((double)n));
+}
 
 /* Sets disk i, which must be accepted. */
 static inline void place(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
