@@ -13,7 +13,6 @@
  * so the quick tests are weaker but still honest. */
 #include "test_util.h"
 
-#include <float.h>
 
 #include "sim_internal.h"
 
