@@ -106,8 +106,11 @@ void ds_cells_remove(ds_cells *cells, uint32_t cell, uint32_t disk)
     for (int k = 0; k < DS_CELL_SLOTS; ++k)
         if (slot[k] == disk) {
             /* A slot freed while the overflow list holds disks takes one,
-             * so the list stays empty unless every slot is taken. */
-            const uint32_t first = cells->more[cell];
+             * so the list stays empty unless every slot is taken; and
+             * while the last slot is free, the list (another cache line)
+             * is not even read. */
+            const uint32_t first =
+                slot[DS_CELL_SLOTS - 1] != cells->empty ? cells->more[cell] : cells->empty;
             slot[k] = first;
             if (first != cells->empty)
                 cells->more[cell] = cells->next[first];

@@ -53,7 +53,7 @@ struct ds_events {
      * fetching ahead; see "Fetching ahead". */
     uint32_t ahead[AHEAD_MASK + 1];
     uint32_t ahead_tag[AHEAD_MASK + 1]; /* the event count at its last stage */
-    uint32_t ahead_tail, ahead_second, ahead_third;
+    uint32_t ahead_tail, ahead_second, ahead_third, ahead_fourth;
     uint32_t events;    /* events handled, mod 2^32 */
     double epoch;       /* simulated time of the integrator's t = 0 */
     double rebase_time; /* integrator time after which the epoch moves */

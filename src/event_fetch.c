@@ -2,12 +2,21 @@
  *
  * Events come in time order, which is no order in space: in a large
  * system each one touches memory far from the last (its disk, its partner,
- * the cells around it, their disks), and waits on main memory several
+ * the cells around them, their disks), and waits on main memory several
  * times in a row. The calendar knows which disks come up a few events
- * ahead, so their memory is requested then, in three stages a few events
- * apart, each needing what the one before brought in: the disk's record;
- * then its partner's record and its three rows of cells; then the records
- * of the disks in those cells (state and scheduled time, one line each). */
+ * ahead, so their memory is requested then, in four stages an event or
+ * more apart, each needing what the one before brought in:
+ *
+ * 1. the disk's record (ds_ed_on_soon);
+ * 2. its partner's record and calendar slot, and the rows of cells its
+ *    event will read (for a crossing, those of the cell it enters too);
+ * 3. the records of the disks in those cells (state and scheduled time,
+ *    one line each), and the rows of cells around the partner;
+ * 4. the records of the disks around the partner.
+ *
+ * Stages 3 and 4 read cell slots that stage 2 or 3 requested; a stage
+ * that runs before they arrive waits, so the stages are kept at least one
+ * event apart. */
 #include "event_driven.h"
 #include "prefetch.h"
 
@@ -20,41 +29,66 @@
 #define FETCHER static inline
 #endif
 
-/* The first slot of the 3 x 3 cells around disk d (three rows of twelve
- * consecutive slots, nx * 4 apart), or NULL at the edge of the grid,
- * where it is not worth the care. A collision's partner, in one of these
- * cells, shares most of them; fetching 5 x 5 for it measured no faster
- * (more requests in flight than the core can hold). */
-FETCHER const uint32_t *cells_around(const ds_events *e, const ed_disk *d)
+/* Runs of consecutive cell slots, one per row of cells, stride apart. */
+typedef struct region {
+    const uint32_t *slot; /* the first slot of the first row */
+    int rows, slots;      /* rows, and consecutive slots in each */
+} region;
+
+static const region nothing = {NULL, 0, 0};
+
+FETCHER region cells_at(const ds_cells *cells, uint32_t column, uint32_t row, int columns, int rows)
+{
+    region g = {ds_cells_slots(cells, ds_cells_index(cells, column, row)), rows,
+                columns * DS_CELL_SLOTS};
+    return g;
+}
+
+/* The cells disk d's event will look at: the 3 x 3 around it and, for a
+ * cell crossing, the row or column of cells it is about to enter (the
+ * crossing predicts it from its new cell). Nothing at the edge of the
+ * grid, where it is not worth the care. */
+FETCHER region cells_ahead(const ds_events *e, const ed_disk *d)
 {
     const ds_cells *cells = &e->cells;
     if (!ds_ed_interior(cells, d))
-        return NULL;
-    return ds_cells_slots(cells, ds_cells_index(cells, d->column - 1u, d->row - 1u));
+        return nothing;
+    const uint32_t column = d->column - 1u, row = d->row - 1u;
+    if (d->partner == EV_CELL_X && (d->vx > 0.0 ? d->column + 2u < cells->nx : d->column >= 2u))
+        return cells_at(cells, column - (d->vx < 0.0), row, 4, 3);
+    if (d->partner == EV_CELL_Y && (d->vy > 0.0 ? d->row + 2u < cells->ny : d->row >= 2u))
+        return cells_at(cells, column, row - (d->vy < 0.0), 3, 4);
+    return cells_at(cells, column, row, 3, 3);
 }
 
-FETCHER void fetch_cell_rows(const ds_events *e, const ed_disk *d)
+/* The 3 x 3 cells around a collision's partner p, which is predicted
+ * after the collision too. Fetching only those that are not around the
+ * event's disk as well measured no faster. */
+FETCHER region cells_around(const ds_events *e, const ed_disk *p)
 {
-    const uint32_t *slot = cells_around(e, d);
-    if (!slot)
-        return;
+    const ds_cells *cells = &e->cells;
+    if (!ds_ed_interior(cells, p))
+        return nothing;
+    return cells_at(cells, p->column - 1u, p->row - 1u, 3, 3);
+}
+
+FETCHER void fetch_rows(const ds_events *e, region g)
+{
     const size_t stride = (size_t)e->cells.nx * DS_CELL_SLOTS;
-    for (int r = 0; r < 3; ++r, slot += stride) {
-        ds_prefetch(slot);
-        ds_prefetch(slot + 3 * DS_CELL_SLOTS - 1);
+    for (int r = 0; r < g.rows; ++r, g.slot += stride) {
+        ds_prefetch(g.slot);
+        ds_prefetch(g.slot + g.slots - 1);
     }
 }
 
-FETCHER void fetch_cell_disks(const ds_events *e, const ed_disk *d)
+/* The empty slot holds n, one past the last disk: fetching that line too
+ * costs less than a branch per slot, taken at random. */
+FETCHER void fetch_disks(const ds_events *e, region g)
 {
-    const uint32_t *slot = cells_around(e, d);
-    if (!slot)
-        return;
     const size_t stride = (size_t)e->cells.nx * DS_CELL_SLOTS;
-    for (int r = 0; r < 3; ++r, slot += stride)
-        for (int k = 0; k < 3 * DS_CELL_SLOTS; ++k)
-            if (slot[k] != e->cells.empty)
-                ds_prefetch(&e->disk[slot[k]]);
+    for (int r = 0; r < g.rows; ++r, g.slot += stride)
+        for (int k = 0; k < g.slots; ++k)
+            ds_prefetch(&e->disk[g.slot[k]]);
 }
 
 /* The calendar names a disk whose event comes up soon: the first stage.
@@ -70,8 +104,10 @@ void ds_ed_on_soon(void *ctx, uint32_t i)
     /* Named while the calendar finds the next event: tagged with that
      * event, whose fetch_ahead must leave it alone. */
     e->ahead_tag[tail & AHEAD_MASK] = e->events + 1;
-    if (e->ahead_tail - e->ahead_third > AHEAD_MASK + 1) {
-        e->ahead_third = e->ahead_tail - (AHEAD_MASK + 1);
+    if (e->ahead_tail - e->ahead_fourth > AHEAD_MASK + 1) {
+        e->ahead_fourth = e->ahead_tail - (AHEAD_MASK + 1);
+        if (e->ahead_third < e->ahead_fourth)
+            e->ahead_third = e->ahead_fourth;
         if (e->ahead_second < e->ahead_third)
             e->ahead_second = e->ahead_third;
     }
@@ -82,17 +118,29 @@ void ds_ed_on_soon(void *ctx, uint32_t i)
  * trip to main memory). */
 void ds_ed_fetch_ahead(ds_events *e)
 {
-    const uint32_t now = ++e->events;
+    const uint32_t now = ++e->events, empty = e->cells.empty;
+    const ds_eq_slot *slots = ds_eq_slots(e->queue);
+    while (e->ahead_fourth < e->ahead_third && e->ahead_tag[e->ahead_fourth & AHEAD_MASK] != now) {
+        const ed_disk *d = &e->disk[e->ahead[e->ahead_fourth++ & AHEAD_MASK]];
+        if (d->partner < empty)
+            fetch_disks(e, cells_around(e, &e->disk[d->partner]));
+    }
     while (e->ahead_third < e->ahead_second && e->ahead_tag[e->ahead_third & AHEAD_MASK] != now) {
-        fetch_cell_disks(e, &e->disk[e->ahead[e->ahead_third & AHEAD_MASK]]);
-        ++e->ahead_third;
+        const uint32_t k = e->ahead_third++ & AHEAD_MASK;
+        const ed_disk *d = &e->disk[e->ahead[k]];
+        fetch_disks(e, cells_ahead(e, d));
+        if (d->partner < empty)
+            fetch_rows(e, cells_around(e, &e->disk[d->partner]));
+        e->ahead_tag[k] = now;
     }
     while (e->ahead_second < e->ahead_tail && e->ahead_tag[e->ahead_second & AHEAD_MASK] != now) {
         const uint32_t k = e->ahead_second++ & AHEAD_MASK;
         const ed_disk *d = &e->disk[e->ahead[k]];
-        if (d->partner < e->cells.empty)
+        if (d->partner < empty) {
             ds_prefetch(&e->disk[d->partner]);
-        fetch_cell_rows(e, d);
+            ds_prefetch(&slots[d->partner]);
+        }
+        fetch_rows(e, cells_ahead(e, d));
         e->ahead_tag[k] = now;
     }
 }
