@@ -32,12 +32,13 @@
 /* One disk: everything an event reads or writes about it, in one 64-byte
  * cache line. Events visit disks in no spatial order, so a disk's fields
  * side by side cost one memory access where separate arrays cost five.
- * The time of its scheduled event is here as well as in the calendar:
- * predicting a neighbour reads it, beside the neighbour's state. */
+ * The time of its scheduled event is here and only here: the calendar
+ * reads and writes it in place (ds_eq_create's times), and predicting a
+ * neighbour reads it beside the neighbour's state. */
 typedef struct ed_disk {
     double x, y, vx, vy;
     double t;                 /* the time x, y belong to */
-    double next;              /* the time of its scheduled event */
+    double next;              /* the time of its scheduled event (the calendar's) */
     uint16_t column, row;     /* its cell (DS_CELLS_MAX_SIDE per side) */
     uint32_t changes;         /* velocity changes so far */
     uint32_t partner;         /* the scheduled event: a disk or an EV_* */

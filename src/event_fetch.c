@@ -8,7 +8,7 @@
  * more apart, each needing what the one before brought in:
  *
  * 1. the disk's record (ds_ed_on_soon);
- * 2. its partner's record and calendar slot, and the rows of cells its
+ * 2. its partner's record (its scheduled time too), and the rows of cells its
  *    event will read (for a crossing, those of the cell it enters too);
  * 3. the records of the disks in those cells (state and scheduled time,
  *    one line each), and the rows of cells around the partner;
@@ -119,7 +119,6 @@ void ds_ed_on_soon(void *ctx, uint32_t i)
 void ds_ed_fetch_ahead(ds_events *e)
 {
     const uint32_t now = ++e->events, empty = e->cells.empty;
-    const ds_eq_slot *slots = ds_eq_slots(e->queue);
     while (e->ahead_fourth < e->ahead_third && e->ahead_tag[e->ahead_fourth & AHEAD_MASK] != now) {
         const ed_disk *d = &e->disk[e->ahead[e->ahead_fourth++ & AHEAD_MASK]];
         if (d->partner < empty)
@@ -136,10 +135,8 @@ void ds_ed_fetch_ahead(ds_events *e)
     while (e->ahead_second < e->ahead_tail && e->ahead_tag[e->ahead_second & AHEAD_MASK] != now) {
         const uint32_t k = e->ahead_second++ & AHEAD_MASK;
         const ed_disk *d = &e->disk[e->ahead[k]];
-        if (d->partner < empty) {
+        if (d->partner < empty)
             ds_prefetch(&e->disk[d->partner]);
-            ds_prefetch(&slots[d->partner]);
-        }
         fetch_rows(e, cells_ahead(e, d));
         e->ahead_tag[k] = now;
     }

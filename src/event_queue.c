@@ -5,17 +5,20 @@
  * every reschedule lands in a random bucket: nothing in it follows a chain
  * of links through memory.
  *
- * - Lazy deletion. A disk's slot holds its time and a count of its
- *   schedules; rescheduling only writes a new entry. Old entries stay
- *   where they are and are recognised as stale when their bucket is
- *   drained (the disk's time is no longer in that bucket) or when they
- *   reach the top of the heap (the count has moved on).
+ * - Lazy deletion. A disk's time lives in the caller's memory (the
+ *   integrator's disk record); rescheduling writes it there and adds a
+ *   new entry. Old entries stay where they are and are recognised as
+ *   stale when their bucket is drained (the disk's time is no longer in
+ *   that bucket) or when they reach the top of the heap (their time is no
+ *   longer the disk's). An entry whose disk was rescheduled to the very
+ *   same time is as good as the new one: it names the disk at its time,
+ *   whichever of the two comes first; the other is then stale.
  * - A bucket is one cache line of disk numbers (a rare full bucket spills
  *   into a pool), so draining one reads one line.
  * - For a calendar larger than the caches (ds_eq_on_soon): insertions are
  *   buffered, each one's bucket line requested at once and written some
  *   insertions later, when it has arrived; and buckets are read two ahead
- *   of their turn, their disks' slots requested and the integrator told.
+ *   of their turn, their disks' times requested and the integrator told.
  *   In cache, both would be work for nothing. */
 #include <math.h>
 #include <stdlib.h>
@@ -39,8 +42,9 @@
 /* Absolute bucket numbers beyond this are "never" (+infinity, or a time
  * so far ahead that it cannot be told apart from it). */
 #define FAR_BUCKET ((int64_t)1 << 62)
-/* slot.where for the calendar: the disk is in the far list. */
+/* The calendar's flags per disk: in the far list; kept by a compaction. */
 #define IN_FAR 1u
+#define KEPT 2u
 
 typedef struct bucket {
     uint16_t count; /* entries in disk[], at most BUCKET_CAP */
@@ -55,7 +59,7 @@ typedef struct pool_entry {
 
 typedef struct heap_node {
     double time;
-    uint32_t disk, seq;
+    uint32_t disk, spare;
 } heap_node;
 
 typedef struct pending_insert {
@@ -66,8 +70,11 @@ typedef struct pending_insert {
 struct ds_event_queue {
     ds_eq_kind kind;
     size_t n;
-    ds_eq_slot *slot;
+    char *times; /* disk i's time at times + i * stride (the caller's) */
+    size_t stride;
     heap_node *heap; /* DS_EQ_HEAP: all disks; calendar: the sorted front */
+    uint32_t *where; /* DS_EQ_HEAP: each disk's place in the heap */
+    uint8_t *flag;   /* calendar: IN_FAR, KEPT */
     size_t heap_count, heap_cap;
 
     /* Calendar only. Bucket b (absolute) covers [b, b+1) / inv_width and
@@ -104,44 +111,53 @@ static size_t bucket_count(size_t n)
 
 size_t ds_eq_bytes(size_t n, ds_eq_kind kind)
 {
-    size_t bytes = sizeof(ds_event_queue) + n * sizeof(ds_eq_slot);
+    const size_t bytes = sizeof(ds_event_queue);
     if (kind == DS_EQ_HEAP)
-        return bytes + n * sizeof(heap_node);
+        return bytes + n * (sizeof(heap_node) + sizeof(uint32_t));
     return bytes + (n + 4096) * sizeof(heap_node) + bucket_count(n) * sizeof(bucket) +
-           n * (sizeof(pool_entry) + sizeof(uint32_t));
+           n * (sizeof(pool_entry) + sizeof(uint32_t) + sizeof(uint8_t));
 }
 
-ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind)
+static inline double *time_at(const ds_event_queue *q, uint32_t i)
 {
-    if (!out || n == 0 || n >= ((size_t)1 << 30))
+    return (double *)(void *)(q->times + (size_t)i * q->stride);
+}
+
+double ds_eq_time(const ds_event_queue *q, uint32_t i) { return *time_at(q, i); }
+
+ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind, double *times,
+                       size_t stride)
+{
+    if (out)
+        *out = NULL;
+    if (!out || n == 0 || n >= ((size_t)1 << 30) || !times || stride < sizeof(double))
         return DS_ERR_ARG;
-    *out = NULL;
     ds_event_queue *q = calloc(1, sizeof *q);
     if (!q)
         return DS_ERR_NOMEM;
     q->kind = kind;
     q->n = n;
+    q->times = (char *)times;
+    q->stride = stride;
     /* The calendar's heap also holds stale entries, until compacted. */
     q->heap_cap = kind == DS_EQ_HEAP ? n : n + 4096;
-    q->slot = ds_large_alloc(n * sizeof *q->slot);
     q->heap = malloc(q->heap_cap * sizeof *q->heap);
-    int failed = !q->slot || !q->heap;
-    if (kind == DS_EQ_CALENDAR) {
+    int failed = !q->heap;
+    if (kind == DS_EQ_HEAP) {
+        q->where = malloc(n * sizeof *q->where);
+        failed = failed || !q->where;
+    } else {
+        q->flag = calloc(n, sizeof *q->flag);
         q->nbuckets = bucket_count(n);
         q->mask = q->nbuckets - 1;
         q->bucket = ds_large_alloc(q->nbuckets * sizeof(bucket));
         q->pool = malloc(n * sizeof *q->pool);
         q->far_next = malloc(n * sizeof *q->far_next);
-        failed = failed || !q->bucket || !q->pool || !q->far_next;
+        failed = failed || !q->flag || !q->bucket || !q->pool || !q->far_next;
     }
     if (failed) {
         ds_eq_destroy(q);
         return DS_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < n; ++i) {
-        q->slot[i].time = INFINITY;
-        q->slot[i].seq = 0;
-        q->slot[i].where = 0;
     }
     q->inv_width = 1.0;
     q->lookahead = 1;
@@ -153,8 +169,9 @@ void ds_eq_destroy(ds_event_queue *q)
 {
     if (!q)
         return;
-    free(q->slot);
     free(q->heap);
+    free(q->where);
+    free(q->flag);
     free(q->bucket);
     free(q->pool);
     free(q->far_next);
@@ -162,7 +179,6 @@ void ds_eq_destroy(ds_event_queue *q)
 }
 
 ds_eq_kind ds_eq_kind_of(const ds_event_queue *q) { return q->kind; }
-const ds_eq_slot *ds_eq_slots(const ds_event_queue *q) { return q->slot; }
 
 void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx, unsigned lookahead)
 {
@@ -172,16 +188,16 @@ void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx, unsigned lo
 }
 
 /* ------------------------------------------------------------------ */
-/* Binary heap of (time, disk, seq)                                     */
+/* Binary heap of (time, disk)                                           */
 /* ------------------------------------------------------------------ */
 
-/* DS_EQ_HEAP keeps each disk's heap position in its slot; the calendar's
- * heap is not indexed (a disk found in it is looked up by its count). */
+/* DS_EQ_HEAP keeps each disk's heap position; the calendar's heap is not
+ * indexed (an entry found in it is checked against the disk's time). */
 static inline void heap_place(ds_event_queue *q, size_t pos, heap_node node)
 {
     q->heap[pos] = node;
     if (q->kind == DS_EQ_HEAP)
-        q->slot[node.disk].where = (uint32_t)pos;
+        q->where[node.disk] = (uint32_t)pos;
 }
 
 static void sift_up(ds_event_queue *q, size_t pos)
@@ -226,34 +242,33 @@ static void heap_pop(ds_event_queue *q)
 
 static int is_current(const ds_event_queue *q, heap_node node)
 {
-    return node.seq == q->slot[node.disk].seq;
+    return node.time == *time_at(q, node.disk);
 }
 
 /* The calendar's heap is full of stale entries: keeps one current entry
- * per disk (slot.where marks the disks kept) and heapifies again. */
+ * per disk (KEPT marks the disks kept) and heapifies again. */
 static void heap_compact(ds_event_queue *q)
 {
     size_t kept = 0;
     for (size_t k = 0; k < q->heap_count; ++k) {
         const heap_node node = q->heap[k];
-        ds_eq_slot *s = &q->slot[node.disk];
-        if (is_current(q, node) && !(s->where & 2u)) {
-            s->where |= 2u;
+        if (is_current(q, node) && !(q->flag[node.disk] & KEPT)) {
+            q->flag[node.disk] |= KEPT;
             q->heap[kept++] = node;
         }
     }
     for (size_t k = 0; k < kept; ++k)
-        q->slot[q->heap[k].disk].where &= ~2u;
+        q->flag[q->heap[k].disk] &= (uint8_t)~KEPT;
     q->heap_count = kept;
     for (size_t pos = kept / 2; pos-- > 0;)
         sift_down(q, pos);
 }
 
-static void heap_push(ds_event_queue *q, double time, uint32_t disk, uint32_t seq)
+static void heap_push(ds_event_queue *q, double time, uint32_t disk)
 {
     if (q->heap_count == q->heap_cap)
         heap_compact(q);
-    const heap_node node = {time, disk, seq};
+    const heap_node node = {time, disk, 0};
     heap_place(q, q->heap_count++, node);
     sift_up(q, q->heap_count - 1);
 }
@@ -300,21 +315,21 @@ static void far_add(ds_event_queue *q, uint32_t disk)
 {
     /* A disk is in the far list once at most; an entry there whose disk
      * has been rescheduled since is sorted out when the list is scanned. */
-    if (q->slot[disk].where & IN_FAR)
+    if (q->flag[disk] & IN_FAR)
         return;
-    q->slot[disk].where |= IN_FAR;
+    q->flag[disk] |= IN_FAR;
     q->far_next[disk] = q->far_head;
     q->far_head = disk;
     ++q->far_count;
 }
 
-/* Files disk (whose slot is set) by its time, writing its bucket at once. */
+/* Files disk by its time, writing its bucket at once. */
 static int insert_now(ds_event_queue *q, uint32_t disk)
 {
-    const ds_eq_slot *s = &q->slot[disk];
-    const int64_t b = bucket_of(q, s->time);
+    const double t = *time_at(q, disk);
+    const int64_t b = bucket_of(q, t);
     if (b <= q->current) {
-        heap_push(q, s->time, disk, s->seq);
+        heap_push(q, t, disk);
         return 0;
     }
     if (b - q->current < (int64_t)q->nbuckets)
@@ -350,7 +365,7 @@ static void flush_pending(ds_event_queue *q)
             return;
 }
 
-/* Puts every disk back from its slot, dropping every stale entry. */
+/* Puts every disk back from its time, dropping every stale entry. */
 static void reinsert_all(ds_event_queue *q)
 {
     for (size_t b = 0; b < q->nbuckets; ++b) {
@@ -367,7 +382,7 @@ static void reinsert_all(ds_event_queue *q)
     q->pending_head = q->pending_tail = 0;
     q->pending_min = FAR_BUCKET;
     for (size_t i = 0; i < q->n; ++i)
-        q->slot[i].where = 0;
+        q->flag[i] = 0;
     for (size_t i = 0; i < q->n; ++i)
         insert_now(q, (uint32_t)i); /* cannot run out: no stale entries */
 }
@@ -381,9 +396,9 @@ static void scan_far(ds_event_queue *q)
     uint32_t *link = &q->far_head;
     while (*link != NONE) {
         const uint32_t disk = *link;
-        if (bucket_of(q, q->slot[disk].time) - q->current < (int64_t)q->nbuckets) {
+        if (bucket_of(q, *time_at(q, disk)) - q->current < (int64_t)q->nbuckets) {
             *link = q->far_next[disk];
-            q->slot[disk].where &= ~IN_FAR;
+            q->flag[disk] &= (uint8_t)~IN_FAR;
             --q->far_count;
             if (insert_now(q, disk))
                 return;
@@ -393,13 +408,13 @@ static void scan_far(ds_event_queue *q)
     }
 }
 
-/* Requests the slots of bucket b's disks and tells the integrator. */
+/* Requests the times of bucket b's disks and tells the integrator. */
 static void announce(ds_event_queue *q, int64_t b)
 {
     const bucket *bk = &q->bucket[(uint64_t)b & q->mask];
     ds_prefetch(&q->bucket[(uint64_t)(b + SOON) & q->mask]);
     for (unsigned k = 0; k < bk->count; ++k) {
-        ds_prefetch(&q->slot[bk->disk[k]]);
+        ds_prefetch(time_at(q, bk->disk[k]));
         if (q->soon)
             q->soon(q->soon_ctx, bk->disk[k]);
     }
@@ -411,17 +426,17 @@ static void drain(ds_event_queue *q, int64_t b)
     bucket *bk = &q->bucket[(uint64_t)b & q->mask];
     for (unsigned k = 0; k < bk->count; ++k) {
         const uint32_t disk = bk->disk[k];
-        const ds_eq_slot *s = &q->slot[disk];
-        if (bucket_of(q, s->time) == b)
-            heap_push(q, s->time, disk, s->seq);
+        const double t = *time_at(q, disk);
+        if (bucket_of(q, t) == b)
+            heap_push(q, t, disk);
     }
     q->windowed -= bk->count;
     bk->count = 0;
     while (bk->spill != NONE) {
         const uint32_t e = bk->spill;
-        const ds_eq_slot *s = &q->slot[q->pool[e].disk];
-        if (bucket_of(q, s->time) == b)
-            heap_push(q, s->time, q->pool[e].disk, s->seq);
+        const double t = *time_at(q, q->pool[e].disk);
+        if (bucket_of(q, t) == b)
+            heap_push(q, t, q->pool[e].disk);
         bk->spill = q->pool[e].next;
         q->pool[e].next = q->pool_free;
         q->pool_free = e;
@@ -435,8 +450,8 @@ static void jump_to_far(ds_event_queue *q)
 {
     double first = INFINITY;
     for (uint32_t d = q->far_head; d != NONE; d = q->far_next[d])
-        if (q->slot[d].time < first)
-            first = q->slot[d].time;
+        if (*time_at(q, d) < first)
+            first = *time_at(q, d);
     const int64_t b = bucket_of(q, first);
     if (b >= FAR_BUCKET) {
         /* Only "never" is left (every disk at rest): the heap takes them
@@ -447,8 +462,8 @@ static void jump_to_far(ds_event_queue *q)
         while (q->far_head != NONE) {
             const uint32_t d = q->far_head;
             q->far_head = q->far_next[d];
-            q->slot[d].where &= ~IN_FAR;
-            heap_push(q, q->slot[d].time, d, q->slot[d].seq);
+            q->flag[d] &= (uint8_t)~IN_FAR;
+            heap_push(q, *time_at(q, d), d);
         }
         q->far_count = 0;
         return;
@@ -481,22 +496,21 @@ static void advance(ds_event_queue *q)
 
 void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
 {
-    ds_eq_slot *s = &q->slot[i];
+    double *time = time_at(q, i);
     if (q->kind == DS_EQ_HEAP) {
-        const double old = s->time;
-        s->time = t;
-        q->heap[s->where].time = t;
+        const double old = *time;
+        *time = t;
+        q->heap[q->where[i]].time = t;
         if (t < old)
-            sift_up(q, s->where);
+            sift_up(q, q->where[i]);
         else
-            sift_down(q, s->where);
+            sift_down(q, q->where[i]);
         return;
     }
-    ++s->seq;
-    s->time = t;
+    *time = t;
     const int64_t b = bucket_of(q, t);
     if (b <= q->current) {
-        heap_push(q, t, i, s->seq);
+        heap_push(q, t, i);
     } else if (b - q->current < (int64_t)q->nbuckets && !q->soon) {
         bucket_add(q, b, i); /* a calendar in cache: at once */
     } else if (b - q->current < (int64_t)q->nbuckets) {
@@ -528,16 +542,12 @@ uint32_t ds_eq_first(ds_event_queue *q)
     }
 }
 
-void ds_eq_build(ds_event_queue *q, const double *times, double now)
+void ds_eq_build(ds_event_queue *q, double now)
 {
     const size_t n = q->n;
-    for (size_t i = 0; i < n; ++i) {
-        q->slot[i].time = times[i];
-        q->slot[i].where = 0;
-    }
     if (q->kind == DS_EQ_HEAP) {
         for (size_t i = 0; i < n; ++i) {
-            const heap_node node = {times[i], (uint32_t)i, q->slot[i].seq};
+            const heap_node node = {*time_at(q, (uint32_t)i), (uint32_t)i, 0};
             heap_place(q, i, node);
         }
         q->heap_count = n;
@@ -550,11 +560,13 @@ void ds_eq_build(ds_event_queue *q, const double *times, double now)
      * fall in each unit of time. */
     double sum = 0.0;
     size_t finite = 0;
-    for (size_t i = 0; i < n; ++i)
-        if (isfinite(times[i])) {
-            sum += times[i] > now ? times[i] - now : 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        const double t = *time_at(q, (uint32_t)i);
+        if (isfinite(t)) {
+            sum += t > now ? t - now : 0.0;
             ++finite;
         }
+    }
     const double tau = finite ? sum / (double)finite : 0.0;
     const double width = tau > 0.0 ? EVENTS_PER_BUCKET * tau / (double)n : 1.0;
     /* Keep absolute bucket numbers of times near now far below FAR_BUCKET. */

@@ -25,39 +25,33 @@ typedef enum ds_eq_kind { DS_EQ_CALENDAR, DS_EQ_HEAP } ds_eq_kind;
 
 typedef struct ds_event_queue ds_event_queue;
 
-/* One disk's schedule: its time and how often it has been scheduled. */
-typedef struct ds_eq_slot {
-    double time;
-    uint32_t seq;
-    uint32_t where; /* the heap's own bookkeeping */
-} ds_eq_slot;
-
-/* A queue for disks 0..n-1 (n < 2^30), none scheduled yet. */
-ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind);
+/* A queue for disks 0..n-1 (n < 2^30), none scheduled yet. Disk i's
+ * time lives in the caller's memory, at times + i * stride bytes (the
+ * integrator keeps it in the disk's record, on the line an event reads
+ * anyway): the queue reads it there and ds_eq_set writes it. The calendar
+ * keeps no copy of it and no count of schedules: an entry is current
+ * while its time is still the disk's time, so an entry left by a
+ * reschedule is recognised as stale by the disk's own time. */
+ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind, double *times,
+                       size_t stride);
 void ds_eq_destroy(ds_event_queue *q);
 
-/* Schedules every disk at once at times[i] (>= now, +infinity allowed),
- * replacing what was there. The calendar sizes its buckets from these
- * times: their mean distance from now is the mean time between a disk's
- * events. */
-void ds_eq_build(ds_event_queue *q, const double *times, double now);
+/* Schedules every disk at once at its time as it stands in the caller's
+ * memory (>= now, +infinity allowed), replacing what was there. The
+ * calendar sizes its buckets from these times: their mean distance from
+ * now is the mean time between a disk's events. */
+void ds_eq_build(ds_event_queue *q, double now);
 
 /* Reschedules disk i at time t (>= the earliest time in the queue, up to
- * rounding; +infinity allowed). */
+ * rounding; +infinity allowed), writing t into the caller's memory. */
 void ds_eq_set(ds_event_queue *q, uint32_t i, double t);
 
 /* The disk with the earliest time (ties in any order, but the same order
  * for the same calls). */
 uint32_t ds_eq_first(ds_event_queue *q);
 
-/* Every disk's schedule, indexed by disk (read-only; valid until the queue
- * is destroyed): slots[i].time is disk i's time. */
-const ds_eq_slot *ds_eq_slots(const ds_event_queue *q);
-
-static inline double ds_eq_time(const ds_event_queue *q, uint32_t i)
-{
-    return ds_eq_slots(q)[i].time;
-}
+/* Disk i's scheduled time. */
+double ds_eq_time(const ds_event_queue *q, uint32_t i);
 
 ds_eq_kind ds_eq_kind_of(const ds_event_queue *q);
 

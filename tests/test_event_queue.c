@@ -1,15 +1,24 @@
 /* The event calendar against the indexed binary heap it is checked by:
  * the same disk first after the same operations, whatever the times, in
  * workloads shaped like an event-driven run's (reschedule the first disk
- * a little ahead; now and then reschedule another), and at the edges:
+ * a little ahead; now and then reschedule another, sometimes to the time
+ * it already has), and at the edges:
  * equal times, +infinity, times beyond the calendar's window, a bucket
  * far fuller than a cache line, and the whole calendar rebuilt. */
 #include "test_util.h"
 
 #include "event_queue.h"
 
+/* Each queue keeps its disks' times in memory of its own, as the
+ * integrator keeps them in its disk records: here 16 bytes apart, so that
+ * the stride is not that of a plain array. */
+typedef struct timed {
+    double time, other;
+} timed;
+
 typedef struct pair {
     ds_event_queue *calendar, *heap;
+    timed *calendar_times, *heap_times;
 } pair;
 
 /* The calendar's mode for systems larger than the caches (buffered
@@ -30,8 +39,15 @@ static announced soon_calls;
 static pair make_mode(size_t n, int large)
 {
     pair p;
-    assert_int_equal(ds_eq_create(&p.calendar, n, DS_EQ_CALENDAR), DS_OK);
-    assert_int_equal(ds_eq_create(&p.heap, n, DS_EQ_HEAP), DS_OK);
+    p.calendar_times = calloc(n, sizeof *p.calendar_times);
+    p.heap_times = calloc(n, sizeof *p.heap_times);
+    assert_non_null(p.calendar_times);
+    assert_non_null(p.heap_times);
+    assert_int_equal(
+        ds_eq_create(&p.calendar, n, DS_EQ_CALENDAR, &p.calendar_times[0].time, sizeof(timed)),
+        DS_OK);
+    assert_int_equal(ds_eq_create(&p.heap, n, DS_EQ_HEAP, &p.heap_times[0].time, sizeof(timed)),
+                     DS_OK);
     if (large)
         ds_eq_on_soon(p.calendar, count_soon, &soon_calls, 16);
     return p;
@@ -44,18 +60,25 @@ static void destroy(pair p)
 {
     ds_eq_destroy(p.calendar);
     ds_eq_destroy(p.heap);
+    free(p.calendar_times);
+    free(p.heap_times);
 }
 
-static void build(pair p, const double *times, double now)
+static void build(pair p, const double *times, size_t n, double now)
 {
-    ds_eq_build(p.calendar, times, now);
-    ds_eq_build(p.heap, times, now);
+    for (size_t i = 0; i < n; ++i)
+        p.calendar_times[i].time = p.heap_times[i].time = times[i];
+    ds_eq_build(p.calendar, now);
+    ds_eq_build(p.heap, now);
 }
 
+/* Reschedules disk i in both; each writes the time into its memory. */
 static void set(pair p, uint32_t i, double t)
 {
     ds_eq_set(p.calendar, i, t);
     ds_eq_set(p.heap, i, t);
+    assert_true(p.calendar_times[i].time == t);
+    assert_true(p.heap_times[i].time == t);
 }
 
 /* Both agree on the earliest time; with distinct times also on the disk
@@ -84,7 +107,7 @@ static void run_like_a_simulation(size_t n, uint64_t operations, double far_frac
     assert_non_null(times);
     for (size_t i = 0; i < n; ++i)
         times[i] = ahead(&rng, 1.0);
-    build(p, times, 0.0);
+    build(p, times, n, 0.0);
     double now = 0.0;
     for (uint64_t op = 0; op < operations; ++op) {
         const uint32_t i = first(p);
@@ -98,6 +121,13 @@ static void run_like_a_simulation(size_t n, uint64_t operations, double far_frac
         if (u > 0.5) {
             const uint32_t j = (uint32_t)(ds_rng_next(&rng) % n);
             set(p, j, u > 0.98 ? now : now + ahead(&rng, 1.0));
+        }
+        /* Rescheduled to the time it already has: the calendar's old entry
+         * and its new one both name it at that time, and it must still
+         * come exactly once per time (the heap says when). */
+        if (u > 0.9 && u < 0.93) {
+            const uint32_t j = (uint32_t)(ds_rng_next(&rng) % n);
+            set(p, j, ds_eq_time(p.calendar, j));
         }
     }
     free(times);
@@ -128,7 +158,7 @@ static void test_rest_and_ties_are_handled(void **state)
     double times[64];
     for (size_t i = 0; i < n; ++i)
         times[i] = i % 3 == 0 ? INFINITY : 2.0;
-    build(p, times, 0.0);
+    build(p, times, n, 0.0);
     for (int k = 0; k < 42; ++k) {
         const uint32_t i = first(p);
         assert_true(ds_eq_time(p.calendar, i) == 2.0);
@@ -152,7 +182,7 @@ static void test_a_bucket_fuller_than_a_cache_line_loses_nothing(void **state)
     assert_non_null(times);
     for (size_t i = 0; i < n; ++i)
         times[i] = 1.0 + (double)i * 1e-3;
-    build(p, times, 0.0);
+    build(p, times, n, 0.0);
     for (size_t i = 0; i < n; ++i)
         set(p, (uint32_t)i, 5.0 + (double)((i * 7919) % n) * 1e-9);
     double last = 0.0;
@@ -176,7 +206,7 @@ static void test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory(vo
     const size_t n = 8;
     pair p = make(n);
     double times[8] = {1, 2, 3, 4, 5, 6, 7, 8};
-    build(p, times, 0.0);
+    build(p, times, n, 0.0);
     for (int k = 0; k < 100000; ++k)
         set(p, (uint32_t)(k % 8), 1.0 + 1e-6 * (double)(k % 977));
     for (int k = 0; k < 8; ++k) {
@@ -202,9 +232,14 @@ static void test_bad_sizes_are_refused(void **state)
 {
     (void)state;
     ds_event_queue *q = NULL;
-    assert_int_equal(ds_eq_create(&q, 0, DS_EQ_CALENDAR), DS_ERR_ARG);
-    assert_int_equal(ds_eq_create(&q, (size_t)1 << 30, DS_EQ_HEAP), DS_ERR_ARG);
-    assert_int_equal(ds_eq_create(NULL, 4, DS_EQ_HEAP), DS_ERR_ARG);
+    double times[4];
+    assert_int_equal(ds_eq_create(&q, 0, DS_EQ_CALENDAR, times, sizeof *times), DS_ERR_ARG);
+    assert_int_equal(ds_eq_create(&q, (size_t)1 << 30, DS_EQ_HEAP, times, sizeof *times),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_eq_create(NULL, 4, DS_EQ_HEAP, times, sizeof *times), DS_ERR_ARG);
+    assert_int_equal(ds_eq_create(&q, 4, DS_EQ_HEAP, NULL, sizeof *times), DS_ERR_ARG);
+    assert_int_equal(ds_eq_create(&q, 4, DS_EQ_CALENDAR, times, 4), DS_ERR_ARG);
+    assert_null(q);
     ds_eq_destroy(NULL);
 }
 
