@@ -4,7 +4,8 @@
  *
  *   tools/bench            every case (a few minutes on 2 cores)
  *   tools/bench scale N    one scaling case, e.g. under /usr/bin/time -v
- *   tools/bench events N   one event-driven case (area fraction 0.5), likewise
+ *   tools/bench events N [C]  one event-driven case (area fraction 0.5),
+ *                          likewise, timed after ~C collisions per disk
  *
  * Ratios are between figures measured in the same run, so they are less
  * sensitive to the machine than the absolute times. */
@@ -275,10 +276,11 @@ int main(int argc, char **argv)
                1e9 * r.create_seconds / (double)n, peak_rss_kb());
         return 0;
     }
-    if (argc == 3 && strcmp(argv[1], "events") == 0)
-        return bench_events_one(strtoul(argv[2], NULL, 10)) ? 0 : 1;
+    if ((argc == 3 || argc == 4) && strcmp(argv[1], "events") == 0)
+        return bench_events_one(strtoul(argv[2], NULL, 10), argc == 4 ? atof(argv[3]) : 1.0) ? 0
+                                                                                             : 1;
     if (argc != 1) {
-        fprintf(stderr, "usage: bench [scale N | events N]\n");
+        fprintf(stderr, "usage: bench [scale N | events N [collisions per disk]]\n");
         return 2;
     }
     double started = ds_now();

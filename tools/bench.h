@@ -18,7 +18,8 @@ long peak_rss_kb(void);
 
 /* Section 5, the event-driven integrator (bench_events.c); 0 on failure. */
 int bench_events(void);
-/* `bench events N`: one collision-rate case at area fraction 0.5. */
-int bench_events_one(unsigned long n);
+/* `bench events N [C]`: one collision-rate case at area fraction 0.5,
+ * timed after about C collisions per disk (1 by default). */
+int bench_events_one(unsigned long n, double per_disk);
 
 #endif

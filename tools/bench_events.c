@@ -45,17 +45,18 @@ static unsigned long at_least(double steps, unsigned long least)
     return steps > (double)least ? (unsigned long)steps : least;
 }
 
-/* A system at area fraction 0.5 relaxed for about one collision per disk;
- * NULL on failure. *created gets the seconds of ds_create: random
- * placement this close to its jamming limit (0.547) takes seconds at
- * 10^6 disks, so each system is created once and timed in every round. */
-static ds_sim *relaxed(size_t n, double *created)
+/* A system at area fraction 0.5 relaxed for about `per_disk` collisions
+ * per disk (each collision counts for two); NULL on failure. *created gets
+ * the seconds of ds_create: random placement this close to its jamming
+ * limit (0.547) takes seconds at 10^6 disks, so each system is created
+ * once and timed in every round. */
+static ds_sim *relaxed(size_t n, double per_disk, double *created)
 {
     const double t0 = ds_now();
     ds_sim *sim = create(n, 0.5, DS_EVENT_DRIVEN, 0.0);
     *created = ds_now() - t0;
     if (sim)
-        ds_run(sim, at_least(0.5 * (double)n / collisions_per_step(n), 2));
+        ds_run(sim, at_least(0.5 * per_disk * (double)n / collisions_per_step(n), 2));
     return sim;
 }
 
@@ -69,17 +70,17 @@ static double ns_per_collision(ds_sim *sim)
     return 1e9 * (ds_collision_seconds(sim) - s0) / (double)(ds_collision_count(sim) - c0);
 }
 
-int bench_events_one(unsigned long n)
+int bench_events_one(unsigned long n, double per_disk)
 {
     double created;
-    ds_sim *sim = n >= 2 ? relaxed(n, &created) : NULL;
+    ds_sim *sim = n >= 2 && per_disk >= 0.0 ? relaxed(n, per_disk, &created) : NULL;
     if (!sim)
         return 0;
     const double ns = ns_per_collision(sim);
     ds_destroy(sim);
-    printf("N = %lu, area fraction 0.5, event-driven: %.0f ns per collision, %.3g "
-           "collisions/s; create %.2f s; peak RSS %ld KB\n",
-           n, ns, 1e9 / ns, created, peak_rss_kb());
+    printf("N = %lu, area fraction 0.5, event-driven, after %g collisions per disk: %.0f ns per "
+           "collision, %.3g collisions/s; create %.2f s; peak RSS %ld KB\n",
+           n, per_disk, ns, 1e9 / ns, created, peak_rss_kb());
     return 1;
 }
 
@@ -112,7 +113,7 @@ int bench_events(void)
     ds_sim *sims[SIZES] = {NULL};
     int ok = 1;
     for (int c = 0; ok && c < SIZES; ++c)
-        ok = (sims[c] = relaxed(sizes[c], &created[c])) != NULL;
+        ok = (sims[c] = relaxed(sizes[c], 1.0, &created[c])) != NULL;
     for (int k = 0; ok && k < ROUNDS; ++k)
         for (int c = 0; c < SIZES; ++c)
             ns[c][k] = ns_per_collision(sims[c]);
