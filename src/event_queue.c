@@ -42,9 +42,8 @@
 /* Absolute bucket numbers beyond this are "never" (+infinity, or a time
  * so far ahead that it cannot be told apart from it). */
 #define FAR_BUCKET ((int64_t)1 << 62)
-/* The calendar's flags per disk: in the far list; kept by a compaction. */
-#define IN_FAR 1u
-#define KEPT 2u
+/* The calendar's flag per disk: kept by a compaction. */
+#define KEPT 1u
 
 typedef struct bucket {
     uint16_t count; /* entries in disk[], at most BUCKET_CAP */
@@ -74,7 +73,7 @@ struct ds_event_queue {
     size_t stride;
     heap_node *heap; /* DS_EQ_HEAP: all disks; calendar: the sorted front */
     uint32_t *where; /* DS_EQ_HEAP: each disk's place in the heap */
-    uint8_t *flag;   /* calendar: IN_FAR, KEPT */
+    uint8_t *flag;   /* calendar: KEPT */
     size_t heap_count, heap_cap;
 
     /* Calendar only. Bucket b (absolute) covers [b, b+1) / inv_width and
@@ -88,9 +87,8 @@ struct ds_event_queue {
     size_t windowed;   /* entries in buckets and pending, stale ones too */
     pool_entry *pool;  /* spilled entries of full buckets */
     uint32_t pool_free;
-    uint32_t *far_next; /* the far list: times beyond the window */
-    uint32_t far_head;
-    size_t far_count;
+    uint32_t *far;    /* the far list: disks with times beyond the window */
+    size_t far_count; /* at most n; stale entries and repeats among them */
     pending_insert pending[PENDING];
     unsigned pending_head, pending_tail;
     int64_t pending_min; /* earliest bucket among pending (or FAR_BUCKET) */
@@ -152,8 +150,8 @@ ds_status ds_eq_create(ds_event_queue **out, size_t n, ds_eq_kind kind, double *
         q->mask = q->nbuckets - 1;
         q->bucket = ds_large_alloc(q->nbuckets * sizeof(bucket));
         q->pool = malloc(n * sizeof *q->pool);
-        q->far_next = malloc(n * sizeof *q->far_next);
-        failed = failed || !q->flag || !q->bucket || !q->pool || !q->far_next;
+        q->far = malloc(n * sizeof *q->far);
+        failed = failed || !q->flag || !q->bucket || !q->pool || !q->far;
     }
     if (failed) {
         ds_eq_destroy(q);
@@ -174,7 +172,7 @@ void ds_eq_destroy(ds_event_queue *q)
     free(q->flag);
     free(q->bucket);
     free(q->pool);
-    free(q->far_next);
+    free(q->far);
     free(q);
 }
 
@@ -311,16 +309,18 @@ static int bucket_add(ds_event_queue *q, int64_t b, uint32_t disk)
     return 0;
 }
 
-static void far_add(ds_event_queue *q, uint32_t disk)
+/* Appends disk to the far list: one sequential write, no look-up. A disk
+ * rescheduled while listed is listed again; entries whose disks have moved
+ * on are sorted out when the list is scanned, and a full list is rebuilt
+ * from the times with the whole calendar (returns 1 then). */
+static int far_add(ds_event_queue *q, uint32_t disk)
 {
-    /* A disk is in the far list once at most; an entry there whose disk
-     * has been rescheduled since is sorted out when the list is scanned. */
-    if (q->flag[disk] & IN_FAR)
-        return;
-    q->flag[disk] |= IN_FAR;
-    q->far_next[disk] = q->far_head;
-    q->far_head = disk;
-    ++q->far_count;
+    if (q->far_count == q->n) {
+        reinsert_all(q);
+        return 1;
+    }
+    q->far[q->far_count++] = disk;
+    return 0;
 }
 
 /* Files disk by its time, writing its bucket at once. */
@@ -334,8 +334,7 @@ static int insert_now(ds_event_queue *q, uint32_t disk)
     }
     if (b - q->current < (int64_t)q->nbuckets)
         return bucket_add(q, b, disk);
-    far_add(q, disk);
-    return 0;
+    return far_add(q, disk);
 }
 
 static void update_pending_min(ds_event_queue *q)
@@ -375,7 +374,6 @@ static void reinsert_all(ds_event_queue *q)
     for (size_t e = 0; e < q->n; ++e)
         q->pool[e].next = e + 1 < q->n ? (uint32_t)(e + 1) : NONE;
     q->pool_free = 0;
-    q->far_head = NONE;
     q->far_count = 0;
     q->windowed = 0;
     q->heap_count = 0;
@@ -387,25 +385,35 @@ static void reinsert_all(ds_event_queue *q)
         insert_now(q, (uint32_t)i); /* cannot run out: no stale entries */
 }
 
+/* Disks of the far list whose times a scan reads ahead of its turn. */
+#define FAR_AHEAD 8
+
 /* Moves the far list's disks whose times now fall inside the window into
- * it. Scanning every nbuckets/2 buckets is early enough: a time goes to
- * the far list only when at least nbuckets ahead of current. */
+ * it, keeping the rest in order. Scanning every nbuckets/2 buckets is
+ * early enough: a time goes to the far list only when at least nbuckets
+ * ahead of current. An entry whose disk has been rescheduled since is
+ * filed again by its disk's present time: a repeat of the disk's entry
+ * elsewhere, which is harmless (the first to come up names the disk at
+ * its time; the other is stale by then). */
 static void scan_far(ds_event_queue *q)
 {
     q->next_scan = q->current + (int64_t)(q->nbuckets / 2);
-    uint32_t *link = &q->far_head;
-    while (*link != NONE) {
-        const uint32_t disk = *link;
+    const size_t count = q->far_count;
+    size_t kept = 0;
+    for (size_t k = 0; k < count; ++k) {
+        if (k + FAR_AHEAD < count)
+            ds_prefetch(time_at(q, q->far[k + FAR_AHEAD]));
+        const uint32_t disk = q->far[k];
         if (bucket_of(q, *time_at(q, disk)) - q->current < (int64_t)q->nbuckets) {
-            *link = q->far_next[disk];
-            q->flag[disk] &= (uint8_t)~IN_FAR;
-            --q->far_count;
+            /* In the window now: never back to this list, which the loop
+             * is rewriting, and a rebuild replaces the list outright. */
             if (insert_now(q, disk))
                 return;
         } else {
-            link = &q->far_next[disk];
+            q->far[kept++] = disk;
         }
     }
+    q->far_count = kept;
 }
 
 /* Requests the times of bucket b's disks and tells the integrator. */
@@ -449,9 +457,9 @@ static void drain(ds_event_queue *q, int64_t b)
 static void jump_to_far(ds_event_queue *q)
 {
     double first = INFINITY;
-    for (uint32_t d = q->far_head; d != NONE; d = q->far_next[d])
-        if (*time_at(q, d) < first)
-            first = *time_at(q, d);
+    for (size_t k = 0; k < q->far_count; ++k)
+        if (*time_at(q, q->far[k]) < first)
+            first = *time_at(q, q->far[k]);
     const int64_t b = bucket_of(q, first);
     if (b >= FAR_BUCKET) {
         /* Only "never" is left (every disk at rest): the heap takes them
@@ -459,12 +467,8 @@ static void jump_to_far(ds_event_queue *q)
          * every time (an earlier one set later goes straight to it) until
          * the next ds_eq_build. */
         q->current = FAR_BUCKET;
-        while (q->far_head != NONE) {
-            const uint32_t d = q->far_head;
-            q->far_head = q->far_next[d];
-            q->flag[d] &= (uint8_t)~IN_FAR;
-            heap_push(q, *time_at(q, d), d);
-        }
+        for (size_t k = 0; k < q->far_count; ++k)
+            heap_push(q, *time_at(q, q->far[k]), q->far[k]);
         q->far_count = 0;
         return;
     }

@@ -216,6 +216,33 @@ static void test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory(vo
     destroy(p);
 }
 
+static void test_disks_rescheduled_beyond_the_window_again_and_again_keep_their_order(void **state)
+{
+    (void)state;
+    /* The far list takes a disk again each time it is rescheduled beyond
+     * the window, stale entries and all, until it is full and the
+     * calendar rebuilds itself from the times. Then some come back into
+     * the window, and every disk must still come in time order. */
+    const size_t n = 8;
+    pair p = make(n);
+    double times[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+    build(p, times, n, 0.0);
+    for (int k = 0; k < 10000; ++k)
+        set(p, (uint32_t)(k % 8), 1e4 + (double)((k * 7919) % 10007));
+    set(p, 3, 2.5);
+    set(p, 5, 9.0);
+    double last = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        const uint32_t i = first(p);
+        const double t = ds_eq_time(p.calendar, i);
+        assert_true(t >= last);
+        last = t;
+        set(p, i, INFINITY);
+    }
+    assert_true(isinf(ds_eq_time(p.calendar, first(p))));
+    destroy(p);
+}
+
 static void test_the_large_mode_names_disks_before_their_turn(void **state)
 {
     (void)state;
@@ -265,6 +292,7 @@ int main(void)
         cmocka_unit_test(test_rest_and_ties_are_handled),
         cmocka_unit_test(test_a_bucket_fuller_than_a_cache_line_loses_nothing),
         cmocka_unit_test(test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory),
+        cmocka_unit_test(test_disks_rescheduled_beyond_the_window_again_and_again_keep_their_order),
     };
     int failed = cmocka_run_group_tests_name("calendar in cache", in_both_modes, plain, NULL);
     failed +=
