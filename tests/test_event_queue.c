@@ -171,6 +171,20 @@ static void test_rest_and_ties_are_handled(void **state)
     destroy(p);
 }
 
+/* Takes `count` disks off the front, each sent to rest (+infinity) once
+ * taken: their times must never go backwards. */
+static void take_in_order(pair p, size_t count)
+{
+    double last = 0.0;
+    for (size_t k = 0; k < count; ++k) {
+        const uint32_t i = first(p);
+        const double t = ds_eq_time(p.calendar, i);
+        assert_true(t >= last);
+        last = t;
+        set(p, i, INFINITY);
+    }
+}
+
 static void test_a_bucket_fuller_than_a_cache_line_loses_nothing(void **state)
 {
     (void)state;
@@ -185,14 +199,7 @@ static void test_a_bucket_fuller_than_a_cache_line_loses_nothing(void **state)
     build(p, times, n, 0.0);
     for (size_t i = 0; i < n; ++i)
         set(p, (uint32_t)i, 5.0 + (double)((i * 7919) % n) * 1e-9);
-    double last = 0.0;
-    for (size_t k = 0; k < n; ++k) {
-        const uint32_t i = first(p);
-        const double t = ds_eq_time(p.calendar, i);
-        assert_true(t >= last);
-        last = t;
-        set(p, i, INFINITY);
-    }
+    take_in_order(p, n);
     free(times);
     destroy(p);
 }
@@ -202,7 +209,7 @@ static void test_rescheduling_the_same_disk_many_times_runs_in_bounded_memory(vo
     (void)state;
     /* Each reschedule leaves a stale entry behind; a disk rescheduled over
      * and over into the future must not exhaust anything (the calendar
-     * rebuilds itself from the slots when its pool runs out). */
+     * rebuilds itself from the times when its pool runs out). */
     const size_t n = 8;
     pair p = make(n);
     double times[8] = {1, 2, 3, 4, 5, 6, 7, 8};
@@ -231,14 +238,7 @@ static void test_disks_rescheduled_beyond_the_window_again_and_again_keep_their_
         set(p, (uint32_t)(k % 8), 1e4 + (double)((k * 7919) % 10007));
     set(p, 3, 2.5);
     set(p, 5, 9.0);
-    double last = 0.0;
-    for (size_t k = 0; k < n; ++k) {
-        const uint32_t i = first(p);
-        const double t = ds_eq_time(p.calendar, i);
-        assert_true(t >= last);
-        last = t;
-        set(p, i, INFINITY);
-    }
+    take_in_order(p, n);
     assert_true(isinf(ds_eq_time(p.calendar, first(p))));
     destroy(p);
 }
