@@ -73,7 +73,7 @@ struct ds_event_queue {
     size_t stride;
     heap_node *heap; /* DS_EQ_HEAP: all disks; calendar: the sorted front */
     uint32_t *where; /* DS_EQ_HEAP: each disk's place in the heap */
-    uint8_t *flag;   /* calendar: KEPT */
+    uint8_t *flag;   /* calendar: KEPT, set only inside heap_compact */
     size_t heap_count, heap_cap;
 
     /* Calendar only. Bucket b (absolute) covers [b, b+1) / inv_width and
@@ -379,8 +379,6 @@ static void reinsert_all(ds_event_queue *q)
     q->heap_count = 0;
     q->pending_head = q->pending_tail = 0;
     q->pending_min = FAR_BUCKET;
-    for (size_t i = 0; i < q->n; ++i)
-        q->flag[i] = 0;
     for (size_t i = 0; i < q->n; ++i)
         insert_now(q, (uint32_t)i); /* cannot run out: no stale entries */
 }
