@@ -8,6 +8,16 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+
+static inline __m128d load_pair(const double *a, const double *b)
+{
+    return _mm_loadh_pd(_mm_load_sd(a), b);
+}
+
+static inline __m128d select_pd(__m128d mask, __m128d yes, __m128d no)
+{
+    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
+}
 #endif
 
 /* The boundary event of one axis: the edge of the disk's cell it moves
@@ -27,6 +37,49 @@ static inline void axis_event(double u, double v, uint32_t cell, uint32_t count,
         *best = t;
         *kind = at_wall ? wall_kind : cell_kind;
     }
+}
+
+/* Disk d's earlier boundary event (x first on a tie) into *best and
+ * *kind, if before *best. On x86 both axes go in one pair of SSE2 lanes,
+ * the same arithmetic as axis_event (so the same times to the bit), the
+ * choices made with masks: which way a disk moves along each axis is a
+ * coin toss, and a branch on it was mispredicted about once a
+ * prediction. */
+static inline void boundary_event(const ds_events *e, const ed_disk *d, double now, double *best,
+                                  uint32_t *kind)
+{
+    const ds_cells *cells = &e->cells;
+    const int walls = !e->periodic;
+#if defined(__SSE2__)
+    const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
+    const __m128d u = _mm_loadu_pd(&d->x), v = _mm_loadu_pd(&d->vx); /* (x, y), (vx, vy) */
+    const __m128d cell = _mm_set_pd((double)d->row, (double)d->column);
+    const __m128d up = _mm_cmpgt_pd(v, zero);
+    const __m128d last = _mm_set_pd((double)cells->ny - 1.0, (double)cells->nx - 1.0);
+    const __m128d at_wall = walls ? _mm_cmpeq_pd(cell, _mm_and_pd(up, last)) : zero;
+    const __m128d wall = select_pd(up, _mm_set_pd(e->hi_y, e->hi_x), _mm_set_pd(e->lo_y, e->lo_x));
+    const __m128d edge_of_cell =
+        _mm_mul_pd(_mm_add_pd(cell, _mm_and_pd(up, one)), _mm_set_pd(cells->wy, cells->wx));
+    const __m128d edge = select_pd(at_wall, wall, edge_of_cell);
+    const __m128d moving = _mm_cmpneq_pd(v, zero);
+    /* max(lag, 0) as lag > 0 ? lag : 0, a NaN giving 0 */
+    const __m128d lag = _mm_max_pd(_mm_div_pd(_mm_sub_pd(edge, u), select_pd(moving, v, one)), zero);
+    const __m128d t =
+        select_pd(moving, _mm_add_pd(_mm_set1_pd(now), lag), _mm_set1_pd((double)INFINITY));
+    const __m128d ty = _mm_unpackhi_pd(t, t);
+    const int y = _mm_comilt_sd(ty, t);
+    const double first = _mm_cvtsd_f64(_mm_min_sd(ty, t)); /* ty < tx ? ty : tx */
+    static const uint32_t kinds[4] = {EV_CELL_X, EV_WALL_X, EV_CELL_Y, EV_WALL_Y};
+    const uint32_t k = kinds[2 * y + ((_mm_movemask_pd(at_wall) >> y) & 1)];
+    const int earlier = first < *best;
+    *kind = earlier ? k : *kind;
+    *best = earlier ? first : *best;
+#else
+    axis_event(d->x, d->vx, d->column, cells->nx, cells->wx, e->lo_x, e->hi_x, walls, EV_CELL_X,
+               EV_WALL_X, now, best, kind);
+    axis_event(d->y, d->vy, d->row, cells->ny, cells->wy, e->lo_y, e->hi_y, walls, EV_CELL_Y,
+               EV_WALL_Y, now, best, kind);
+#endif
 }
 
 void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st)
@@ -62,6 +115,8 @@ void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_sten
  * the cells and the pair tests then each run without the other's
  * unpredictable branches. */
 #define GATHER_CAP 64
+/* The 3 x 3 cells' slots fit at once (C99 has no static assertion). */
+typedef char gather_holds_nine_cells[9 * DS_CELL_SLOTS <= GATHER_CAP ? 1 : -1];
 
 typedef struct predictor {
     const ds_events *e;
@@ -101,24 +156,14 @@ typedef struct predictor {
  * lost a few times per prediction, each time throwing away the square
  * roots and divisions in flight. The two lanes are merged at the end,
  * the earlier place winning a tie, as in the plain-C loop. */
-static inline __m128d load_pair(const double *a, const double *b)
-{
-    return _mm_loadh_pd(_mm_load_sd(a), b);
-}
-
-static inline __m128d select_pd(__m128d mask, __m128d yes, __m128d no)
-{
-    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
-}
-
 static inline void test_gathered(predictor *pr, int shifted)
 {
     const ds_events *e = pr->e;
     const ed_disk *d = pr->d;
-    if (pr->count & 1) { /* pad with the disk itself: b = 0, never */
-        pr->disk[pr->count] = pr->self;
-        pr->image[pr->count] = 0;
-    }
+    /* An odd count is padded with the disk itself (b = 0: never); written
+     * whatever the count, as a branch on it would be a coin toss. */
+    pr->disk[pr->count] = pr->self;
+    pr->image[pr->count] = 0;
     const __m128d dx = _mm_set1_pd(d->x), dy = _mm_set1_pd(d->y);
     const __m128d dvx = _mm_set1_pd(d->vx), dvy = _mm_set1_pd(d->vy);
     const __m128d now = _mm_set1_pd(pr->now), sigma2 = _mm_set1_pd(e->sigma2);
@@ -157,18 +202,28 @@ static inline void test_gathered(predictor *pr, int shifted)
         best_place = select_pd(take, place, best_place);
     }
     pr->tested += pr->count;
+    if (pr->count == 0)
+        return;
     pr->count = 0;
-    const double t0 = _mm_cvtsd_f64(best), t1 = _mm_cvtsd_f64(_mm_unpackhi_pd(best, best));
-    const double j0 = _mm_cvtsd_f64(best_place);
-    const double j1 = _mm_cvtsd_f64(_mm_unpackhi_pd(best_place, best_place));
-    const int second = t1 < t0 || (t1 == t0 && j1 >= 0.0 && (j0 < 0.0 || j1 < j0));
-    const double t = second ? t1 : t0, j = second ? j1 : j0;
-    if (j >= 0.0 && t < pr->best) {
-        const uint32_t k = pr->disk[(uint32_t)j];
-        pr->best = t;
-        pr->kind = k;
-        pr->partner_changes = e->disk[k].changes;
-    }
+    /* The earlier lane wins, the earlier place on a tie. A lane's best
+     * starts at pr->best and only a strictly earlier time replaces it, so
+     * a lane that found nothing (place -1) ties only with another such.
+     * Whether anything was found is a coin toss (a collision before the
+     * disk's wall or cell edge, or not): chosen with masks and
+     * conditional moves, not a branch. */
+    const __m128d best1 = _mm_unpackhi_pd(best, best);
+    const __m128d place1 = _mm_unpackhi_pd(best_place, best_place);
+    const __m128d second =
+        _mm_or_pd(_mm_cmplt_sd(best1, best),
+                  _mm_and_pd(_mm_cmpeq_sd(best1, best), _mm_cmplt_sd(place1, best_place)));
+    const __m128d chosen = select_pd(second, place1, best_place);
+    const int found = _mm_comige_sd(chosen, zero);
+    const uint32_t k = pr->disk[(uint32_t)_mm_cvtsd_f64(_mm_max_sd(chosen, zero))];
+    const uint32_t changes = e->disk[k].changes;
+    pr->best = _mm_cvtsd_f64(select_pd(second, best1, best));
+    const uint32_t keep = (uint32_t)found - 1u; /* all ones if nothing was found */
+    pr->kind = (k & ~keep) | (pr->kind & keep);
+    pr->partner_changes = (changes & ~keep) | (pr->partner_changes & keep);
 }
 #else
 /* Keeps candidate k (time t) if it beats the best so far. Only a
@@ -262,7 +317,6 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
     ed_disk *const d = &e->disk[i];
     const ds_cells *cells = &e->cells;
     const uint32_t empty = cells->empty;
-    const int walls = !e->periodic;
     predictor pr;
     pr.e = e;
     pr.d = d;
@@ -273,30 +327,40 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
     pr.partner_changes = 0;
     pr.count = 0;
     pr.tested = 0;
-    axis_event(d->x, d->vx, d->column, cells->nx, cells->wx, e->lo_x, e->hi_x, walls, EV_CELL_X,
-               EV_WALL_X, pr.now, &pr.best, &pr.kind);
-    axis_event(d->y, d->vy, d->row, cells->ny, cells->wy, e->lo_y, e->hi_y, walls, EV_CELL_Y,
-               EV_WALL_Y, pr.now, &pr.best, &pr.kind);
+    boundary_event(e, d, pr.now, &pr.best, &pr.kind);
 
     if (ds_ed_interior(cells, d)) {
         /* Away from the edges of the grid (nearly every disk of a large
          * system): three rows of three cells, twelve consecutive slots
          * each, no shifts, no wrap; the disk itself is among them once. */
-        uint32_t cell = ds_cells_index(cells, d->column - 1u, d->row - 1u);
-        for (int r = 0; r < 3; ++r, cell += cells->nx) {
-            const uint32_t *slot = ds_cells_slots(cells, cell);
-            if (pr.count + 3 * DS_CELL_SLOTS > GATHER_CAP)
-                test_unshifted(&pr);
-            gather_slots(&pr, slot, 3 * DS_CELL_SLOTS, empty);
-            for (int c = 0; c < 3; ++c)
-                if (slot[c * DS_CELL_SLOTS + DS_CELL_SLOTS - 1] != empty)
-                    for (uint32_t k = ds_cells_overflow(cells, cell + (uint32_t)c); k != empty;
+        const uint32_t cell = ds_cells_index(cells, d->column - 1u, d->row - 1u);
+        const uint32_t *row0 = ds_cells_slots(cells, cell);
+        const uint32_t *row1 = row0 + (size_t)cells->nx * DS_CELL_SLOTS;
+        const uint32_t *row2 = row1 + (size_t)cells->nx * DS_CELL_SLOTS;
+        /* 36 slots fit the gathering at once (GATHER_CAP), written out
+         * row by row: no loop to leave, no check between the rows. */
+        gather_slots(&pr, row0, 3 * DS_CELL_SLOTS, empty);
+        gather_slots(&pr, row1, 3 * DS_CELL_SLOTS, empty);
+        gather_slots(&pr, row2, 3 * DS_CELL_SLOTS, empty);
+        /* Overflow lists (a dilute gas's large cells only): one branch for
+         * all nine cells, none of them full in a dense system. */
+        const uint32_t last = DS_CELL_SLOTS - 1;
+        const uint32_t mid = last + DS_CELL_SLOTS, end = last + 2 * DS_CELL_SLOTS;
+        if ((row0[last] != empty) | (row0[mid] != empty) | (row0[end] != empty) |
+            (row1[last] != empty) | (row1[mid] != empty) | (row1[end] != empty) |
+            (row2[last] != empty) | (row2[mid] != empty) | (row2[end] != empty))
+            for (uint32_t r = 0; r < 3; ++r)
+                for (uint32_t c = 0; c < 3; ++c) {
+                    const uint32_t at = cell + r * cells->nx + c;
+                    if (ds_cells_slots(cells, at)[last] == empty)
+                        continue;
+                    for (uint32_t k = ds_cells_overflow(cells, at); k != empty;
                          k = cells->next[k]) {
                         if (pr.count == GATHER_CAP)
                             test_unshifted(&pr);
                         pr.disk[pr.count++] = k;
                     }
-        }
+                }
         test_unshifted(&pr);
         --pr.tested;
     } else {

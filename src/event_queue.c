@@ -219,8 +219,9 @@ static void sift_down(ds_event_queue *q, size_t pos)
         size_t child = 2 * pos + 1;
         if (child >= count)
             break;
-        if (child + 1 < count && q->heap[child + 1].time < q->heap[child].time)
-            ++child;
+        /* The earlier child, without a branch on which: a coin toss. */
+        const size_t right = child + 1 < count ? child + 1 : child;
+        child += q->heap[right].time < q->heap[child].time;
         if (!(q->heap[child].time < node.time))
             break;
         heap_place(q, pos, q->heap[child]);
