@@ -103,17 +103,25 @@ void ds_cells_add(ds_cells *cells, uint32_t cell, uint32_t disk)
 void ds_cells_remove(ds_cells *cells, uint32_t cell, uint32_t disk)
 {
     uint32_t *slot = cells->slot + (size_t)cell * DS_CELL_SLOTS;
+    const uint32_t empty = cells->empty;
     for (int k = 0; k < DS_CELL_SLOTS; ++k)
         if (slot[k] == disk) {
             /* A slot freed while the overflow list holds disks takes one,
              * so the list stays empty unless every slot is taken; and
              * while the last slot is free, the list (another cache line)
-             * is not even read. */
-            const uint32_t first =
-                slot[DS_CELL_SLOTS - 1] != cells->empty ? cells->more[cell] : cells->empty;
-            slot[k] = first;
-            if (first != cells->empty)
+             * is not even read. Otherwise the cell's last disk moves into
+             * the freed slot: the disks stay packed from the first slot. */
+            if (slot[DS_CELL_SLOTS - 1] != empty && cells->more[cell] != empty) {
+                const uint32_t first = cells->more[cell];
+                slot[k] = first;
                 cells->more[cell] = cells->next[first];
+                return;
+            }
+            int last = DS_CELL_SLOTS - 1;
+            while (slot[last] == empty)
+                --last;
+            slot[k] = slot[last];
+            slot[last] = empty;
             return;
         }
     uint32_t *link = &cells->more[cell];

@@ -10,7 +10,9 @@
  * disks (five points in a square of side w are at most w / sqrt(2) apart),
  * which is the usual case; a larger cell (a dilute gas, whose grid would
  * otherwise be huge) keeps its further disks in an overflow list, used
- * only while all four slots are taken.
+ * only while all four slots are taken. A cell's disks fill its slots from
+ * the first, the empty ones after them: a cell is read as four slots at
+ * once and a count.
  *
  * Not installed; used by event_driven.c and the tests. */
 #ifndef DS_CELLS_H

@@ -29,6 +29,17 @@ static int holds(const ds_cells *cells, uint32_t cell, uint32_t disk)
     return times;
 }
 
+/* Whether the cell's disks fill its first `count` slots and the rest are
+ * empty: the pair tests read a cell as four slots and a count. */
+static int packed(const ds_cells *cells, uint32_t cell, int count)
+{
+    const uint32_t *slot = ds_cells_slots(cells, cell);
+    for (int k = 0; k < DS_CELL_SLOTS; ++k)
+        if ((slot[k] != cells->empty) != (k < count))
+            return 0;
+    return 1;
+}
+
 static void test_cells_are_at_least_a_diameter_wide(void **state)
 {
     (void)state;
@@ -111,11 +122,49 @@ static void test_disks_added_are_found_once_and_removed_cleanly(void **state)
         if (ds_cells_overflow(&cells, cell) != cells.empty)
             for (int s = 0; s < DS_CELL_SLOTS; ++s)
                 assert_true(ds_cells_slots(&cells, cell)[s] != cells.empty);
+        assert_true(packed(&cells, cell, n - k - 1 < DS_CELL_SLOTS ? (int)(n - k - 1) : 4));
     }
     /* Other cells were never touched. */
     for (uint32_t c = 0; c < cells.nx * cells.ny; ++c) {
         uint32_t found[64];
         assert_int_equal(cell_disks(&cells, c, found), 0);
+    }
+    ds_cells_free(&cells);
+}
+
+static void test_a_cell_keeps_its_disks_in_its_first_slots_whatever_leaves(void **state)
+{
+    (void)state;
+    ds_cells cells;
+    assert_int_equal(ds_cells_init(&cells, 8, 30.0, 30.0, 5.0, UINT32_MAX), DS_OK);
+    const uint32_t cell = ds_cells_index(&cells, 2, 1);
+    /* Four disks, then taken out in each of the 24 orders, one disk put
+     * back after the second removal: every slot freed in the middle is
+     * filled from the end. */
+    for (int order = 0; order < 24; ++order) {
+        uint32_t left[4] = {0, 1, 2, 3}, taken[4];
+        int perm = order;
+        for (int k = 4; k > 0; --k) { /* the order-th permutation */
+            const int pick = perm % k;
+            perm /= k;
+            taken[4 - k] = left[pick];
+            left[pick] = left[k - 1];
+        }
+        for (uint32_t d = 0; d < 4; ++d)
+            ds_cells_add(&cells, cell, d);
+        assert_true(packed(&cells, cell, 4));
+        int count = 4;
+        for (int k = 0; k < 4; ++k) {
+            ds_cells_remove(&cells, cell, taken[k]);
+            assert_int_equal(holds(&cells, cell, taken[k]), 0);
+            assert_true(packed(&cells, cell, --count));
+            if (k == 1) {
+                ds_cells_add(&cells, cell, 7);
+                assert_true(packed(&cells, cell, ++count));
+            }
+        }
+        ds_cells_remove(&cells, cell, 7);
+        assert_true(packed(&cells, cell, 0));
     }
     ds_cells_free(&cells);
 }
@@ -127,6 +176,7 @@ int main(void)
         cmocka_unit_test(test_a_dilute_gas_gets_a_few_cells_per_disk_not_millions),
         cmocka_unit_test(test_coordinates_map_to_their_cell_and_clamp_at_the_edges),
         cmocka_unit_test(test_disks_added_are_found_once_and_removed_cleanly),
+        cmocka_unit_test(test_a_cell_keeps_its_disks_in_its_first_slots_whatever_leaves),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
