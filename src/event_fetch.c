@@ -81,14 +81,27 @@ FETCHER void fetch_rows(const ds_events *e, region g)
     }
 }
 
-/* The empty slot holds n, one past the last disk: fetching that line too
- * costs less than a branch per slot, taken at random. */
+/* A cell's disks fill its slots from the first (cells.h), and at area
+ * fraction 0.5 a cell holds 0.64 disks on average, three or more in
+ * under 3% of cells: the first two slots are fetched whatever they hold
+ * (an empty slot holds n, one past the last disk, whose line costs less
+ * to fetch than a branch taken at random), the last two only when the
+ * third is taken. Half the requests of fetching all four: 0.80 to 0.93
+ * at 10^6 disks, 0.90 at 10^5 (`tools/bench events N`, alternating). */
 FETCHER void fetch_disks(const ds_events *e, region g)
 {
     const size_t stride = (size_t)e->cells.nx * DS_CELL_SLOTS;
+    const uint32_t empty = e->cells.empty;
     for (int r = 0; r < g.rows; ++r, g.slot += stride)
-        for (int k = 0; k < g.slots; ++k)
-            ds_prefetch(&e->disk[g.slot[k]]);
+        for (int k = 0; k < g.slots; k += DS_CELL_SLOTS) {
+            const uint32_t *slot = g.slot + k;
+            ds_prefetch(&e->disk[slot[0]]);
+            ds_prefetch(&e->disk[slot[1]]);
+            if (slot[2] != empty) {
+                ds_prefetch(&e->disk[slot[2]]);
+                ds_prefetch(&e->disk[slot[3]]);
+            }
+        }
 }
 
 /* The calendar names a disk whose event comes up soon: the first stage.
