@@ -353,8 +353,20 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
         /* 36 slots fit the gathering at once (GATHER_CAP), written out
          * row by row: no loop to leave, no check between the rows. */
         gather_slots(&pr, row0, 3 * DS_CELL_SLOTS, empty);
-        gather_slots(&pr, row1, 3 * DS_CELL_SLOTS, empty);
+        gather_slots(&pr, row1, DS_CELL_SLOTS, empty);
+        const uint32_t own = pr.count; /* where the disk's own cell begins */
+        gather_slots(&pr, row1 + DS_CELL_SLOTS, 2 * DS_CELL_SLOTS, empty);
         gather_slots(&pr, row2, 3 * DS_CELL_SLOTS, empty);
+        /* The disk itself is among its own cell's four slots (unless in
+         * its overflow list): the last candidate takes its place, one
+         * candidate fewer to test. Not found, the spare entry at
+         * GATHER_CAP takes the copy instead, and nothing changes. */
+        uint32_t at = GATHER_CAP;
+        for (uint32_t k = 0; k < DS_CELL_SLOTS; ++k)
+            at = pr.disk[own + k] == i ? own + k : at;
+        const uint32_t found = at != GATHER_CAP;
+        pr.disk[at] = pr.disk[pr.count - found];
+        pr.count -= found;
         /* Overflow lists (a dilute gas's large cells only): one branch for
          * all nine cells, none of them full in a dense system. */
         const uint32_t last = DS_CELL_SLOTS - 1;
@@ -375,7 +387,7 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
                     }
                 }
         test_unshifted(&pr);
-        --pr.tested;
+        pr.tested -= 1u - found; /* the disk itself, if it was tested */
     } else {
         ds_ed_stencil_cells st;
         ds_ed_stencil(e, d->column, d->row, &st);

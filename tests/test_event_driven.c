@@ -473,6 +473,48 @@ static void test_brute_force_and_cells_follow_the_same_trajectory(void **state)
     ds_destroy(brute);
 }
 
+static void test_a_crowded_cell_of_a_dilute_gas_matches_brute_force(void **state)
+{
+    (void)state;
+    /* A dilute gas gets large cells (a few per disk at most), and one of
+     * them can hold more disks than its four slots: the rest wait in its
+     * overflow list, which every prediction around it reads, the crowd's
+     * own disks included. 40 disks of R = 1 get 14 x 14 cells ~71 wide;
+     * 16 of them start in a 4 x 4 square of spacing 3 inside one cell
+     * away from the grid's edges, in all directions at speed 100, the
+     * others in three rows far below. Brute force (one cell, every disk
+     * every disk's candidate) must find the same collisions at the same
+     * times, up to the rounding that ends the brute-force test above. */
+    ds_sim *sim[2] = {create(40, 1.0, 1000.0, 3, DS_CELLS), create(40, 1.0, 1000.0, 3,
+                                                                     DS_BRUTE_FORCE)};
+    for (int s = 0; s < 2; ++s)
+        for (size_t k = 0; k < 40; ++k) {
+            const double angle = 2.4 * (double)k, vx = 100.0 * cos(angle), vy = 100.0 * sin(angle);
+            if (k < 16)
+                place(sim[s], k, 520.0 + 3.0 * (double)(k % 4), 520.0 + 3.0 * (double)(k / 4),
+                      vx, vy);
+            else
+                place(sim[s], k, 60.0 + 110.0 * (double)((k - 16) % 8),
+                      100.0 + 150.0 * (double)((k - 16) / 8), vx, vy);
+        }
+    /* The crowd spreads out within 0.1 time units, after some 17
+     * collisions; the gas is then too dilute for more within the run. */
+    for (int step = 0; step < 200; ++step) {
+        ds_step(sim[0]);
+        ds_step(sim[1]);
+        assert_int_equal(ds_collision_count(sim[0]), ds_collision_count(sim[1]));
+    }
+    assert_true(ds_collision_count(sim[0]) >= 12);
+    double worst = 0.0;
+    for (size_t i = 0; i < 40; ++i) {
+        const ds_disk c = ds_get(sim[0], i), b = ds_get(sim[1], i);
+        worst = fmax(worst, fmax(fabs(c.x - b.x), fabs(c.y - b.y)));
+    }
+    assert_true(worst < 1e-9); /* rounding apart: 3e-14 measured */
+    ds_destroy(sim[0]);
+    ds_destroy(sim[1]);
+}
+
 static int by_x(const void *a, const void *b)
 {
     const double xa = ((const ds_disk *)a)->x, xb = ((const ds_disk *)b)->x;
@@ -634,6 +676,7 @@ int main(void)
         cmocka_unit_test(test_set_between_steps_changes_the_course),
         cmocka_unit_test(test_a_run_cut_into_steps_gives_the_same_trajectory),
         cmocka_unit_test(test_brute_force_and_cells_follow_the_same_trajectory),
+        cmocka_unit_test(test_a_crowded_cell_of_a_dilute_gas_matches_brute_force),
         cmocka_unit_test(test_a_system_larger_than_the_caches_keeps_its_disks_apart),
         cmocka_unit_test(test_disks_at_rest_are_no_trouble),
         cmocka_unit_test(test_the_integrator_and_its_grid_are_named),
