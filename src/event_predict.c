@@ -63,7 +63,8 @@ static inline void boundary_event(const ds_events *e, const ed_disk *d, double n
     const __m128d edge = select_pd(at_wall, wall, edge_of_cell);
     const __m128d moving = _mm_cmpneq_pd(v, zero);
     /* max(lag, 0) as lag > 0 ? lag : 0, a NaN giving 0 */
-    const __m128d lag = _mm_max_pd(_mm_div_pd(_mm_sub_pd(edge, u), select_pd(moving, v, one)), zero);
+    const __m128d lag =
+        _mm_max_pd(_mm_div_pd(_mm_sub_pd(edge, u), select_pd(moving, v, one)), zero);
     const __m128d t =
         select_pd(moving, _mm_add_pd(_mm_set1_pd(now), lag), _mm_set1_pd((double)INFINITY));
     const __m128d ty = _mm_unpackhi_pd(t, t);
@@ -345,7 +346,7 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
     if (ds_ed_interior(cells, d)) {
         /* Away from the edges of the grid (nearly every disk of a large
          * system): three rows of three cells, twelve consecutive slots
-         * each, no shifts, no wrap; the disk itself is among them once. */
+         * each, no shifts, no wrap. */
         const uint32_t cell = ds_cells_index(cells, d->column - 1u, d->row - 1u);
         const uint32_t *row0 = ds_cells_slots(cells, cell);
         const uint32_t *row1 = row0 + (size_t)cells->nx * DS_CELL_SLOTS;
@@ -376,10 +377,10 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
             (row2[last] != empty) | (row2[mid] != empty) | (row2[end] != empty))
             for (uint32_t r = 0; r < 3; ++r)
                 for (uint32_t c = 0; c < 3; ++c) {
-                    const uint32_t at = cell + r * cells->nx + c;
-                    if (ds_cells_slots(cells, at)[last] == empty)
+                    const uint32_t full = cell + r * cells->nx + c;
+                    if (ds_cells_slots(cells, full)[last] == empty)
                         continue;
-                    for (uint32_t k = ds_cells_overflow(cells, at); k != empty;
+                    for (uint32_t k = ds_cells_overflow(cells, full); k != empty;
                          k = cells->next[k]) {
                         if (pr.count == GATHER_CAP)
                             test_unshifted(&pr);

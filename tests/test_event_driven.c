@@ -485,14 +485,14 @@ static void test_a_crowded_cell_of_a_dilute_gas_matches_brute_force(void **state
      * others in three rows far below. Brute force (one cell, every disk
      * every disk's candidate) must find the same collisions at the same
      * times, up to the rounding that ends the brute-force test above. */
-    ds_sim *sim[2] = {create(40, 1.0, 1000.0, 3, DS_CELLS), create(40, 1.0, 1000.0, 3,
-                                                                     DS_BRUTE_FORCE)};
+    ds_sim *sim[2] = {create(40, 1.0, 1000.0, 3, DS_CELLS),
+                      create(40, 1.0, 1000.0, 3, DS_BRUTE_FORCE)};
     for (int s = 0; s < 2; ++s)
         for (size_t k = 0; k < 40; ++k) {
             const double angle = 2.4 * (double)k, vx = 100.0 * cos(angle), vy = 100.0 * sin(angle);
             if (k < 16)
-                place(sim[s], k, 520.0 + 3.0 * (double)(k % 4), 520.0 + 3.0 * (double)(k / 4),
-                      vx, vy);
+                place(sim[s], k, 520.0 + 3.0 * (double)(k % 4), 520.0 + 3.0 * (double)(k / 4), vx,
+                      vy);
             else
                 place(sim[s], k, 60.0 + 110.0 * (double)((k - 16) % 8),
                       100.0 + 150.0 * (double)((k - 16) / 8), vx, vy);

@@ -13,7 +13,6 @@
  * so the quick tests are weaker but still honest. */
 #include "test_util.h"
 
-
 #include "sim_internal.h"
 
 static double max_speed(const ds_sim *sim)
