@@ -117,7 +117,7 @@ bad-input-table: all $(BUILD)/tests/test_cli
 	sh tests/bad_input_table.sh $(BUILD)/tests/test_cli README.md
 
 clean:
-	rm -rf build build-san build-fuzz build-werror-gcc build-werror-clang libdisksim.a disks
+	rm -rf build build-san build-fuzz build-werror-gcc build-werror-clang build-plain libdisksim.a disks
 
 # ---------------------------------------------------------------- bench
 # `make bench` prints the performance table of the README (under a minute

@@ -20,6 +20,7 @@ static inline __m128d select_pd(__m128d mask, __m128d yes, __m128d no)
 }
 #endif
 
+#if !defined(__SSE2__)
 /* The boundary event of one axis: the edge of the disk's cell it moves
  * towards or, in a cell at a wall, the wall line R inside that edge,
  * whichever it reaches (one division, not one per kind). Never before now:
@@ -38,13 +39,14 @@ static inline void axis_event(double u, double v, uint32_t cell, uint32_t count,
         *kind = at_wall ? wall_kind : cell_kind;
     }
 }
+#endif
 
 /* Disk d's earlier boundary event (x first on a tie) into *best and
  * *kind, if before *best. On x86 both axes go in one pair of SSE2 lanes,
- * the same arithmetic as axis_event (so the same times to the bit), the
- * choices made with masks: which way a disk moves along each axis is a
- * coin toss, and a branch on it was mispredicted about once a
- * prediction. */
+ * the same arithmetic as axis_event (the plain-C form, for machines
+ * without SSE2: the same times to the bit), the choices made with masks:
+ * which way a disk moves along each axis is a coin toss, and a branch on
+ * it was mispredicted about once a prediction. */
 static inline void boundary_event(const ds_events *e, const ed_disk *d, double now, double *best,
                                   uint32_t *kind)
 {
@@ -356,15 +358,19 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
         gather_slots(&pr, row0, 3 * DS_CELL_SLOTS, empty);
         gather_slots(&pr, row1, DS_CELL_SLOTS, empty);
         const uint32_t own = pr.count; /* where the disk's own cell begins */
-        gather_slots(&pr, row1 + DS_CELL_SLOTS, 2 * DS_CELL_SLOTS, empty);
+        gather_slots(&pr, row1 + DS_CELL_SLOTS, DS_CELL_SLOTS, empty);
+        const uint32_t own_end = pr.count;
+        gather_slots(&pr, row1 + 2 * DS_CELL_SLOTS, DS_CELL_SLOTS, empty);
         gather_slots(&pr, row2, 3 * DS_CELL_SLOTS, empty);
-        /* The disk itself is among its own cell's four slots (unless in
-         * its overflow list): the last candidate takes its place, one
+        /* The disk itself is among its own cell's disks (unless in its
+         * overflow list): the last candidate takes its place, one
          * candidate fewer to test. Not found, the spare entry at
-         * GATHER_CAP takes the copy instead, and nothing changes. */
+         * GATHER_CAP takes the copy instead, and nothing changes. Only
+         * the cell's own entries are looked at: past them, what the
+         * gathering has not written since is left from before. */
         uint32_t at = GATHER_CAP;
-        for (uint32_t k = 0; k < DS_CELL_SLOTS; ++k)
-            at = pr.disk[own + k] == i ? own + k : at;
+        for (uint32_t k = own; k < own + DS_CELL_SLOTS; ++k)
+            at = k < own_end && pr.disk[k] == i ? k : at;
         const uint32_t found = at != GATHER_CAP;
         pr.disk[at] = pr.disk[pr.count - found];
         pr.count -= found;
