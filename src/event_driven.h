@@ -21,6 +21,10 @@
  * refuses; closer than 2R by less is contact up to rounding. */
 #define CONTACT_TOLERANCE 1e-9
 
+/* Predicting (event_predict.c) and fetching (event_fetch.c) read a
+ * cell as four slots at once (C99 has no static assertion). */
+typedef char ds_ed_cells_have_four_slots[DS_CELL_SLOTS == 4 ? 1 : -1];
+
 /* Disks named by the calendar ahead of their events (a power of two), and
  * the size of state from which that pays (see "Fetching ahead"). */
 #define AHEAD_MASK 63u
