@@ -58,6 +58,7 @@ struct ds_events {
      * fetching ahead; see "Fetching ahead". */
     uint32_t ahead[AHEAD_MASK + 1];
     uint32_t ahead_tag[AHEAD_MASK + 1]; /* the event count at its last stage */
+    double ahead_until[AHEAD_MASK + 1]; /* its calendar entry's end of time */
     uint32_t ahead_tail, ahead_second, ahead_third, ahead_fourth;
     uint32_t events;    /* events handled, mod 2^32 */
     double epoch;       /* simulated time of the integrator's t = 0 */
@@ -90,7 +91,7 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i);
 
 /* Fetching ahead (event_fetch.c): the calendar's ds_eq_on_soon callback,
  * and the step run before each event. */
-void ds_ed_on_soon(void *ctx, uint32_t i);
+void ds_ed_on_soon(void *ctx, uint32_t i, double until);
 void ds_ed_fetch_ahead(ds_events *e);
 
 #endif

@@ -104,19 +104,25 @@ FETCHER void fetch_disks(const ds_events *e, region g)
         }
 }
 
+/* A named disk whose record showed, at the second stage, that it has been
+ * rescheduled past its bucket: its bucket's entry is stale, and the bucket
+ * it has moved to names it again. */
+#define DROPPED UINT32_MAX
+
 /* The calendar names a disk whose event comes up soon: the first stage.
  * Names come in bursts, a bucket at a time, and may outrun the events
  * (stale ones among them), so the ring can fill: then the oldest are
  * dropped, unfetched. */
-void ds_ed_on_soon(void *ctx, uint32_t i)
+void ds_ed_on_soon(void *ctx, uint32_t i, double until)
 {
     ds_events *e = ctx;
     ds_prefetch(&e->disk[i]);
-    const uint32_t tail = e->ahead_tail++;
-    e->ahead[tail & AHEAD_MASK] = i;
+    const uint32_t k = e->ahead_tail++ & AHEAD_MASK;
+    e->ahead[k] = i;
+    e->ahead_until[k] = until;
     /* Named while the calendar finds the next event: tagged with that
      * event, whose fetch_ahead must leave it alone. */
-    e->ahead_tag[tail & AHEAD_MASK] = e->events + 1;
+    e->ahead_tag[k] = e->events + 1;
     if (e->ahead_tail - e->ahead_fourth > AHEAD_MASK + 1) {
         e->ahead_fourth = e->ahead_tail - (AHEAD_MASK + 1);
         if (e->ahead_third < e->ahead_fourth)
@@ -133,24 +139,36 @@ void ds_ed_fetch_ahead(ds_events *e)
 {
     const uint32_t now = ++e->events, empty = e->cells.empty;
     while (e->ahead_fourth < e->ahead_third && e->ahead_tag[e->ahead_fourth & AHEAD_MASK] != now) {
-        const ed_disk *d = &e->disk[e->ahead[e->ahead_fourth++ & AHEAD_MASK]];
-        if (d->partner < empty)
-            fetch_disks(e, cells_around(e, &e->disk[d->partner]));
+        const uint32_t i = e->ahead[e->ahead_fourth++ & AHEAD_MASK];
+        if (i != DROPPED && e->disk[i].partner < empty)
+            fetch_disks(e, cells_around(e, &e->disk[e->disk[i].partner]));
     }
     while (e->ahead_third < e->ahead_second && e->ahead_tag[e->ahead_third & AHEAD_MASK] != now) {
         const uint32_t k = e->ahead_third++ & AHEAD_MASK;
+        e->ahead_tag[k] = now;
+        if (e->ahead[k] == DROPPED)
+            continue;
         const ed_disk *d = &e->disk[e->ahead[k]];
         fetch_disks(e, cells_ahead(e, d));
         if (d->partner < empty)
             fetch_rows(e, cells_around(e, &e->disk[d->partner]));
-        e->ahead_tag[k] = now;
     }
     while (e->ahead_second < e->ahead_tail && e->ahead_tag[e->ahead_second & AHEAD_MASK] != now) {
         const uint32_t k = e->ahead_second++ & AHEAD_MASK;
         const ed_disk *d = &e->disk[e->ahead[k]];
+        e->ahead_tag[k] = now;
+        /* A quarter to a third of the names are stale entries, most of
+         * them of disks rescheduled later (the record, here now, tells):
+         * fetching for them only crowded out the fetches that count. (An
+         * entry of a disk moved earlier is kept: it may come up before any
+         * bucket names it again.) 0.80 to 0.88 at 10^6 disks, 0.93 at
+         * 10^5 (`tools/bench events N`, alternating). */
+        if (!(d->next < e->ahead_until[k])) {
+            e->ahead[k] = DROPPED;
+            continue;
+        }
         if (d->partner < empty)
             ds_prefetch(&e->disk[d->partner]);
         fetch_rows(e, cells_ahead(e, d));
-        e->ahead_tag[k] = now;
     }
 }

@@ -415,16 +415,22 @@ static void scan_far(ds_event_queue *q)
     q->far_count = kept;
 }
 
-/* Requests the times of bucket b's disks and tells the integrator. */
+/* Requests the times of bucket b's disks and tells the integrator, with
+ * the end of the bucket's time: an entry is current only while its
+ * disk's time is before it. The rare entries spilled past a full bucket
+ * are named too: a disk left unnamed there may have been named by a
+ * stale entry of an earlier bucket, whose end it is past. */
 static void announce(ds_event_queue *q, int64_t b)
 {
     const bucket *bk = &q->bucket[(uint64_t)b & q->mask];
     ds_prefetch(&q->bucket[(uint64_t)(b + SOON) & q->mask]);
+    const double until = (double)(b + 1) / q->inv_width;
     for (unsigned k = 0; k < bk->count; ++k) {
         ds_prefetch(time_at(q, bk->disk[k]));
-        if (q->soon)
-            q->soon(q->soon_ctx, bk->disk[k]);
+        q->soon(q->soon_ctx, bk->disk[k], until);
     }
+    for (uint32_t e = bk->spill; e != NONE; e = q->pool[e].next)
+        q->soon(q->soon_ctx, q->pool[e].disk, until);
 }
 
 /* Moves bucket b's current entries into the heap and empties it. */

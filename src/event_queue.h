@@ -57,12 +57,15 @@ ds_eq_kind ds_eq_kind_of(const ds_event_queue *q);
 
 /* For a calendar larger than the caches: keeps at least `lookahead` times
  * sorted ahead of the next one (at most 64; 1 by default), reads buckets
- * ahead and calls soon(ctx, i) for a disk a couple of buckets before its
- * time joins them (some events before its turn, early enough to fetch what
- * its event will touch; a disk may be named more than once, or named and
- * then rescheduled), and buffers insertions until their bucket has been
- * fetched. soon = NULL (the default) does none of it. */
-typedef void (*ds_eq_soon_fn)(void *ctx, uint32_t i);
+ * ahead and calls soon(ctx, i, until) for a disk a couple of buckets
+ * before its time joins them (some events before its turn, early enough to
+ * fetch what its event will touch; a disk may be named more than once, or
+ * named and then rescheduled), and buffers insertions until their bucket
+ * has been fetched. until is the end of the naming entry's bucket: a disk
+ * whose time is at or past it was named by a stale entry, and is named
+ * again by its new bucket unless that was read already. soon = NULL (the
+ * default) does none of it. */
+typedef void (*ds_eq_soon_fn)(void *ctx, uint32_t i, double until);
 void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx, unsigned lookahead);
 
 /* Bytes a queue of n disks allocates, not counting the calendar's spill
