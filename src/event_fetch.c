@@ -44,10 +44,12 @@ FETCHER region cells_at(const ds_cells *cells, uint32_t column, uint32_t row, in
     return g;
 }
 
-/* The cells disk d's event will look at: the 3 x 3 around it and, for a
- * cell crossing, the row or column of cells it is about to enter (the
- * crossing predicts it from its new cell). Nothing at the edge of the
- * grid, where it is not worth the care. */
+/* The cells disk d's event will look at: the 3 x 3 around it, or for a
+ * cell crossing the 3 x 3 around the cell it enters (the crossing moves
+ * it there, from a cell of that block, and predicts it from there; the
+ * row or column it leaves is not read: fetching only the new block,
+ * 0.91 at 10^5 disks, 0.97 at 10^6). Nothing at the edge of the grid,
+ * where it is not worth the care. */
 FETCHER region cells_ahead(const ds_events *e, const ed_disk *d)
 {
     const ds_cells *cells = &e->cells;
@@ -55,9 +57,9 @@ FETCHER region cells_ahead(const ds_events *e, const ed_disk *d)
         return nothing;
     const uint32_t column = d->column - 1u, row = d->row - 1u;
     if (d->partner == EV_CELL_X && (d->vx > 0.0 ? d->column + 2u < cells->nx : d->column >= 2u))
-        return cells_at(cells, column - (d->vx < 0.0), row, 4, 3);
+        return cells_at(cells, d->vx > 0.0 ? column + 1u : column - 1u, row, 3, 3);
     if (d->partner == EV_CELL_Y && (d->vy > 0.0 ? d->row + 2u < cells->ny : d->row >= 2u))
-        return cells_at(cells, column, row - (d->vy < 0.0), 3, 4);
+        return cells_at(cells, column, d->vy > 0.0 ? row + 1u : row - 1u, 3, 3);
     return cells_at(cells, column, row, 3, 3);
 }
 
