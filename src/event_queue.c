@@ -391,6 +391,9 @@ static void reinsert_all(ds_event_queue *q)
         file_at(q, (uint32_t)i, *time_at(q, (uint32_t)i)); /* no stale entries: fits */
 }
 
+/* Entries of the far list a scan looks ahead by. */
+#define FAR_AHEAD 16
+
 /* Moves the far list's entries whose times now fall inside the window
  * into it, keeping the rest in order. Scanning every nbuckets/2 buckets is
  * early enough: a time goes to the far list only when at least nbuckets
@@ -398,9 +401,6 @@ static void reinsert_all(ds_event_queue *q)
  * is still its disk's: a stale one is dropped when its bucket is drained,
  * as any stale bucket entry. (Filing by the disk's present time instead
  * read a random record line per entry: ~1 per collision at 10^5 disks.) */
-/* Entries of the far list a scan looks ahead by. */
-#define FAR_AHEAD 16
-
 static void scan_far(ds_event_queue *q)
 {
     q->next_scan = q->current + (int64_t)(q->nbuckets / 2);
@@ -526,23 +526,22 @@ void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
         return;
     }
     *time = t;
-    const int64_t b = bucket_of(q, t);
-    if (b <= q->current) {
-        heap_push(q, t, i);
-    } else if (b - q->current < (int64_t)q->nbuckets && !q->soon) {
-        bucket_add(q, b, i); /* a calendar in cache: at once */
-    } else if (b - q->current < (int64_t)q->nbuckets) {
-        /* Request the bucket's line now, write the entry later. */
-        ds_prefetch(&q->bucket[(uint64_t)b & q->mask]);
-        q->pending[q->pending_tail++ % PENDING] = (pending_insert){b, i};
-        ++q->windowed;
-        if (b < q->pending_min)
-            q->pending_min = b;
-        if (q->pending_tail - q->pending_head > PENDING_LAG)
-            write_pending(q);
-    } else {
-        far_add(q, i, t);
+    if (q->soon) {
+        const int64_t b = bucket_of(q, t);
+        if (b > q->current && b - q->current < (int64_t)q->nbuckets) {
+            /* Larger than the caches: request the bucket's line now,
+             * write the entry later. */
+            ds_prefetch(&q->bucket[(uint64_t)b & q->mask]);
+            q->pending[q->pending_tail++ % PENDING] = (pending_insert){b, i};
+            ++q->windowed;
+            if (b < q->pending_min)
+                q->pending_min = b;
+            if (q->pending_tail - q->pending_head > PENDING_LAG)
+                write_pending(q);
+            return;
+        }
     }
+    file_at(q, i, t); /* the heap, the far list, or (in cache) its bucket at once */
 }
 
 uint32_t ds_eq_first(ds_event_queue *q)

@@ -266,13 +266,14 @@ static void test_the_large_mode_names_disks_before_their_turn(void **state)
     /* In a gas-like run every disk whose time comes first was named ahead
      * of it (at least once per bucket read: about one name per event),
      * before the end of time that the name gives. */
+    const size_t n = 2000;
     soon_calls.count = soon_calls.checked = 0;
-    soon_calls.until = malloc(2000 * sizeof *soon_calls.until);
+    soon_calls.until = malloc(n * sizeof *soon_calls.until);
     assert_non_null(soon_calls.until);
-    for (size_t i = 0; i < 2000; ++i)
+    for (size_t i = 0; i < n; ++i)
         soon_calls.until[i] = NAN;
     large_mode = 1;
-    run_like_a_simulation(2000, 100000, 0.0, 5);
+    run_like_a_simulation(n, 100000, 0.0, 5);
     large_mode = 0;
     free(soon_calls.until);
     soon_calls.until = NULL;
