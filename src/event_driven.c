@@ -149,7 +149,7 @@ static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
         cross_cell(sim, e, i, t, partner == EV_CELL_Y);
         return;
     default:
-        if (e->disk[partner].changes == d->partner_changes) {
+        if (((e->disk[partner].changes ^ d->partner_changes) & CHANGES_MASK) == 0) {
             collide(sim, e, i, partner, t);
         } else {
             advance(d, t); /* stale: the partner has changed course */

@@ -21,6 +21,18 @@
  * refuses; closer than 2R by less is contact up to rounding. */
 #define CONTACT_TOLERANCE 1e-9
 
+/* A disk's partner_changes holds the partner's change count in its low
+ * 28 bits and, in the top 4, where the partner's cell is: (dx + 1) +
+ * 3 (dy + 1) from the disk's, or unknown (a shift across a periodic edge,
+ * or no partner). Fetching ahead reads it (event_fetch.c). The count is
+ * compared mod 2^28: a stale collision would be taken for current only if
+ * its partner had changed course a multiple of 2^28 (2.7 x 10^8) times
+ * before it came up, where a disk changes course a few times per mean
+ * free time. */
+#define CHANGES_MASK 0x0fffffffu
+#define PARTNER_CELL_SHIFT 28
+#define PARTNER_CELL_UNKNOWN 15u
+
 /* Predicting (event_predict.c) and fetching (event_fetch.c) read a
  * cell as four slots at once (C99 has no static assertion). */
 typedef char ds_ed_cells_have_four_slots[DS_CELL_SLOTS == 4 ? 1 : -1];
@@ -46,7 +58,7 @@ typedef struct ed_disk {
     uint16_t column, row;     /* its cell (DS_CELLS_MAX_SIDE per side) */
     uint32_t changes;         /* velocity changes so far */
     uint32_t partner;         /* the scheduled event: a disk or an EV_* */
-    uint32_t partner_changes; /* the partner's changes when it was predicted */
+    uint32_t partner_changes; /* the partner's changes when predicted, its cell */
 } ed_disk;
 
 struct ds_events {
@@ -59,7 +71,7 @@ struct ds_events {
     uint32_t ahead[AHEAD_MASK + 1];
     uint32_t ahead_tag[AHEAD_MASK + 1]; /* the event count at its last stage */
     double ahead_until[AHEAD_MASK + 1]; /* its calendar entry's end of time */
-    uint32_t ahead_tail, ahead_second, ahead_third, ahead_fourth;
+    uint32_t ahead_tail, ahead_second, ahead_third;
     uint32_t events;    /* events handled, mod 2^32 */
     double epoch;       /* simulated time of the integrator's t = 0 */
     double rebase_time; /* integrator time after which the epoch moves */

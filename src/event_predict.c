@@ -410,6 +410,12 @@ double ds_ed_predict(ds_sim *sim, ds_events *e, uint32_t i)
     }
     sim->pairs_tested += pr.tested;
     d->partner = pr.kind;
-    d->partner_changes = pr.partner_changes;
+    /* The partner's cell beside its count (event_driven.h); without a
+     * partner, the disk's own record stands in (no branch on whether a
+     * collision won: a coin toss). */
+    const ed_disk *p = &e->disk[pr.kind < empty ? pr.kind : i];
+    const uint32_t dx = (uint32_t)p->column - d->column + 1u, dy = (uint32_t)p->row - d->row + 1u;
+    const uint32_t at = dx < 3u && dy < 3u ? dx + 3u * dy : PARTNER_CELL_UNKNOWN;
+    d->partner_changes = (pr.partner_changes & CHANGES_MASK) | at << PARTNER_CELL_SHIFT;
     return pr.best;
 }
