@@ -71,20 +71,20 @@ FETCHER region cells_ahead(const ds_events *e, const ed_disk *d)
  * block, the cells the two share are fetched once, and the partner's
  * cells need not wait for its record: about 13 cells in one stage rather
  * than 18 in two (cells 2R wide: a partner at 2R in a random direction is
- * in another column with chance 1 - 2 / pi, and in another column and row
- * with 1 / pi, so 9 + 6 (1 - 2 / pi) + 1 / pi = 13.1). 0.91 to 1.00 at
- * 10^6 disks (4 in-process A/B runs of 9 to 31 rounds). Nothing at the
- * edge of the grid. */
+ * in another column with chance 2 / pi, in another row too, in both with
+ * 1 / pi, so 9 + 3 (2 / pi) 2 + 1 / pi = 13.1 cells). 0.91 to 1.00 at
+ * 10^6 disks (4 in-process A/B runs of 9 to 31 rounds). At the edge of
+ * the grid, the disk's own 3 x 3 cells or nothing. */
 FETCHER region pair_cells(const ds_events *e, const ed_disk *d)
 {
     const ds_cells *cells = &e->cells;
     const uint32_t at = d->partner_changes >> PARTNER_CELL_SHIFT;
-    if (!ds_ed_interior(cells, d) || at == PARTNER_CELL_UNKNOWN)
+    if (!ds_ed_interior(cells, d))
         return nothing;
     const uint32_t dx = at % 3u, dy = at / 3u; /* 0, 1, 2: left of, with, right of d */
     const uint32_t column = d->column + dx - 1u, row = d->row + dy - 1u;
-    if (!(column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u))
-        return nothing;
+    if (at == PARTNER_CELL_UNKNOWN || !(column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u))
+        return cells_at(cells, d->column - 1u, d->row - 1u, 3, 3); /* the disk's own */
     return cells_at(cells, (dx ? d->column : column) - 1u, (dy ? d->row : row) - 1u, 3 + (dx != 1u),
                     3 + (dy != 1u));
 }
