@@ -45,48 +45,49 @@ FETCHER region cells_at(const ds_cells *cells, uint32_t column, uint32_t row, in
     return g;
 }
 
-/* The cells disk d's event will look at: the 3 x 3 around it, or for a
- * cell crossing the 3 x 3 around the cell it enters (the crossing moves
- * it there, from a cell of that block, and predicts it from there; the
- * row or column it leaves is not read: fetching only the new block,
- * 0.91 at 10^5 disks, 0.97 at 10^6). Nothing at the edge of the grid,
- * where it is not worth the care. */
+/* The cells a collision's two disks are predicted from after it, disk d
+ * being inside the grid: the 3 x 3 around each, together one block of 3
+ * or 4 by 3 or 4 cells, as the partner's cell is the disk's or next to it
+ * (the prediction kept it in the disk's partner_changes, see
+ * event_driven.h). Fetched as one block, the cells the two share are
+ * fetched once, and the partner's cells need not wait for its record:
+ * about 13 cells in one stage rather than 18 in two (cells 2R wide: a
+ * partner at 2R in a random direction is in another column with chance
+ * 2 / pi, in another row too, in both with 1 / pi, so
+ * 9 + 3 (2 / pi) 2 + 1 / pi = 13.1 cells). 0.91 to 1.00 at 10^6 disks
+ * (4 in-process A/B runs of 9 to 31 rounds). With the partner's cell at
+ * the edge of the grid, or unknown, the disk's own 3 x 3. */
+FETCHER region pair_cells(const ds_cells *cells, const ed_disk *d)
+{
+    const uint32_t at = d->partner_changes >> PARTNER_CELL_SHIFT;
+    const uint32_t dx = at % 3u, dy = at / 3u; /* 0, 1, 2: left of, with, right of d */
+    const uint32_t column = d->column + dx - 1u, row = d->row + dy - 1u;
+    if (at == PARTNER_CELL_UNKNOWN || !(column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u))
+        return cells_at(cells, d->column - 1u, d->row - 1u, 3, 3);
+    return cells_at(cells, (dx ? d->column : column) - 1u, (dy ? d->row : row) - 1u, 3 + (dx != 1u),
+                    3 + (dy != 1u));
+}
+
+/* The cells disk d's event will look at: for a collision, those around
+ * both disks (pair_cells); for a cell crossing, the 3 x 3 around the cell
+ * it enters (the crossing moves it there, from a cell of that block, and
+ * predicts it from there; the row or column it leaves is not read:
+ * fetching only the new block, 0.91 at 10^5 disks, 0.97 at 10^6); else
+ * the 3 x 3 around it. Nothing at the edge of the grid, where it is not
+ * worth the care. */
 FETCHER region cells_ahead(const ds_events *e, const ed_disk *d)
 {
     const ds_cells *cells = &e->cells;
     if (!ds_ed_interior(cells, d))
         return nothing;
+    if (d->partner < cells->empty)
+        return pair_cells(cells, d);
     const uint32_t column = d->column - 1u, row = d->row - 1u;
     if (d->partner == EV_CELL_X && (d->vx > 0.0 ? d->column + 2u < cells->nx : d->column >= 2u))
         return cells_at(cells, d->vx > 0.0 ? column + 1u : column - 1u, row, 3, 3);
     if (d->partner == EV_CELL_Y && (d->vy > 0.0 ? d->row + 2u < cells->ny : d->row >= 2u))
         return cells_at(cells, column, d->vy > 0.0 ? row + 1u : row - 1u, 3, 3);
     return cells_at(cells, column, row, 3, 3);
-}
-
-/* The cells a collision's two disks are predicted from after it: the
- * 3 x 3 around each, together one block of 3 or 4 by 3 or 4 cells, as
- * the partner's cell is the disk's or next to it (the prediction kept it
- * in the disk's partner_changes, see event_driven.h). Fetched as one
- * block, the cells the two share are fetched once, and the partner's
- * cells need not wait for its record: about 13 cells in one stage rather
- * than 18 in two (cells 2R wide: a partner at 2R in a random direction is
- * in another column with chance 2 / pi, in another row too, in both with
- * 1 / pi, so 9 + 3 (2 / pi) 2 + 1 / pi = 13.1 cells). 0.91 to 1.00 at
- * 10^6 disks (4 in-process A/B runs of 9 to 31 rounds). At the edge of
- * the grid, the disk's own 3 x 3 cells or nothing. */
-FETCHER region pair_cells(const ds_events *e, const ed_disk *d)
-{
-    const ds_cells *cells = &e->cells;
-    const uint32_t at = d->partner_changes >> PARTNER_CELL_SHIFT;
-    if (!ds_ed_interior(cells, d))
-        return nothing;
-    const uint32_t dx = at % 3u, dy = at / 3u; /* 0, 1, 2: left of, with, right of d */
-    const uint32_t column = d->column + dx - 1u, row = d->row + dy - 1u;
-    if (at == PARTNER_CELL_UNKNOWN || !(column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u))
-        return cells_at(cells, d->column - 1u, d->row - 1u, 3, 3); /* the disk's own */
-    return cells_at(cells, (dx ? d->column : column) - 1u, (dy ? d->row : row) - 1u, 3 + (dx != 1u),
-                    3 + (dy != 1u));
 }
 
 FETCHER void fetch_rows(const ds_events *e, region g)
@@ -158,7 +159,7 @@ void ds_ed_fetch_ahead(ds_events *e)
         if (e->ahead[k] == DROPPED)
             continue;
         const ed_disk *d = &e->disk[e->ahead[k]];
-        fetch_disks(e, d->partner < empty ? pair_cells(e, d) : cells_ahead(e, d));
+        fetch_disks(e, cells_ahead(e, d));
     }
     while (e->ahead_second < e->ahead_tail && e->ahead_tag[e->ahead_second & AHEAD_MASK] != now) {
         const uint32_t k = e->ahead_second++ & AHEAD_MASK;
@@ -174,11 +175,8 @@ void ds_ed_fetch_ahead(ds_events *e)
             e->ahead[k] = DROPPED;
             continue;
         }
-        if (d->partner < empty) {
+        if (d->partner < empty)
             ds_prefetch(&e->disk[d->partner]);
-            fetch_rows(e, pair_cells(e, d));
-        } else {
-            fetch_rows(e, cells_ahead(e, d));
-        }
+        fetch_rows(e, cells_ahead(e, d));
     }
 }
