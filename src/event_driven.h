@@ -90,11 +90,18 @@ typedef struct ds_ed_stencil_cells {
 
 void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st);
 
-/* Whether disk d's 3 x 3 cells are all inside the grid, none across an
- * edge (unsigned arithmetic: column 0 wraps to a huge column - 1). */
+/* Whether the 3 x 3 cells around (column, row) are all inside the grid,
+ * none across an edge (unsigned arithmetic: column 0 wraps to a huge
+ * column - 1). */
+static inline int ds_ed_interior_at(const ds_cells *cells, uint32_t column, uint32_t row)
+{
+    return column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u;
+}
+
+/* The same for disk d's 3 x 3 cells. */
 static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
 {
-    return (uint32_t)d->column - 1u < cells->nx - 2u && (uint32_t)d->row - 1u < cells->ny - 2u;
+    return ds_ed_interior_at(cells, d->column, d->row);
 }
 
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):

@@ -62,7 +62,7 @@ FETCHER region pair_cells(const ds_cells *cells, const ed_disk *d)
     const uint32_t at = d->partner_changes >> PARTNER_CELL_SHIFT;
     const uint32_t dx = at % 3u, dy = at / 3u; /* 0, 1, 2: left of, with, right of d */
     const uint32_t column = d->column + dx - 1u, row = d->row + dy - 1u;
-    if (at == PARTNER_CELL_UNKNOWN || !(column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u))
+    if (at == PARTNER_CELL_UNKNOWN || !ds_ed_interior_at(cells, column, row))
         return cells_at(cells, d->column - 1u, d->row - 1u, 3, 3);
     return cells_at(cells, (dx ? d->column : column) - 1u, (dy ? d->row : row) - 1u, 3 + (dx != 1u),
                     3 + (dy != 1u));
