@@ -8,7 +8,7 @@ CFLAGS  ?= -O2 -g
 PKG_CONFIG ?= pkg-config
 HAVE_PKG_CONFIG := $(shell command -v $(PKG_CONFIG) >/dev/null 2>&1 && echo y)
 WARN    := -std=c99 -Wall -Wextra -Wpedantic
-CPPFLAGS += -Iinclude
+CPPFLAGS += -Iinclude -Isrc
 LDLIBS  += -lm
 AR      ?= ar
 
@@ -31,11 +31,12 @@ OUT   := $(if $(filter build,$(BUILD)),,$(BUILD)/)
 LIB   := $(OUT)libdisksim.a
 DISKS := $(OUT)disks
 
-LIB_SRC := src/rng.c src/timer.c src/status.c src/placement.c src/collision.c \
-           src/broad_phase.c src/broad_phase_strips.c src/broad_phase_seam.c src/time_step.c \
-           src/cells.c src/event_queue.c src/event_driven.c src/event_predict.c \
-           src/event_fetch.c src/large_alloc.c src/number_text.c \
-           src/placement_lattice.c src/frame_io.c src/xyz.c src/order.c src/sim.c
+# The library is every file of the folders of src/ (docs/architecture.md):
+# core/ (the simulation, parameters, disk arrays), timestep/ and event/
+# (the integrators), init/ (placement), observe/ (observables), io/ (text
+# formats). The command is cli/disks.c.
+LIB_DIRS := core timestep event init observe io
+LIB_SRC := $(sort $(foreach d,$(LIB_DIRS),$(wildcard src/$(d)/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
 .PHONY: all test clean
@@ -51,15 +52,20 @@ FLAGS_NOW   := $(CC) $(CFLAGS) $(CPPFLAGS) $(LDFLAGS)
 $(shell mkdir -p $(BUILD); [ "$$(cat $(FLAGS_STAMP) 2>/dev/null)" = "$(FLAGS_NOW)" ] || \
     echo "$(FLAGS_NOW)" > $(FLAGS_STAMP))
 
-LIB_HDR := include/disk_sim.h $(wildcard src/*.h)
+LIB_HDR := include/disk_sim.h $(wildcard src/*/*.h)
 $(BUILD)/%.o: src/%.c $(LIB_HDR) $(FLAGS_STAMP) | $(BUILD)
+	@mkdir -p $(dir $@)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/cli/%.o: cli/%.c include/disk_sim.h $(FLAGS_STAMP) | $(BUILD)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) -c $< -o $@
 
 $(LIB): $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(DISKS): $(BUILD)/disks.o $(LIB)
+$(DISKS): $(BUILD)/cli/disks.o $(LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
 # ---------------------------------------------------------------- tests
@@ -74,7 +80,7 @@ TEST_DEFS := -DDS_TEST_DISKS='"$(DISKS)"' -DDS_TEST_RENDER='"$(OUT)tools/render"
 
 $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	@mkdir -p $(BUILD)/tests
-	$(CC) $(WARN) $(CPPFLAGS) -Isrc $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
+	$(CC) $(WARN) $(CPPFLAGS) $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
 test: all $(TEST_BIN)
@@ -92,9 +98,9 @@ test: all $(TEST_BIN)
 # The library sources are compiled into the harness so they are instrumented.
 FUZZ_CC      ?= clang
 FUZZ_SECONDS ?= 30
-build-fuzz/fuzz_frame: tests/fuzz_frame.c $(LIB_SRC) include/disk_sim.h src/sim_internal.h
+build-fuzz/fuzz_frame: tests/fuzz_frame.c $(LIB_SRC) $(LIB_HDR)
 	@mkdir -p build-fuzz/found
-	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -Isrc -g -O1 -fsanitize=fuzzer,address,undefined \
+	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -g -O1 -fsanitize=fuzzer,address,undefined \
 	    -fno-sanitize-recover=all -o $@ tests/fuzz_frame.c $(LIB_SRC) -lm
 
 fuzz: build-fuzz/fuzz_frame
@@ -123,27 +129,27 @@ clean:
 # `make bench` prints the performance table of the README (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
-$(OUT)tools/bench: tools/bench.c tools/bench_events.c tools/bench.h $(LIB) include/disk_sim.h
+BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c
+$(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ tools/bench.c tools/bench_events.c \
-	    $(LIB) $(LDLIBS)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) $(LDLIBS)
 
 bench: $(OUT)tools/bench
 	./$(OUT)tools/bench
 
 # tools/pressure: Z with block-average errors for one system (public API
-# only), run by tools/pressure_vs_dt.sh and tools/eos.sh. Built by `make`.
+# only), run by tools/analysis/pressure_vs_dt.sh and tools/analysis/eos.sh. Built by `make`.
 all: $(OUT)tools/pressure
-$(OUT)tools/pressure: tools/pressure.c $(LIB) include/disk_sim.h
+$(OUT)tools/pressure: tools/analysis/pressure.c $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 # tools/gr: g(r) of one frame file (public API only), plotted by
-# tools/plot_gr.plt. Built by `make`.
+# tools/analysis/plot_gr.plt. Built by `make`.
 all: $(OUT)tools/gr
-$(OUT)tools/gr: tools/gr.c $(LIB) include/disk_sim.h
+$(OUT)tools/gr: tools/analysis/gr.c $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 clean: clean-bench
 clean-bench:
@@ -170,7 +176,7 @@ MANDIR       = $(DATADIR)/man
 PKGCONFIGDIR = $(LIBDIR)/pkgconfig
 INSTALL      ?= install
 # The gnuplot scripts, wherever they live in the tree (share/disksim/).
-PLT_FILES     = $(wildcard animate_disk.plt tools/*.plt)
+PLT_FILES     = $(wildcard animate_disk.plt tools/analysis/*.plt)
 
 .PHONY: examples install uninstall clean-packaging FORCE
 all: $(OUT)libdisksim.so disksim.pc
@@ -179,7 +185,7 @@ clean: clean-packaging
 # Position-independent copies of the library objects: the static library
 # keeps the plain ones, which are a little faster without -fPIC.
 $(BUILD)/pic/%.o: src/%.c $(LIB_HDR)
-	@mkdir -p $(BUILD)/pic
+	@mkdir -p $(dir $@)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
 
 # Internal functions shared between src/ files are also named ds_*, so the
@@ -214,7 +220,7 @@ examples: $(EXAMPLES)
 
 $(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 # disks-render is installed when the renderer has been built (`make render`).
 # The man page names the gnuplot scripts by their path under the default
@@ -271,7 +277,7 @@ RENDER_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags libpng 2
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)
 .SECONDARY: $(RENDER_OBJ) # kept between builds, not intermediate
-RENDER_DEPS := include/disk_sim.h $(wildcard tools/render*.h)
+RENDER_DEPS := include/disk_sim.h $(wildcard tools/renderer/*.h)
 
 .PHONY: render render-skipped clean-render
 ifneq ($(RENDER_BACKENDS),)
@@ -283,9 +289,9 @@ all: render-skipped
 test: render-skipped
 endif
 
-$(BUILD)/tools/%.o: tools/%.c $(RENDER_DEPS)
+$(BUILD)/tools/%.o: tools/renderer/%.c $(RENDER_DEPS)
 	@mkdir -p $(BUILD)/tools
-	$(CC) $(WARN) $(CPPFLAGS) $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
+	$(CC) $(WARN) -Iinclude $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/tools/render-%: $(RENDER_COMMON:%=$(BUILD)/tools/%.o) $(BUILD)/tools/render_%.o $(LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(shell $(PKG_CONFIG) --libs $(RENDER_PKGS_$*)) -lpthread $(LDLIBS)
@@ -312,7 +318,7 @@ render-skipped:
 $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDER_DEPS) \
                             $(BUILD)/tools/render_colormap.o $(BUILD)/tools/render_layout.o
 	@mkdir -p $(BUILD)/tests
-	$(CC) $(WARN) $(CPPFLAGS) -Itools $(RENDER_CFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) \
+	$(CC) $(WARN) $(CPPFLAGS) -Itools/renderer $(RENDER_CFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) \
 	    $(foreach b,$(RENDER_BACKENDS),-DRENDER_$(b)='"$(BUILD)/tools/render-$(b)"') \
 	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
 	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \

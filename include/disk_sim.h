@@ -159,6 +159,24 @@ ds_params ds_default_params(size_t n, double radius);
  * but with degraded physics. */
 ds_status ds_check_params(const ds_params *params, unsigned *warnings);
 
+/* Why ds_check_params refuses a request, or what it warns about. */
+typedef struct ds_params_error {
+    /* The ds_params member at fault: "n", "radius", "box", "box_y",
+     * "speed", "dt", "integrator", "boundary", "placement" or
+     * "broadphase"; "" when the fault is no one field's (params NULL). */
+    char field[16];
+    /* One sentence that begins with the field's name and names its value,
+     * e.g. "radius = 600 does not fit a box 1000 x 1000: it must be below
+     * half of its shorter side (500)"; "" for DS_OK. */
+    char message[256];
+    /* For DS_OK with warnings: the first DS_WARN_* explained; else "". */
+    char warning[256];
+} ds_params_error;
+
+/* ds_check_params, saying why: the same status and warnings, and, if err
+ * is not NULL, the field at fault and a sentence for a person to read. */
+ds_status ds_diagnose_params(const ds_params *params, unsigned *warnings, ds_params_error *err);
+
 /* Bytes ds_create would allocate for params (DS_ERR_ARG / DS_ERR_NOMEM as
  * ds_check_params, DS_ERR_ARG if bytes is NULL), so a caller can refuse a
  * request before trying it. */

@@ -7,7 +7,7 @@
  * it sorts. */
 #include "test_util.h"
 
-#include "sim_internal.h"
+#include "timestep/broad_phase.h"
 
 /* ------------------------------------------------------------ helpers */
 
@@ -16,12 +16,12 @@ typedef struct pair_list {
     size_t count, cap;
 } pair_list;
 
-static void record_pair(ds_sim *sim, size_t a, size_t b, void *ctx)
+static void record_pair(ds_disks *d, size_t a, size_t b, void *ctx)
 {
     pair_list *list = ctx;
     assert_true(a != b);
-    assert_true(a < sim->n && b < sim->n);
-    uint64_t ia = sim->id[a], ib = sim->id[b];
+    assert_true(a < d->n && b < d->n);
+    uint64_t ia = d->id[a], ib = d->id[b];
     if (list->count == list->cap) {
         list->cap = list->cap ? 2 * list->cap : 256;
         list->pairs = realloc(list->pairs, list->cap * sizeof *list->pairs);
@@ -36,15 +36,19 @@ static int compare_u64(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* The time step's broad phase (its state). */
+static ds_bp *broad_phase_of(ds_sim *sim) { return sim->state; }
+
 /* The pairs the simulation's own broad phase reports, sorted by id. */
 static pair_list pairs_found(ds_sim *sim, ds_broadphase bp)
 {
     pair_list list = {NULL, 0, 0};
-    ds_broadphase own = sim->broadphase;
-    sim->broadphase = bp; /* brute force works on any slot order */
-    ds_bp_find_pairs(sim, record_pair, &list);
-    sim->broadphase = own;
-    ds_rebuild_slots(sim);
+    ds_bp *own = broad_phase_of(sim);
+    const ds_broadphase kind = own->kind;
+    own->kind = bp; /* brute force works on any slot order */
+    ds_bp_find_pairs(own, &sim->disks, record_pair, &list);
+    own->kind = kind;
+    ds_disks_rebuild_slots(&sim->disks);
     if (list.count)
         qsort(list.pairs, list.count, sizeof *list.pairs, compare_u64);
     return list;
@@ -54,7 +58,7 @@ static pair_list pairs_found(ds_sim *sim, ds_broadphase bp)
  * returns the number of pairs so callers can check a case is not empty. */
 static size_t assert_same_pairs_as_brute_force(ds_sim *sim)
 {
-    pair_list got = pairs_found(sim, sim->broadphase);
+    pair_list got = pairs_found(sim, broad_phase_of(sim)->kind);
     pair_list want = pairs_found(sim, DS_BRUTE_FORCE);
     assert_int_equal(got.count, want.count);
     for (size_t k = 0; k < want.count; ++k)
@@ -151,17 +155,17 @@ static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
         p.box_y = BOXES[box].box_y;
         ds_sim *sim = NULL;
         assert_int_equal(ds_create(&p, &sim), DS_OK);
-        sim->scan = scan;
         /* ds_create refuses overlapping packings; these tests want any
          * configuration, so create small disks and widen them here (a
-         * periodic box takes R below a quarter of its shorter side). */
-        const double most = p.boundary == DS_PERIODIC ? 0.24 * fmin(sim->box, sim->box_y) : 1e9;
-        sim->radius = fmin(CASES[c].radius, most);
-        if (bp == DS_SAP_STRIPS) { /* strip geometry depends on R: rebuild */
-            ds_strips_destroy(sim);
-            assert_int_equal(ds_strips_create(sim), DS_OK);
-            ds_rebuild_slots(sim);
-        }
+         * periodic box takes R below a quarter of its shorter side). The
+         * broad phase's geometry depends on R: it is made again. */
+        const double most =
+            p.boundary == DS_PERIODIC ? 0.24 * fmin(ds_box(sim), ds_box_y(sim)) : 1e9;
+        sim->world.radius = fmin(CASES[c].radius, most);
+        ds_bp_destroy(broad_phase_of(sim));
+        assert_int_equal(ds_bp_create(broad_phase_of(sim), bp, &sim->world, &sim->disks), DS_OK);
+        broad_phase_of(sim)->scan = scan;
+        ds_disks_rebuild_slots(&sim->disks);
         /* The seed's box gets four configurations of each layout; each
          * periodic box, three more of them, two (one under valgrind). */
         const int reps = box == 0 ? 4 : quick_mode() ? 1 : 2;
@@ -295,9 +299,9 @@ typedef enum order { SORTED, REVERSED, TIED, RANDOM } order;
 
 /* Fills slots with x in the given order, and y, vx, vy derived from the
  * disk's id so a separated record shows up. */
-static void fill_for_sort(ds_sim *sim, order how, ds_rng *rng)
+static void fill_for_sort(ds_disks *d, order how, ds_rng *rng)
 {
-    const size_t n = sim->n;
+    const size_t n = d->n;
     for (size_t k = 0; k < n; ++k) {
         double x = 0.0;
         switch (how) {
@@ -314,31 +318,31 @@ static void fill_for_sort(ds_sim *sim, order how, ds_rng *rng)
             x = ds_rng_uniform(rng, 0.0, 1000.0);
             break;
         }
-        sim->x[k] = x;
-        sim->id[k] = (uint32_t)k;
-        sim->y[k] = 1000.0 + (double)k;
-        sim->vx[k] = 2000.0 + (double)k;
-        sim->vy[k] = 3000.0 + (double)k;
+        d->x[k] = x;
+        d->id[k] = (uint32_t)k;
+        d->y[k] = 1000.0 + (double)k;
+        d->vx[k] = 2000.0 + (double)k;
+        d->vy[k] = 3000.0 + (double)k;
     }
 }
 
-static void assert_sorted_and_consistent(const ds_sim *sim)
+static void assert_sorted_and_consistent(const ds_disks *d)
 {
-    const size_t n = sim->n;
+    const size_t n = d->n;
     unsigned char *seen = calloc(n, 1);
     assert_non_null(seen);
     for (size_t k = 0; k < n; ++k) {
         if (k > 0)
-            assert_true(sim->x[k - 1] <= sim->x[k]);
-        uint32_t i = sim->id[k];
+            assert_true(d->x[k - 1] <= d->x[k]);
+        uint32_t i = d->id[k];
         assert_true(i < n);
         assert_false(seen[i]); /* a permutation: every id exactly once */
         seen[i] = 1;
-        assert_true(sim->y[k] == 1000.0 + (double)i);
-        assert_true(sim->vx[k] == 2000.0 + (double)i);
-        assert_true(sim->vy[k] == 3000.0 + (double)i);
+        assert_true(d->y[k] == 1000.0 + (double)i);
+        assert_true(d->vx[k] == 2000.0 + (double)i);
+        assert_true(d->vy[k] == 3000.0 + (double)i);
     }
-    assert_true(isinf(sim->x[n])); /* the sentinel is left alone */
+    assert_true(isinf(d->x[n])); /* the sentinel is left alone */
     free(seen);
 }
 
@@ -350,11 +354,14 @@ static void test_insertion_sort_keeps_records_together(void **state)
     static const size_t sizes[] = {1, 2, 3, 17, 500};
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; ++s)
         for (int how = SORTED; how <= RANDOM; ++how) {
-            ds_sim *sim = test_create(sizes[s], 1.0, 1, DS_SAP);
-            fill_for_sort(sim, (order)how, &rng);
-            ds_bp_insertion_sort_x(sim);
-            assert_sorted_and_consistent(sim);
-            ds_destroy(sim);
+            for (int scan = DS_SCAN_PORTABLE; scan <= (int)ds_bp_widest_scan(); ++scan) {
+                ds_disks d;
+                assert_int_equal(ds_disks_alloc(&d, sizes[s]), DS_OK);
+                fill_for_sort(&d, (order)how, &rng);
+                ds_bp_insertion_sort(&d, 0, d.n, (ds_scan)scan);
+                assert_sorted_and_consistent(&d);
+                ds_disks_free(&d);
+            }
         }
 }
 
@@ -363,14 +370,15 @@ static void test_insertion_sort_is_stable_for_equal_x(void **state)
     (void)state;
     ds_rng rng;
     ds_rng_seed(&rng, 6);
-    ds_sim *sim = test_create(300, 1.0, 1, DS_SAP);
-    fill_for_sort(sim, TIED, &rng);
-    ds_bp_insertion_sort_x(sim);
+    ds_disks d;
+    assert_int_equal(ds_disks_alloc(&d, 300), DS_OK);
+    fill_for_sort(&d, TIED, &rng);
+    ds_bp_insertion_sort(&d, 0, d.n, ds_bp_widest_scan());
     /* Equal keys keep their earlier order: ids ascend within each tie. */
-    for (size_t k = 1; k < sim->n; ++k)
-        if (sim->x[k - 1] == sim->x[k])
-            assert_true(sim->id[k - 1] < sim->id[k]);
-    ds_destroy(sim);
+    for (size_t k = 1; k < d.n; ++k)
+        if (d.x[k - 1] == d.x[k])
+            assert_true(d.id[k - 1] < d.id[k]);
+    ds_disks_free(&d);
 }
 
 int main(void)

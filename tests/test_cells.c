@@ -4,7 +4,7 @@
  * alike, and gone once removed. */
 #include "test_util.h"
 
-#include "cells.h"
+#include "event/cells.h"
 
 /* The disks of cell, in any order, into out; returns how many. */
 static size_t cell_disks(const ds_cells *cells, uint32_t cell, uint32_t *out)

@@ -2,7 +2,7 @@
  * the two traps of the exercise's literal rules. */
 #include "test_util.h"
 
-#include "sim_internal.h"
+#include "core/core.h"
 
 static const double R = 5.0, DT = 0.001;
 
@@ -10,11 +10,11 @@ static const double R = 5.0, DT = 0.001;
  * so a test can start a disk in the wall band. */
 static void put(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
 {
-    size_t k = sim->slot[i];
-    sim->x[k] = x;
-    sim->y[k] = y;
-    sim->vx[k] = vx;
-    sim->vy[k] = vy;
+    size_t k = sim->disks.slot[i];
+    sim->disks.x[k] = x;
+    sim->disks.y[k] = y;
+    sim->disks.vx[k] = vx;
+    sim->disks.vy[k] = vy;
 }
 
 /* A simulation of n disks whose positions the test then sets: the disks

@@ -7,7 +7,7 @@
  * far fuller than a cache line, and the whole calendar rebuilt. */
 #include "test_util.h"
 
-#include "event_queue.h"
+#include "event/event_queue.h"
 
 /* Each queue keeps its disks' times in memory of its own, as the
  * integrator keeps them in its disk records: here 16 bytes apart, so that

@@ -1,12 +1,12 @@
 /* Frame files: exact formatting, round trip, and the parser's errors. */
 #include "test_util.h"
 
-#include "sim_internal.h"
+#include "core/core.h"
 
 /* Formats a one-disk frame with the disk at (x, y) and returns the x field. */
 static void format_x(ds_sim *sim, double x, char *out, size_t cap)
 {
-    sim->x[sim->slot[0]] = x;
+    sim->disks.x[sim->disks.slot[0]] = x;
     char buf[256];
     size_t len = 0;
     assert_int_equal(ds_format_frame(sim, 0, buf, sizeof buf, &len), DS_OK);

@@ -13,13 +13,13 @@
  * so the quick tests are weaker but still honest. */
 #include "test_util.h"
 
-#include "sim_internal.h"
+#include "core/core.h"
 
 static double max_speed(const ds_sim *sim)
 {
     double m2 = 0.0;
-    for (size_t k = 0; k < sim->n; ++k) {
-        double v2 = sim->vx[k] * sim->vx[k] + sim->vy[k] * sim->vy[k];
+    for (size_t k = 0; k < sim->world.n; ++k) {
+        double v2 = sim->disks.vx[k] * sim->disks.vx[k] + sim->disks.vy[k] * sim->disks.vy[k];
         if (v2 > m2)
             m2 = v2;
     }
@@ -28,7 +28,7 @@ static double max_speed(const ds_sim *sim)
 
 static double mean_square_speed(const ds_sim *sim)
 {
-    return 2.0 * ds_kinetic_energy(sim) / (double)sim->n;
+    return 2.0 * ds_kinetic_energy(sim) / (double)sim->world.n;
 }
 
 /* ------------------------------------------------------------------ */
@@ -290,17 +290,18 @@ static void test_no_disks_stick_or_leak_over_50000_steps(void **state)
         double v = max_speed(sim);
         if (v > vmax)
             vmax = v;
-        for (size_t k = 0; k < sim->n; ++k) {
-            double out = fmax(fmax(r - sim->x[k], sim->x[k] - (box - r)),
-                              fmax(r - sim->y[k], sim->y[k] - (box - r)));
+        for (size_t k = 0; k < sim->world.n; ++k) {
+            double out = fmax(fmax(r - sim->disks.x[k], sim->disks.x[k] - (box - r)),
+                              fmax(r - sim->disks.y[k], sim->disks.y[k] - (box - r)));
             worst_leak = fmax(worst_leak, out);
         }
         /* All pairs every 100 steps and at the end: O(N^2) is the point
          * (no broad phase to trust), so not every step. */
         if (s % 100 == 0 || s == steps)
-            for (size_t a = 0; a < sim->n; ++a)
-                for (size_t b = a + 1; b < sim->n; ++b) {
-                    double dx = sim->x[b] - sim->x[a], dy = sim->y[b] - sim->y[a];
+            for (size_t a = 0; a < sim->world.n; ++a)
+                for (size_t b = a + 1; b < sim->world.n; ++b) {
+                    double dx = sim->disks.x[b] - sim->disks.x[a],
+                           dy = sim->disks.y[b] - sim->disks.y[a];
                     worst_overlap = fmax(worst_overlap, 2.0 * r - sqrt(dx * dx + dy * dy));
                 }
     }

@@ -1,0 +1,97 @@
+/* The core's interface to the other parts of the library: the simulation
+ * object, what every part reads (the world), what integrators add to (the
+ * tally), and the table of operations an integrator fills.
+ *
+ * The pipeline is create (params.c, init/) -> step (an integrator, through
+ * its table) -> observe (observe/) -> write (io/). sim.c keeps the public
+ * API and dispatches through the table; the parts never call sim.c. Not
+ * installed. */
+#ifndef DS_CORE_H
+#define DS_CORE_H
+
+#include "core/disk_arrays.h"
+#include "disk_sim.h"
+
+#define DS_TWO_PI 6.28318530717958647692
+
+/* What the parts read and never write: the parameters with the defaults
+ * resolved, fixed at creation. */
+typedef struct ds_world {
+    size_t n;
+    double radius, box, box_y, speed, dt; /* box is the width, box_y the height */
+    ds_integrator integrator;
+    ds_boundary boundary;
+    ds_broadphase broadphase; /* resolved, never DS_AUTO */
+    ds_placement placement;
+    uint64_t seed;
+} ds_world;
+
+/* What the integrators add to as they run, and the observables read. */
+typedef struct ds_tally {
+    uint64_t collisions;   /* disk-disk collisions resolved */
+    uint64_t pairs_tested; /* narrow-phase distance tests */
+    uint64_t wall_count;   /* wall reflections since the last reset */
+    double wall_impulse;   /* sum of 2 |v_n| over them */
+    double virial;         /* sum over collisions of r_ij . dp_i since the reset */
+} ds_tally;
+
+typedef struct ds_integrator_ops ds_integrator_ops;
+
+struct ds_sim {
+    ds_world world;
+    /* The disks at ds_time in generation-indexed slots (disk_arrays.h).
+     * An integrator with records of its own refreshes them after each
+     * run. */
+    ds_disks disks;
+    const ds_integrator_ops *integrator;
+    void *state; /* the integrator's own, created and freed through its table */
+    uint64_t steps;
+    ds_timer collision_timer;
+    ds_tally tally;
+    uint64_t observables_since_step; /* step count at the last reset */
+};
+
+/* One integrator: a way to advance the disks by whole steps of dt. Each
+ * fills one table (timestep/time_step.c, event/event_driven.c), listed in
+ * integrators.c by its ds_integrator value. */
+struct ds_integrator_ops {
+    const char *name; /* ds_integrator_name */
+    /* Whether broad phase bp (never DS_AUTO) serves this integrator. */
+    int (*fits)(ds_broadphase bp);
+    /* The broad phase DS_AUTO means for world w. */
+    ds_broadphase (*choose)(const ds_world *w);
+    /* Refusals and warnings of its own for world w, beyond those
+     * params.c makes for every integrator: DS_OK, or a status with err
+     * filled as ds_diagnose_params describes; warnings gets DS_WARN_*
+     * bits (err->warning the first one's sentence). */
+    ds_status (*check)(const ds_world *w, unsigned *warnings, ds_params_error *err);
+    /* Bytes its state allocates for world w (broad phase resolved). */
+    size_t (*bytes)(const ds_world *w);
+    /* Builds its state (sim->state) from the placed disks, in generation
+     * order in sim->disks; it may permute the slots (ds_disks_permute). */
+    ds_status (*create)(ds_sim *sim);
+    void (*destroy)(ds_sim *sim); /* frees sim->state; safe after a failed create */
+    /* Advances steps steps (>= 1) of dt; sim->disks shows the disks at
+     * the new time afterwards, slot[] valid. */
+    void (*run)(ds_sim *sim, uint64_t steps);
+    /* Replaces the disk in slot k (already checked to be inside the box,
+     * finite), or refuses it without changing anything. */
+    ds_status (*set)(ds_sim *sim, size_t k, ds_disk d);
+};
+
+/* The table of an integrator, NULL if it is not one. */
+const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator);
+
+/* Fills err (if not NULL) with field and a printf-style message; returns
+ * status, so a check reads `return ds_refuse(err, DS_ERR_ARG, "n", ...)`. */
+ds_status ds_refuse(ds_params_error *err, ds_status status, const char *field, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
+/* The world params describe, defaults resolved (broadphase as given,
+ * maybe DS_AUTO). No checks. */
+ds_world ds_world_of(const ds_params *params);
+
+#endif

@@ -1,0 +1,91 @@
+/* The event-driven integrator's state, shared by its parts:
+ * event_driven.c (the events, the run, creation), event_predict.c (a
+ * disk's next event) and event_fetch.c (fetching memory ahead of events).
+ * Private to event/; the rest of the library sees event.h. */
+#ifndef DS_EVENT_DRIVEN_H
+#define DS_EVENT_DRIVEN_H
+
+#include "core/core.h"
+#include "event/cells.h"
+#include "event/event_fetch.h"
+#include "event/event_queue.h"
+
+/* What a disk's scheduled event is, kept in its partner field above any
+ * disk index (the integrator takes n < 2^30, ds_check_params). */
+#define EV_WALL_X (UINT32_MAX - 1)
+#define EV_WALL_Y (UINT32_MAX - 2)
+#define EV_CELL_X (UINT32_MAX - 3)
+#define EV_CELL_Y (UINT32_MAX - 4)
+#define EV_NONE (UINT32_MAX - 5) /* nothing ahead, ever: the disk is at rest */
+
+/* A centre closer than 2R (1 - this) to another is an overlap that ds_set
+ * refuses; closer than 2R by less is contact up to rounding. */
+#define CONTACT_TOLERANCE 1e-9
+
+/* Predicting (event_predict.c) and fetching (event_fetch.c) read a
+ * cell as four slots at once (C99 has no static assertion). */
+typedef char ds_ed_cells_have_four_slots[DS_CELL_SLOTS == 4 ? 1 : -1];
+
+/* One disk: everything an event reads or writes about it, in one 64-byte
+ * cache line. Events visit disks in no spatial order, so a disk's fields
+ * side by side cost one memory access where separate arrays cost five.
+ * The time of its scheduled event is here and only here: the calendar
+ * reads and writes it in place (ds_eq_create's times), and predicting a
+ * neighbour reads it beside the neighbour's state. */
+typedef struct ed_disk {
+    double x, y, vx, vy;
+    double t;                 /* the time x, y belong to */
+    double next;              /* the time of its scheduled event (the calendar's) */
+    uint16_t column, row;     /* its cell (DS_CELLS_MAX_SIDE per side) */
+    uint32_t changes;         /* velocity changes so far */
+    uint32_t partner;         /* the scheduled event: a disk or an EV_* */
+    uint32_t partner_changes; /* the partner note (event_fetch.h): its changes, its cell */
+} ed_disk;
+
+/* One record is one cache line: an event reads a disk with one memory
+ * access, and the fetching ahead asks for one line per disk. */
+typedef char ds_ed_disk_is_one_line[sizeof(ed_disk) == 64 ? 1 : -1];
+
+struct ds_events {
+    ed_disk *disk; /* n, 64-byte aligned */
+    ds_cells cells;
+    ds_event_queue *queue;
+    int fetching;       /* fetch ahead (large systems) */
+    ds_fetch fetch;     /* event_fetch.c's */
+    uint64_t tested;    /* pair tests not yet added to the tally */
+    double epoch;       /* simulated time of the integrator's t = 0 */
+    double rebase_time; /* integrator time after which the epoch moves */
+    double box_x, box_y, lo_x, hi_x, lo_y, hi_y, sigma2;
+    int periodic;
+};
+typedef struct ds_events ds_events;
+
+/* The cells around (column, row): up to 9, each with the shift of the
+ * image it stands for (a periodic box), or fewer at walls. */
+typedef struct ds_ed_stencil_cells {
+    uint32_t count;
+    uint32_t cell[9];
+    double sx[9], sy[9];
+} ds_ed_stencil_cells;
+
+void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st);
+
+/* Whether the 3 x 3 cells around (column, row) are all inside the grid,
+ * none across an edge (unsigned arithmetic: column 0 wraps to a huge
+ * column - 1). */
+static inline int ds_ed_interior_at(const ds_cells *cells, uint32_t column, uint32_t row)
+{
+    return column - 1u < cells->nx - 2u && row - 1u < cells->ny - 2u;
+}
+
+/* The same for disk d's 3 x 3 cells. */
+static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
+{
+    return ds_ed_interior_at(cells, d->column, d->row);
+}
+
+/* Finds disk i's earliest event from its state at its own time (event_predict.c):
+ * records it in the disk and returns its time. */
+double ds_ed_predict(ds_events *e, uint32_t i);
+
+#endif

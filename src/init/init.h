@@ -1,0 +1,25 @@
+/* Initial states: where the disks start and how they move. Random
+ * sequential placement (placement_random.c) or a triangular lattice
+ * (placement_lattice.c), both filling the disk arrays in generation
+ * order. Not installed. */
+#ifndef DS_INIT_H
+#define DS_INIT_H
+
+#include "core/core.h"
+
+/* Memory random placement borrows per disk while it runs: its grid's
+ * node (centre and link). */
+#define DS_PLACEMENT_BYTES_PER_DISK (3 * sizeof(double))
+
+/* Places the w->n disks of world w into d (slots in generation order) as
+ * w->placement asks; DS_ERR_PLACEMENT if they do not fit. */
+ds_status ds_place(ds_disks *d, const ds_world *w);
+
+ds_status ds_place_random(ds_disks *d, const ds_world *w);
+ds_status ds_place_lattice(ds_disks *d, const ds_world *w);
+
+/* Whether the best triangular lattice of n disks has its closest sites at
+ * least 2R apart (placement_lattice.c). */
+int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int periodic);
+
+#endif

@@ -1,0 +1,13 @@
+/* Placement: the initial state as ds_params.placement asks for it. */
+#include "init/init.h"
+
+ds_status ds_place(ds_disks *d, const ds_world *w)
+{
+    switch (w->placement) {
+    case DS_LATTICE:
+        return ds_place_lattice(d, w);
+    case DS_RANDOM:
+        break;
+    }
+    return ds_place_random(d, w);
+}

@@ -1,0 +1,99 @@
+/* Trajectories in extended XYZ, the text format ASE, OVITO, VMD and QUIP
+ * read: frames one after another, each a count line, a comment line of
+ * key=value pairs describing the cell and the columns, then one line per
+ * particle. The box is 2D; it is written as a 3D cell of height 2R with
+ * every disk at z = 0, so 3D readers see a flat layer of disks. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/io.h"
+
+/* Column names as the readers know them: ASE maps species and pos to
+ * symbols and positions; OVITO maps species, pos, radius and velo to its
+ * Particle Type, Position, Radius and Velocity. ASE keeps radius and velo
+ * as per-atom arrays of those names. "X" is ASE's dummy element. */
+#define XYZ_PROPERTIES "species:S:1:pos:R:3:radius:R:1:velo:R:3"
+#define XYZ_SPECIES "X"
+
+/* Count line, and a comment line of fixed text plus four numbers. */
+#define XYZ_HEADER_MAX (32 + 160 + 4 * DS_FIELD_MAX)
+
+size_t ds_xyz_frame_size(const ds_sim *sim)
+{
+    if (!sim)
+        return 0;
+    /* "X x y 0 R vx vy 0\n": four fixed fields, R, the rest constant. */
+    char radius[DS_RADIUS_TEXT_MAX];
+    size_t line = 4 * (DS_FIELD_MAX + 1) + ds_radius_text(sim, radius) + 16;
+    return XYZ_HEADER_MAX + sim->world.n * line;
+}
+
+/* The count and comment lines; returns their length. */
+static size_t format_header(const ds_sim *sim, char *out)
+{
+    char box[32], box_y[32], height[32], time[DS_FIELD_MAX];
+    const ds_world *w = &sim->world;
+    ds_format_shortest(box, sizeof box, w->box);
+    ds_format_shortest(box_y, sizeof box_y, w->box_y);
+    ds_format_shortest(height, sizeof height, 2.0 * w->radius);
+    time[ds_format_fixed6(time, ds_time(sim))] = '\0';
+    /* Periodic along x and y, never along the flat z of the layer. */
+    const char *pbc = w->boundary == DS_PERIODIC ? "T T F" : "F F F";
+    int len = snprintf(out, XYZ_HEADER_MAX,
+                       "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
+                       " Time=%s pbc=\"%s\"\n",
+                       w->n, box, box_y, height, time, pbc);
+    return len > 0 && len < XYZ_HEADER_MAX ? (size_t)len : 0;
+}
+
+ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *len)
+{
+    if (len)
+        *len = 0;
+    if (!sim || (!buf && cap))
+        return DS_ERR_ARG;
+    char line[XYZ_HEADER_MAX];
+    size_t used = format_header(sim, line);
+    if (used <= cap)
+        memcpy(buf, line, used);
+    char radius[DS_RADIUS_TEXT_MAX];
+    const size_t rlen = ds_radius_text(sim, radius);
+    const ds_disks *d = &sim->disks;
+    for (size_t i = 0; i < d->n; ++i) {
+        const size_t k = d->slot[i];
+        size_t l = 0;
+        memcpy(line, XYZ_SPECIES " ", 2);
+        l = 2;
+        l += ds_format_fixed6(line + l, d->x[k]);
+        line[l++] = ' ';
+        l += ds_format_fixed6(line + l, d->y[k]);
+        memcpy(line + l, " 0 ", 3);
+        l += 3;
+        memcpy(line + l, radius, rlen);
+        l += rlen;
+        line[l++] = ' ';
+        l += ds_format_fixed6(line + l, d->vx[k]);
+        line[l++] = ' ';
+        l += ds_format_fixed6(line + l, d->vy[k]);
+        memcpy(line + l, " 0\n", 3);
+        l += 3;
+        if (used + l <= cap)
+            memcpy(buf + used, line, l);
+        used += l;
+    }
+    if (len)
+        *len = used;
+    return used <= cap ? DS_OK : DS_ERR_ARG;
+}
+
+/* ds_format_xyz_frame as a ds_format_fn: velocities are always written. */
+static ds_status format_xyz(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len)
+{
+    (void)velocities;
+    return ds_format_xyz_frame(sim, buf, cap, len);
+}
+
+ds_status ds_write_xyz_frame(const ds_sim *sim, FILE *out)
+{
+    return ds_write_formatted(sim, 1, out, ds_xyz_frame_size(sim), format_xyz);
+}

@@ -1,0 +1,10 @@
+/* Observables (observe/): what a simulation measures of itself, from the
+ * disks (observables.c: energy, momentum) and from what the integrators
+ * tallied (pressures), and structure (psi6.c). Their public face is
+ * disk_sim.h; this header holds what they share. Not installed. */
+#ifndef DS_OBSERVE_H
+#define DS_OBSERVE_H
+
+#include "core/core.h"
+
+#endif

@@ -1,0 +1,68 @@
+/* The time step's broad phases behind one dispatcher (broad_phase.h):
+ * creating and freeing each one's state, its memory, and finding pairs
+ * with the seam pass added where a sweep runs in a periodic box. */
+#include "timestep/broad_phase.h"
+
+/* A sweep sees the box as the coordinates stand; in a periodic box the
+ * pairs across its edges need the seam pass. Brute force takes every
+ * pair to its nearest image itself. */
+static int needs_seam(ds_broadphase kind, int periodic)
+{
+    return periodic && kind != DS_BRUTE_FORCE;
+}
+
+ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disks *d)
+{
+    bp->kind = kind;
+    bp->scan = ds_bp_widest_scan();
+    bp->diameter = 2.0 * w->radius;
+    bp->box = w->box;
+    bp->box_y = w->box_y;
+    bp->periodic = w->boundary == DS_PERIODIC;
+    ds_status st = DS_OK;
+    switch (kind) {
+    case DS_SAP_STRIPS:
+        st = ds_strips_create(bp, w, d);
+        break;
+    case DS_SAP:
+        ds_bp_insertion_sort(d, 0, d->n, bp->scan);
+        break;
+    default:
+        break;
+    }
+    if (st == DS_OK && needs_seam(kind, bp->periodic))
+        st = ds_seam_create(bp, d->n);
+    return st;
+}
+
+void ds_bp_destroy(ds_bp *bp)
+{
+    ds_strips_destroy(bp);
+    ds_seam_destroy(bp);
+}
+
+size_t ds_bp_bytes(const ds_world *w)
+{
+    size_t bytes = 0;
+    if (w->broadphase == DS_SAP_STRIPS)
+        bytes += (w->n + 2) * DS_STRIPS_BYTES_PER_DISK;
+    if (needs_seam(w->broadphase, w->boundary == DS_PERIODIC))
+        bytes += ds_seam_bytes(w->n);
+    return bytes;
+}
+
+uint64_t ds_bp_find_pairs(ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx)
+{
+    uint64_t tested;
+    switch (bp->kind) {
+    case DS_BRUTE_FORCE:
+        return ds_brute_force_find_pairs(bp, d, on_pair, ctx);
+    case DS_SAP_STRIPS:
+        tested = ds_strips_find_pairs(bp, d, on_pair, ctx);
+        break;
+    default:
+        tested = ds_sap_find_pairs(bp, d, on_pair, ctx);
+        break;
+    }
+    return bp->seam ? tested + ds_seam_find_pairs(bp, d, on_pair, ctx) : tested;
+}

@@ -1,0 +1,50 @@
+/* The time step's free flight: every disk moves by v dt, then a disk past
+ * a wall turns, or in a periodic box wraps to the opposite edge. */
+#include <math.h>
+
+#include "core/boundary.h"
+#include "timestep/timestep.h"
+
+void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
+{
+    const size_t n = d->n;
+    const double dt = w->dt, lo = w->radius;
+    const double hi_x = w->box - w->radius, hi_y = w->box_y - w->radius;
+    double *restrict x = d->x, *restrict y = d->y;
+    double *restrict vx = d->vx, *restrict vy = d->vy;
+    uint64_t hits = 0;
+    double impulse = 0.0;
+
+    for (size_t k = 0; k < n; ++k) {
+        double px = x[k] + vx[k] * dt, py = y[k] + vy[k] * dt;
+        x[k] = px;
+        y[k] = py;
+        /* Reflect only a disk that is outside the band *and* moving further
+         * out. The seed's literal rule also re-inverts a disk still outside
+         * after its reflection, sending it back out: it sticks to the wall. */
+        if ((px < lo && vx[k] < 0.0) || (px > hi_x && vx[k] > 0.0)) {
+            impulse += 2.0 * fabs(vx[k]);
+            vx[k] = -vx[k];
+            ++hits;
+        }
+        if ((py < lo && vy[k] < 0.0) || (py > hi_y && vy[k] > 0.0)) {
+            impulse += 2.0 * fabs(vy[k]);
+            vy[k] = -vy[k];
+            ++hits;
+        }
+    }
+    t->wall_count += hits;
+    t->wall_impulse += impulse;
+}
+
+void ds_move_and_wrap(ds_disks *d, const ds_world *w)
+{
+    const size_t n = d->n;
+    const double dt = w->dt, box_x = w->box, box_y = w->box_y;
+    double *restrict x = d->x, *restrict y = d->y;
+    const double *restrict vx = d->vx, *restrict vy = d->vy;
+    for (size_t k = 0; k < n; ++k) {
+        x[k] = ds_wrap(x[k] + vx[k] * dt, box_x);
+        y[k] = ds_wrap(y[k] + vy[k] * dt, box_y);
+    }
+}

@@ -1,0 +1,19 @@
+/* The time step integrator (DS_TIME_STEP), the seed's: each step moves
+ * every disk by v dt, turns those past a wall or wraps them in a periodic
+ * box (free_flight.c), then the broad phase (broad_phase.h) finds the
+ * overlapping pairs and the approaching ones exchange their normal
+ * velocities. Not installed. */
+#ifndef DS_TIMESTEP_H
+#define DS_TIMESTEP_H
+
+#include "core/core.h"
+
+extern const ds_integrator_ops ds_time_step_ops;
+
+/* Free flight for one step of dt (free_flight.c): walls reflect a disk
+ * outside its band and moving further out, tallying the impulse; a
+ * periodic box wraps it. */
+void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t);
+void ds_move_and_wrap(ds_disks *d, const ds_world *w);
+
+#endif

@@ -1,0 +1,45 @@
+# The hard-disk equation of state: Z against area fraction from
+# tools/analysis/eos.sh (eos.dat: columns eta N integrator dt boundary Z error ...),
+# with the virial series through B10 (Clisby and McCoy 2006) and the
+# published points of Li et al. 2022 and Engel et al. 2013.
+#   gnuplot tools/analysis/plot_eos.plt            (after sh tools/analysis/eos.sh; writes eos.png)
+set terminal pngcairo size 900,640 font ",11"
+set output "eos.png"
+# Reduced virial coefficients B_k / B_2^(k-1), k = 2..10, in powers of 2 eta.
+b2 = 1.0; b3 = 0.78200443; b4 = 0.53223180; b5 = 0.33355604; b6 = 0.19884
+b7 = 0.11487; b8 = 0.06499; b9 = 0.03622; b10 = 0.01995
+series(e) = (x = 2*e, 1 + b2*x + b3*x**2 + b4*x**3 + b5*x**4 + b6*x**5 + b7*x**6 + b8*x**7 + b9*x**8 + b10*x**9)
+$ref << EOD
+0.670 9.362
+0.698 10.318
+0.700 10.306
+0.716 10.073
+0.720 10.069
+EOD
+set multiplot
+# The whole range.
+set xlabel "area fraction {/Symbol h}"
+set ylabel "Z = P A / (N kT)"
+set key bottom right
+set grid
+set xrange [0:0.78]
+set yrange [0:12]
+plot series(x) with lines lw 2 lc rgb "#888888" title "virial series B_2..B_{10}", \
+     $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728" title "Li 2022 (0.670, 0.698), Engel 2013 (0.700 to 0.720)", \
+     "eos.dat" using 1:6:7 with yerrorbars pt 7 ps 1 lc rgb "#1f77b4" title "disksim: event-driven, periodic, N = 16384", \
+     "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c" title "disksim at 0.70, N = 4096, 16384, 65536"
+# The melting region, enlarged: the loop between 0.70 and 0.72.
+set origin 0.09, 0.42
+set size 0.55, 0.52
+set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb "white" fillstyle solid noborder
+unset xlabel
+unset ylabel
+unset key
+set xrange [0.665:0.755]
+set yrange [9.2:11.8]
+set xtics 0.02
+set ytics 0.5
+plot $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728", \
+     "eos.dat" using 1:6:7 with yerrorlines pt 7 ps 1 lc rgb "#1f77b4", \
+     "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c"
+unset multiplot
