@@ -130,8 +130,8 @@ static double radius_arg(const char *s)
         die(EXIT_USAGE, "R must be a finite number, got '%s'", s);
     if (!is_decimal_text(s))
         die(EXIT_USAGE, "R must be a decimal number, got '%s'", s);
-    if (!(r > 0.0 && r < 500.0))
-        die(EXIT_USAGE, "R must be > 0 and < 500 (half the box), got '%s'", s);
+    if (!(r > 0.0))
+        die(EXIT_USAGE, "R must be a number > 0, got '%s'", s);
     return r;
 }
 
@@ -273,60 +273,54 @@ static options parse_args(int argc, char **argv)
     return o;
 }
 
-static void check_request(const options *o, const ds_params *p)
+/* The library's sentence about a field, in the command's words: a
+ * message begins with the ds_params member it is about ("radius = 600
+ * ..."), which the command calls by its option or argument. */
+static const char *in_command_words(const char *field, const char *message, char *out, size_t cap)
 {
-    if (o->integrator == DS_EVENT_DRIVEN &&
-        (o->broadphase == DS_SAP || o->broadphase == DS_SAP_STRIPS))
-        die(EXIT_USAGE,
-            "--broadphase %s sweeps the disks of a time step; --integrator event uses "
-            "cells or brute",
-            ds_broadphase_name(o->broadphase));
-    if (o->integrator == DS_TIME_STEP && o->broadphase == DS_CELLS)
-        die(EXIT_USAGE, "--broadphase cells is the event-driven integrator's: add --integrator "
-                        "event, or use sap, strips or brute");
+    static const char *const names[][2] = {
+        {"n", "N"},
+        {"radius", "R"},
+        {"box_y", "--box-y"},
+        {"broadphase", "--broadphase"},
+        {"integrator", "--integrator"},
+    };
+    const size_t flen = strlen(field);
+    for (size_t k = 0; *field && k < sizeof names / sizeof names[0]; ++k) {
+        if (strcmp(field, names[k][0]) != 0 || strncmp(message, field, flen) != 0 ||
+            strncmp(message + flen, " = ", 3) != 0)
+            continue;
+        /* An option takes its value as "--box-y 5", an argument as "R = 5". */
+        snprintf(out, cap, "%s%s%s", names[k][1], names[k][1][0] == '-' ? " " : " = ",
+                 message + flen + 3);
+        return out;
+    }
+    return message;
+}
+
+/* Refuses, before any work, what the library would refuse (in its words)
+ * or what this machine cannot hold, and passes on its warnings. */
+static void check_request(const ds_params *p)
+{
     unsigned warnings = 0;
-    ds_status st = ds_check_params(p, &warnings);
+    ds_params_error why;
+    char words[sizeof why.message + 16];
+    ds_status st = ds_diagnose_params(p, &warnings, &why);
+    if (st == DS_ERR_NOMEM)
+        die(EXIT_USAGE, "%s", in_command_words(why.field, why.message, words, sizeof words));
     size_t bytes = 0;
-    if (st == DS_ERR_NOMEM || (st != DS_ERR_ARG && ds_memory_needed(p, &bytes) != DS_OK))
-        die(EXIT_USAGE, "N = %zu disks cannot be held in memory", o->n);
+    if (st != DS_ERR_ARG && ds_memory_needed(p, &bytes) != DS_OK)
+        die(EXIT_USAGE, "N = %zu disks cannot be held in memory", p->n);
     long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
     if (pages > 0 && page > 0 && (double)bytes > 0.8 * (double)pages * (double)page)
-        die(EXIT_USAGE, "N = %zu disks need %.1f GiB, more than this machine's %.1f GiB", o->n,
+        die(EXIT_USAGE, "N = %zu disks need %.1f GiB, more than this machine's %.1f GiB", p->n,
             (double)bytes / 1073741824.0, (double)pages * (double)page / 1073741824.0);
-    /* The two refusals of ds_check_params (see DS_MANY_DISKS): many disks
-     * beyond what random placement reaches, or more than can fit at all. */
-    const double height = o->box_y > 0.0 ? o->box_y : 1000.0;
-    const double fraction =
-        (double)o->n * 3.141592653589793 * o->radius * o->radius / (1000.0 * height);
-    if (st == DS_ERR_ARG && o->boundary == DS_PERIODIC &&
-        !(o->radius < 0.25 * fmin(1000.0, height)))
-        die(EXIT_USAGE,
-            "R = %g is too large for a periodic box of %g x %g: R must be below a quarter of "
-            "each side",
-            o->radius, 1000.0, height);
-    if (st == DS_ERR_ARG && !(o->radius < 0.5 * height))
-        die(EXIT_USAGE, "R = %g does not fit a box %g high: R must be below half of it", o->radius,
-            height);
-    if (st == DS_ERR_PLACEMENT && o->placement == DS_LATTICE)
-        die(EXIT_RUN,
-            "N = %zu disks of R = %g cover %.3f of the box; no triangular lattice of them "
-            "fits without overlap (close packing is 0.9069)",
-            o->n, o->radius, fraction);
-    if (st == DS_ERR_PLACEMENT && o->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)
-        die(EXIT_RUN,
-            "N = %zu disks of R = %g cover %.3f of the box; random placement of more than %d "
-            "disks cannot exceed %.2f",
-            o->n, o->radius, fraction, DS_MANY_DISKS, DS_MAX_AREA_FRACTION);
-    if (st == DS_ERR_PLACEMENT)
-        die(EXIT_RUN, "N = %zu disks of R = %g cannot fit in the box without overlap", o->n,
-            o->radius);
     if (st != DS_OK)
-        die(EXIT_USAGE, "invalid parameters: %s", ds_status_str(st));
-    if (warnings & DS_WARN_TUNNELING)
-        fprintf(stderr,
-                "disks: warning: R = %g is small for speeds near %g and dt = %g: a fast pair "
-                "can pass through each other within one step and miss its collision\n",
-                o->radius, 100.0, 0.001);
+        die(st == DS_ERR_PLACEMENT ? EXIT_RUN : EXIT_USAGE, "%s",
+            in_command_words(why.field, why.message, words, sizeof words));
+    if (warnings)
+        fprintf(stderr, "disks: warning: %s\n",
+                in_command_words("radius", why.warning, words, sizeof words));
 }
 
 static void make_dirs(const char *path)
@@ -618,7 +612,7 @@ int main(int argc, char **argv)
     p.placement = o.placement;
     p.boundary = o.boundary;
     p.box_y = o.box_y;
-    check_request(&o, &p);
+    check_request(&p);
     char stats_dir[4096], trajectory_dir[4096];
     const char *stats_base =
         o.stats_path ? output_split("--stats", o.stats_path, stats_dir, sizeof stats_dir) : NULL;

@@ -111,11 +111,11 @@ static ds_status check_kinds(const ds_params *p, ds_params_error *err)
     if (p->broadphase != DS_AUTO && !ops->fits(p->broadphase)) {
         char fit[96] = "";
         for (int bp = 0; bp <= (int)DS_CELLS; ++bp)
-            if (bp == DS_AUTO || ops->fits((ds_broadphase)bp))
-                snprintf(fit + strlen(fit), sizeof fit - strlen(fit), "%s%s", *fit ? ", " : "",
+            if (bp != DS_AUTO && ops->fits((ds_broadphase)bp))
+                snprintf(fit + strlen(fit), sizeof fit - strlen(fit), "%s, ",
                          ds_broadphase_name((ds_broadphase)bp));
         return ds_refuse(err, DS_ERR_ARG, "broadphase",
-                         "broadphase = %s does not serve the %s integrator, which takes %s",
+                         "broadphase = %s does not serve the %s integrator, which takes %sor auto",
                          ds_broadphase_name(p->broadphase), ops->name, fit);
     }
     return DS_OK;
