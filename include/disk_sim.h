@@ -308,6 +308,22 @@ ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x
  * box is narrower than 2.8 d. */
 double ds_psi6(const ds_sim *sim);
 
+/* Pair separations for the radial distribution function g(r): counts[b]
+ * (b < bins) receives the number of pairs j < k of the n centres whose
+ * distance lies in [b dr, (b + 1) dr), nearest image with DS_PERIODIC
+ * (then bins dr must be at most half the shorter side, as a second image
+ * could be as close beyond it; centres anywhere, wrapped). With walls the
+ * box only sizes the cell grid that makes this O(n) at a fixed density.
+ * g(r) of bin b is counts[b] over the pairs an ideal gas of the same n in
+ * the same area A would have there, n (n - 1) / 2 * pi (r1^2 - r0^2) / A
+ * (tools/gr prints it). DS_ERR_ARG if a pointer is NULL (x, y with n > 0),
+ * bins is 0, dr or a side is not finite and positive, a centre is not
+ * finite, boundary is unknown, or a periodic range is too long;
+ * DS_ERR_NOMEM if the grid cannot be allocated. */
+ds_status ds_pair_histogram(size_t n, const double *x, const double *y, double box_x,
+                            double box_y, ds_boundary boundary, double dr, size_t bins,
+                            uint64_t *counts);
+
 /* ------------------------------------------------------------------ */
 /* Frames: text files of lines "x y R" or "x y R vx vy"                */
 /* ------------------------------------------------------------------ */

@@ -9,6 +9,8 @@
 #ifndef DS_BOUNDARY_H
 #define DS_BOUNDARY_H
 
+#include <math.h>
+
 /* u moved into [0, box), given -box <= u < 2 box. */
 static inline double ds_wrap(double u, double box)
 {
@@ -18,6 +20,14 @@ static inline double ds_wrap(double u, double box)
         u += box;
     /* -tiny + box rounds to box itself: the same point as 0. */
     return u < box ? u : 0.0;
+}
+
+/* u brought into [0, box) from anywhere (a caller's centres need not be
+ * wrapped): u - box floor(u / box), exact for u already inside. */
+static inline double ds_wrap_any(double u, double box)
+{
+    u -= box * floor(u / box);
+    return u >= 0.0 && u < box ? u : 0.0; /* rounding can reach box itself */
 }
 
 /* A separation r along one axis of a periodic box of side box, taken to

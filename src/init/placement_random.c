@@ -10,6 +10,8 @@
 #include <stdlib.h>
 
 #include "core/boundary.h"
+#include "core/grid.h"
+#include "core/prefetch.h"
 #include "init/init.h"
 
 /* Draws allowed for one disk before giving up. Near the jamming limit the
@@ -35,106 +37,87 @@ typedef struct grid_node {
 } grid_node;
 
 typedef struct grid {
-    size_t side, side_y; /* cells per row, rows */
-    double inv_cell, inv_cell_y;
+    ds_grid cells;
     uint32_t *head; /* first disk in each cell, UINT32_MAX when empty */
     grid_node *node;
 } grid;
 
-static size_t coord(double v, double inv_cell, size_t side)
+static size_t cell_of(const grid *g, double px, double py)
 {
-    double c = v * inv_cell;
-    if (c < 0.0)
-        return 0;
-    size_t k = (size_t)c;
-    return k < side ? k : side - 1;
+    return ds_grid_row(&g->cells, py) * g->cells.nx + ds_grid_column(&g->cells, px);
 }
-
-static size_t cell_coord(const grid *g, double v) { return coord(v, g->inv_cell, g->side); }
-static size_t cell_row(const grid *g, double v) { return coord(v, g->inv_cell_y, g->side_y); }
 
 static int overlaps_in_cell(const grid *g, size_t cell, double px, double py, double d2min)
 {
     for (uint32_t k = g->head[cell]; k != UINT32_MAX; k = g->node[k].next) {
-        double dx = g->node[k].x - px, dy = g->node[k].y - py;
+        const double dx = g->node[k].x - px, dy = g->node[k].y - py;
         if (dx * dx + dy * dy < d2min)
             return 1;
     }
     return 0;
 }
 
+/* Whether a placed disk's centre is closer than 2R to (px, py), through
+ * the nearest image in a periodic box (the cells past an edge are those
+ * at the opposite edge, holding disks one box away). Nearly every
+ * candidate of a large box is in the grid's interior, walked row by row
+ * (placement's hot loop: a quarter faster at 10^6 disks than through the
+ * list of neighbours). */
 static int overlaps_any(const ds_world *w, const grid *g, double px, double py)
 {
     const double d2min = 4.0 * w->radius * w->radius;
-    size_t cx = cell_coord(g, px), cy = cell_row(g, py);
-    size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
-    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side_y ? cy + 1 : cy;
-
-    for (size_t gy = y0; gy <= y1; ++gy)
-        for (size_t gx = x0; gx <= x1; ++gx)
-            if (overlaps_in_cell(g, gy * g->side + gx, px, py, d2min))
-                return 1;
-    return 0;
-}
-
-/* The same in a periodic box: the cells past an edge are those at the
- * opposite edge, holding disks one box away. Fewer than three cells along
- * an axis are each visited once. */
-static int overlaps_any_periodic(const ds_world *w, const grid *g, double px, double py)
-{
-    const double d2min = 4.0 * w->radius * w->radius;
-    const size_t cx = cell_coord(g, px), cy = cell_row(g, py);
-    const size_t nx = g->side < 3 ? g->side : 3, ny = g->side_y < 3 ? g->side_y : 3;
-    for (size_t oy = 0; oy < ny; ++oy) {
-        const size_t gy = g->side_y < 3 ? oy : (cy + g->side_y - 1 + oy) % g->side_y;
-        for (size_t ox = 0; ox < nx; ++ox) {
-            const size_t gx = g->side < 3 ? ox : (cx + g->side - 1 + ox) % g->side;
-            for (uint32_t k = g->head[gy * g->side + gx]; k != UINT32_MAX; k = g->node[k].next) {
-                const double dx = ds_nearest(g->node[k].x - px, w->box);
-                const double dy = ds_nearest(g->node[k].y - py, w->box_y);
-                if (dx * dx + dy * dy < d2min)
+    const size_t cx = ds_grid_column(&g->cells, px), cy = ds_grid_row(&g->cells, py);
+    if (ds_grid_interior(&g->cells, cx, cy)) {
+        const size_t nx = g->cells.nx, first = (cy - 1) * nx + cx - 1;
+        for (size_t r = 0; r < 3; ++r)
+            for (size_t c = 0; c < 3; ++c)
+                if (overlaps_in_cell(g, first + r * nx + c, px, py, d2min))
                     return 1;
-            }
-        }
+        return 0;
     }
+    const int periodic = w->boundary == DS_PERIODIC;
+    size_t around[9];
+    const int count = ds_grid_neighbours(&g->cells, cx, cy, around);
+    for (int c = 0; c < count; ++c)
+        for (uint32_t k = g->head[around[c]]; k != UINT32_MAX; k = g->node[k].next) {
+            double dx = g->node[k].x - px, dy = g->node[k].y - py;
+            if (periodic) {
+                dx = ds_nearest(dx, w->box);
+                dy = ds_nearest(dy, w->box_y);
+            }
+            if (dx * dx + dy * dy < d2min)
+                return 1;
+        }
     return 0;
 }
 
-/* Asks for the 3 rows of grid heads around (px, py) to be fetched early. */
+/* Asks for the 3 rows of grid heads around (px, py) to be fetched early
+ * (the heads of a row are side by side: one line, or two); prefetching
+ * is for large grids, whose edges do not matter. */
 static void prefetch_cells(const grid *g, double px, double py)
 {
-#if defined(__GNUC__)
-    size_t cx = cell_coord(g, px), cy = cell_row(g, py);
-    size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
-    size_t y1 = cy + 1 < g->side_y ? cy + 1 : cy;
-    for (size_t gy = y0; gy <= y1; ++gy)
-        __builtin_prefetch(&g->head[gy * g->side + x0]);
-#else
-    (void)g;
-    (void)px;
-    (void)py;
-#endif
+    const size_t cx = ds_grid_column(&g->cells, px), cy = ds_grid_row(&g->cells, py);
+    if (!ds_grid_interior(&g->cells, cx, cy))
+        return;
+    const size_t nx = g->cells.nx, first = (cy - 1) * nx + cx - 1;
+    for (size_t r = 0; r < 3; ++r)
+        ds_prefetch(&g->head[first + r * nx]);
 }
 
 /* Asks for the first disk of each of the 9 cells around (px, py): their
  * heads must already be in cache (prefetched some candidates earlier). */
 static void prefetch_nodes(const grid *g, double px, double py)
 {
-#if defined(__GNUC__)
-    size_t cx = cell_coord(g, px), cy = cell_row(g, py);
-    size_t x0 = cx ? cx - 1 : 0, y0 = cy ? cy - 1 : 0;
-    size_t x1 = cx + 1 < g->side ? cx + 1 : cx, y1 = cy + 1 < g->side_y ? cy + 1 : cy;
-    for (size_t gy = y0; gy <= y1; ++gy)
-        for (size_t gx = x0; gx <= x1; ++gx) {
-            uint32_t k = g->head[gy * g->side + gx];
+    const size_t cx = ds_grid_column(&g->cells, px), cy = ds_grid_row(&g->cells, py);
+    if (!ds_grid_interior(&g->cells, cx, cy))
+        return;
+    const size_t nx = g->cells.nx, first = (cy - 1) * nx + cx - 1;
+    for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) {
+            const uint32_t k = g->head[first + r * nx + c];
             if (k != UINT32_MAX)
-                __builtin_prefetch(&g->node[k]);
+                ds_prefetch(&g->node[k]);
         }
-#else
-    (void)g;
-    (void)px;
-    (void)py;
-#endif
 }
 
 ds_status ds_place_random(ds_disks *d, const ds_world *w)
@@ -142,26 +125,18 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
     const double r = w->radius, box = w->box, box_y = w->box_y;
     const int periodic = w->boundary == DS_PERIODIC;
     grid g;
-    /* Cells at least 2R wide, but no more cells than ~4 per disk so tiny
-     * radii with few disks do not allocate a huge empty grid (in a square
-     * box, side^2 <= 4 n; a rectangle shares those cells by its aspect). */
-    double side = floor(box / (2.0 * r)), side_y = floor(box_y / (2.0 * r));
-    double max_side = floor(sqrt(4.0 * (double)w->n * box / box_y)) + 1.0;
-    double max_side_y = floor(sqrt(4.0 * (double)w->n * box_y / box)) + 1.0;
-    side = fmax(fmin(side, max_side), 1.0);
-    side_y = fmax(fmin(side_y, max_side_y), 1.0);
-    g.side = (size_t)side;
-    g.side_y = (size_t)side_y;
-    g.inv_cell = side / box;
-    g.inv_cell_y = side_y / box_y;
-    g.head = malloc(g.side * g.side_y * sizeof *g.head);
+    /* Cells at least 2R wide, but no more than ~4 per disk so tiny radii
+     * with few disks do not allocate a huge empty grid. */
+    ds_grid_init(&g.cells, box, box_y, 2.0 * r, 4 * w->n + 16, periodic);
+    const size_t cells = g.cells.nx * g.cells.ny;
+    g.head = malloc(cells * sizeof *g.head);
     g.node = malloc(w->n * sizeof *g.node);
     if (!g.head || !g.node) {
         free(g.head);
         free(g.node);
         return DS_ERR_NOMEM;
     }
-    for (size_t c = 0; c < g.side * g.side_y; ++c)
+    for (size_t c = 0; c < cells; ++c)
         g.head[c] = UINT32_MAX;
 
     /* Centres and directions come from two generators, so the sequence of
@@ -174,7 +149,7 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
 
     /* Below ~1 MB of heads the grid stays in cache and prefetching only
      * costs instructions. */
-    const int big_grid = g.side * g.side_y >= ((size_t)1 << 18);
+    const int big_grid = cells >= ((size_t)1 << 18);
     /* ds_rng_uniform draws in [lo, hi): in a periodic box, all of it. */
     const double lo = periodic ? 0.0 : r, hi = periodic ? box : box - r;
     const double lo_y = periodic ? 0.0 : r, hi_y = periodic ? box_y : box_y - r;
@@ -209,11 +184,11 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
                 prefetch_nodes(&g, ahead_x[soon], ahead_y[soon]);
             }
             next = (next + 1) & (AHEAD - 1);
-        } while (periodic ? overlaps_any_periodic(w, &g, px, py) : overlaps_any(w, &g, px, py));
+        } while (overlaps_any(w, &g, px, py));
 
         d->x[i] = px;
         d->y[i] = py;
-        size_t c = cell_row(&g, py) * g.side + cell_coord(&g, px);
+        const size_t c = cell_of(&g, px, py);
         g.node[i].x = px;
         g.node[i].y = py;
         g.node[i].next = g.head[c];

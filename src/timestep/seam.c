@@ -21,6 +21,7 @@
 #include <stdlib.h>
 
 #include "core/boundary.h"
+#include "core/grid.h"
 #include "timestep/broad_phase.h"
 
 struct ds_seam {
@@ -28,13 +29,6 @@ struct ds_seam {
     uint32_t *sorted;     /* high, bucketed by cell */
     uint32_t *start;      /* cell c holds sorted[start[c] .. start[c + 1]) */
 };
-
-/* Cells at least 2R (diameter) long along a side, no more than disks. */
-static size_t cells_along(double side, double diameter, size_t n)
-{
-    const double c = floor(side / diameter);
-    return c < 1.0 ? 1 : c > (double)n ? n : (size_t)c;
-}
 
 ds_status ds_seam_create(ds_bp *bp, size_t n)
 {
@@ -68,12 +62,6 @@ void ds_seam_destroy(ds_bp *bp)
 
 size_t ds_seam_bytes(size_t n) { return sizeof(ds_seam) + (4 * n + 1) * sizeof(uint32_t); }
 
-static size_t cell_of(double u, double per_unit, size_t cells)
-{
-    const double c = floor(u * per_unit);
-    return c <= 0.0 ? 0 : c >= (double)(cells - 1) ? cells - 1 : (size_t)c;
-}
-
 /* One seam. u is the coordinate across it (side: its period), w the one
  * along it (period w_side): pairs of a disk within 2R of u = 0 and one
  * within 2R of u = side, nearer through the seam, with the high disks
@@ -95,17 +83,20 @@ static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const do
     if (!lows || !highs)
         return 0;
 
-    const size_t cells = cells_along(w_side, diameter, n);
-    const double per_unit = (double)cells / w_side;
+    /* Cells at least 2R long along the seam, no more than disks; w is in
+     * [0, w_side), so the column needs no wrap. */
+    ds_grid g;
+    ds_grid_init_line(&g, w_side, diameter, n, wrap_along);
+    const size_t cells = g.nx;
     for (size_t c = 0; c <= cells; ++c)
         s->start[c] = 0;
     for (size_t h = 0; h < highs; ++h)
-        ++s->start[cell_of(w[s->high[h]], per_unit, cells) + 1];
+        ++s->start[ds_grid_column(&g, w[s->high[h]]) + 1];
     for (size_t c = 1; c <= cells; ++c)
         s->start[c] += s->start[c - 1];
     for (size_t h = 0; h < highs; ++h) {
         const uint32_t k = s->high[h];
-        s->sorted[s->start[cell_of(w[k], per_unit, cells)]++] = k;
+        s->sorted[s->start[ds_grid_column(&g, w[k])]++] = k;
     }
     for (size_t c = cells; c > 0; --c) /* undo the increments of the fill */
         s->start[c] = s->start[c - 1];
@@ -114,18 +105,11 @@ static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const do
     uint64_t tested = 0;
     for (size_t l = 0; l < lows; ++l) {
         const uint32_t a = s->low[l];
-        const size_t home = cell_of(w[a], per_unit, cells);
-        /* The three cells around home, each once (fewer than three cells
-         * wrap onto each other). */
-        size_t first, last;
-        if (cells < 3 && wrap_along) {
-            first = 0;
-            last = cells - 1;
-        } else {
-            first = home > 0 ? home - 1 : (wrap_along ? cells - 1 : 0);
-            last = home + 1 < cells ? home + 1 : (wrap_along ? 0 : cells - 1);
-        }
-        for (size_t c = first;; c = c + 1 == cells ? 0 : c + 1) {
+        /* The cells around a's, each once (wrapping along the x seam). */
+        size_t around[9];
+        const int count = ds_grid_neighbours(&g, ds_grid_column(&g, w[a]), 0, around);
+        for (int i = 0; i < count; ++i) {
+            const size_t c = around[i];
             for (uint32_t m = s->start[c]; m < s->start[c + 1]; ++m) {
                 const uint32_t b = s->sorted[m];
                 const double du = u[b] - u[a], dw = w[b] - w[a];
@@ -136,8 +120,6 @@ static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const do
                 if (ru * ru + rw * rw < d2max)
                     on_pair(d, a, b, ctx);
             }
-            if (c == last)
-                break;
         }
     }
     return tested;

@@ -6,7 +6,7 @@
  * Prints "r g(r)" lines, r the middle of each bin: the pairs whose centres
  * are r to r + dr apart, over the pairs an ideal gas of the same N in the
  * same area would have there, N (N - 1) / 2 * pi ((r + dr)^2 - r^2) / A.
- * Pairs are found in a cell grid of cells at least rmax wide: O(N) at a
+ * The pairs are counted by the library (ds_pair_histogram): O(N) at a
  * fixed density. Plot with tools/analysis/plot_gr.plt. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -61,110 +61,6 @@ static double positive(const char *opt, const char *s)
     if (end == s || *end || !isfinite(v) || !(v > 0.0))
         die(EXIT_USAGE, "%s needs a positive number, got '%s'", opt, s);
     return v;
-}
-
-typedef struct grid {
-    size_t nx, ny;
-    size_t *start; /* nx ny + 1: disks of cell c are order[start[c] .. start[c + 1]) */
-    size_t *order;
-    size_t *cell;
-} grid;
-
-static size_t cells_along(double len, double side, size_t cap)
-{
-    const double fit = floor(len / side);
-    return !(fit >= 1.0) ? 1 : fit >= (double)cap ? cap : (size_t)fit;
-}
-
-static size_t index_of(double v, double len, size_t cells)
-{
-    const double c = floor(v / len * (double)cells);
-    return !(c >= 0.0) ? 0 : c >= (double)cells ? cells - 1 : (size_t)c;
-}
-
-/* Cells at least `side` wide, at most about four per disk (a huge box with
- * a small rmax would want far more, mostly empty). 0, or -1 out of memory. */
-static int grid_build(grid *g, const ds_frame *f, double bx, double by, double side)
-{
-    const size_t n = f->count, cap = 4 * n + 64;
-    g->nx = cells_along(bx, side, cap);
-    g->ny = cells_along(by, side, cap);
-    while ((double)g->nx * (double)g->ny > (double)cap) {
-        if (g->nx >= g->ny)
-            g->nx = (g->nx + 1) / 2;
-        else
-            g->ny = (g->ny + 1) / 2;
-    }
-    const size_t cells = g->nx * g->ny;
-    g->start = calloc(cells + 1, sizeof *g->start);
-    g->order = malloc(n * sizeof *g->order);
-    g->cell = malloc(n * sizeof *g->cell);
-    if (!g->start || !g->order || !g->cell)
-        return -1;
-    for (size_t j = 0; j < n; ++j) {
-        g->cell[j] =
-            index_of(f->disks[j].y, by, g->ny) * g->nx + index_of(f->disks[j].x, bx, g->nx);
-        ++g->start[g->cell[j] + 1];
-    }
-    for (size_t c = 0; c < cells; ++c)
-        g->start[c + 1] += g->start[c];
-    for (size_t j = 0; j < n; ++j)
-        g->order[g->start[g->cell[j]]++] = j;
-    for (size_t c = cells; c > 0; --c)
-        g->start[c] = g->start[c - 1];
-    g->start[0] = 0;
-    return 0;
-}
-
-/* Counts each pair closer than nbins * dr once into hist. */
-static void count_pairs(const ds_frame *f, const grid *g, double bx, double by, int periodic,
-                        double dr, size_t nbins, double *hist)
-{
-    /* With one or two cells along a periodic side the cells left and right
-     * are one cell: scan each neighbour cell once. */
-    int ox[3] = {-1, 0, 1}, oy[3] = {-1, 0, 1}, kx = 3, ky = 3;
-    if (periodic && g->nx < 3) {
-        ox[0] = 0, ox[1] = 1, kx = (int)g->nx;
-    }
-    if (periodic && g->ny < 3) {
-        oy[0] = 0, oy[1] = 1, ky = (int)g->ny;
-    }
-    const double rmax = (double)nbins * dr, rmax2 = rmax * rmax;
-    for (size_t j = 0; j < f->count; ++j) {
-        const long cx = (long)(g->cell[j] % g->nx), cy = (long)(g->cell[j] / g->nx);
-        for (int b = 0; b < ky; ++b) {
-            long sy = cy + oy[b];
-            if (sy < 0 || sy >= (long)g->ny) {
-                if (!periodic)
-                    continue;
-                sy = sy < 0 ? sy + (long)g->ny : sy - (long)g->ny;
-            }
-            for (int a = 0; a < kx; ++a) {
-                long sx = cx + ox[a];
-                if (sx < 0 || sx >= (long)g->nx) {
-                    if (!periodic)
-                        continue;
-                    sx = sx < 0 ? sx + (long)g->nx : sx - (long)g->nx;
-                }
-                const size_t c = (size_t)sy * g->nx + (size_t)sx;
-                for (size_t s = g->start[c]; s < g->start[c + 1]; ++s) {
-                    const size_t k = g->order[s];
-                    if (k <= j)
-                        continue;
-                    double dx = f->disks[k].x - f->disks[j].x, dy = f->disks[k].y - f->disks[j].y;
-                    if (periodic) {
-                        dx -= bx * round(dx / bx);
-                        dy -= by * round(dy / by);
-                    }
-                    const double r2 = dx * dx + dy * dy;
-                    if (r2 < rmax2) {
-                        const size_t bin = (size_t)(sqrt(r2) / dr);
-                        hist[bin < nbins ? bin : nbins - 1] += 1.0;
-                    }
-                }
-            }
-        }
-    }
 }
 
 int main(int argc, char **argv)
@@ -243,11 +139,20 @@ int main(int argc, char **argv)
     if (nbins == 0)
         die(EXIT_USAGE, "--dr (%g) must be at most --rmax (%g)", dr, rmax);
 
-    grid g = {0, 0, NULL, NULL, NULL};
-    double *hist = calloc(nbins ? nbins : 1, sizeof *hist);
-    if (!hist || grid_build(&g, &f, box, box_y, (double)nbins * dr) != 0)
+    double *xy = malloc(2 * f.count * sizeof *xy);
+    uint64_t *hist = calloc(nbins, sizeof *hist);
+    if (!xy || !hist)
         die(EXIT_RUN, "out of memory for the disks of %s", path);
-    count_pairs(&f, &g, box, box_y, periodic, dr, nbins, hist);
+    for (size_t j = 0; j < f.count; ++j) {
+        xy[j] = f.disks[j].x;
+        xy[f.count + j] = f.disks[j].y;
+    }
+    st = ds_pair_histogram(f.count, xy, xy + f.count, box, box_y, periodic ? DS_PERIODIC : DS_WALLS,
+                           dr, nbins, hist);
+    if (st != DS_OK)
+        die(st == DS_ERR_NOMEM ? EXIT_RUN : EXIT_USAGE, "cannot count the pairs of %s: %s", path,
+            ds_status_str(st));
+    free(xy);
 
     const double n = (double)f.count;
     printf("# g(r) of %s: N = %zu, d = %g, box %g x %g, %s, dr = %g\n", path, f.count, 2.0 * radius,
@@ -255,12 +160,9 @@ int main(int argc, char **argv)
     for (size_t b = 0; b < nbins; ++b) {
         const double r0 = (double)b * dr, r1 = r0 + dr;
         const double ideal = 0.5 * n * (n - 1.0) * PI * (r1 * r1 - r0 * r0) / area;
-        printf("%.9g %.9g\n", r0 + 0.5 * dr, hist[b] / ideal);
+        printf("%.9g %.9g\n", r0 + 0.5 * dr, (double)hist[b] / ideal);
     }
     free(hist);
-    free(g.start);
-    free(g.order);
-    free(g.cell);
     ds_frame_free(&f);
     if (fflush(stdout) != 0 || ferror(stdout)) {
         fputs("gr: cannot write the output\n", stderr);
