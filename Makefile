@@ -32,10 +32,11 @@ LIB   := $(OUT)libdisksim.a
 DISKS := $(OUT)disks
 
 # The library is every file of the folders of src/ (docs/architecture.md):
-# core/ (the simulation, parameters, disk arrays), timestep/ and event/
-# (the integrators), init/ (placement), observe/ (observables), io/ (text
-# formats). The command is cli/disks.c.
-LIB_DIRS := core timestep event init observe io
+# core/ (what every part shares: the disk arrays, the grid, the box),
+# timestep/ and event/ (the integrators), init/ (placement), observe/
+# (observables), io/ (text formats), and sim/ (the public API of the
+# simulation, over the parts). The command is cli/disks.c.
+LIB_DIRS := core timestep event init observe io sim
 LIB_SRC := $(sort $(foreach d,$(LIB_DIRS),$(wildcard src/$(d)/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
@@ -129,7 +130,7 @@ clean:
 # `make bench` prints the performance table of the README (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
-BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c
+BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_stats.c
 $(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) $(LDLIBS)

@@ -1,11 +1,11 @@
-/* The core's interface to the other parts of the library: the simulation
- * object, what every part reads (the world), what integrators add to (the
- * tally), and the table of operations an integrator fills.
+/* What every part of the library shares: the simulation object, what
+ * every part reads (the world), what integrators add to (the tally), and
+ * the table of operations an integrator fills.
  *
- * The pipeline is create (params.c, init/) -> step (an integrator, through
- * its table) -> observe (observe/) -> write (io/). sim.c keeps the public
- * API and dispatches through the table; the parts never call sim.c. Not
- * installed. */
+ * The pipeline is create (sim/params.c, init/) -> step (an integrator,
+ * through its table: timestep/, event/) -> observe (observe/) -> write
+ * (io/). sim/sim.c keeps the public API and dispatches through the table;
+ * the parts never call sim/. Not installed. */
 #ifndef DS_CORE_H
 #define DS_CORE_H
 
@@ -53,7 +53,7 @@ struct ds_sim {
 
 /* One integrator: a way to advance the disks by whole steps of dt. Each
  * fills one table (timestep/time_step.c, event/event_driven.c), listed in
- * integrators.c by its ds_integrator value. */
+ * sim/integrators.c by its ds_integrator value. */
 struct ds_integrator_ops {
     const char *name; /* ds_integrator_name */
     /* Whether broad phase bp (never DS_AUTO) serves this integrator. */
@@ -79,9 +79,6 @@ struct ds_integrator_ops {
     ds_status (*set)(ds_sim *sim, size_t k, ds_disk d);
 };
 
-/* The table of an integrator, NULL if it is not one. */
-const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator);
-
 /* Fills err (if not NULL) with field and a printf-style message; returns
  * status, so a check reads `return ds_refuse(err, DS_ERR_ARG, "n", ...)`. */
 ds_status ds_refuse(ds_params_error *err, ds_status status, const char *field, const char *fmt, ...)
@@ -89,9 +86,5 @@ ds_status ds_refuse(ds_params_error *err, ds_status status, const char *field, c
     __attribute__((format(printf, 4, 5)))
 #endif
     ;
-
-/* The world params describe, defaults resolved (broadphase as given,
- * maybe DS_AUTO). No checks. */
-ds_world ds_world_of(const ds_params *params);
 
 #endif

@@ -40,7 +40,7 @@
 #include "core/collide.h"
 #include "core/large_alloc.h"
 #include "event/event.h"
-#include "event/event_driven.h"
+#include "event/event_state.h"
 
 /* Predicts disk i and files its event; the calendar writes the time into
  * the disk's record (its `next`), where it keeps it. */

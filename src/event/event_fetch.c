@@ -19,7 +19,7 @@
  * before they arrive waits, so the stages are kept at least one event
  * apart. */
 #include "core/prefetch.h"
-#include "event/event_driven.h"
+#include "event/event_state.h"
 
 /* The helpers below only read memory and prefetch, so gcc marks them pure
  * and, their results being unused, deletes the calls (and the prefetches
@@ -49,7 +49,7 @@ FETCHER region cells_at(const ds_cells *cells, uint32_t column, uint32_t row, in
  * being inside the grid: the 3 x 3 around each, together one block of 3
  * or 4 by 3 or 4 cells, as the partner's cell is the disk's or next to it
  * (the prediction kept it in the disk's partner_changes, see
- * event_driven.h). Fetched as one block, the cells the two share are
+ * event_fetch.h). Fetched as one block, the cells the two share are
  * fetched once, and the partner's cells need not wait for its record:
  * about 13 cells in one stage rather than 18 in two (cells 2R wide: a
  * partner at 2R in a random direction is in another column with chance

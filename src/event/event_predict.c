@@ -4,7 +4,7 @@
  * collision predicts both disks again, each crossing and wall turn one. */
 #include <math.h>
 
-#include "event/event_driven.h"
+#include "event/event_state.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

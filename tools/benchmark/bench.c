@@ -15,7 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include "bench.h"
@@ -71,18 +70,6 @@ static int run_case(size_t n, double radius, ds_broadphase bp, unsigned long ste
     return 1;
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-double median(double *v, int count)
-{
-    qsort(v, (size_t)count, sizeof *v, compare_doubles);
-    return v[count / 2];
-}
-
 typedef struct bench_case {
     size_t n;
     double radius;
@@ -108,14 +95,6 @@ static int run_rounds(const bench_case *cases, int count, double ns[][ROUNDS], r
             median(t, ROUNDS) * 1e-9 * (double)rows[c].n * (double)rows[c].steps;
     }
     return 1;
-}
-
-double median_ratio(const double *a, const double *b)
-{
-    double r[ROUNDS];
-    for (int k = 0; k < ROUNDS; ++k)
-        r[k] = a[k] / b[k];
-    return median(r, ROUNDS);
 }
 
 /* Seconds of one ds_create, the median of `repeats` (odd, at most 64):
@@ -242,12 +221,6 @@ static void print_machine(void)
         fclose(f);
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     printf("online cpus: %ld; disksim %s\n", cores, ds_version());
-}
-
-long peak_rss_kb(void)
-{
-    struct rusage u;
-    return getrusage(RUSAGE_SELF, &u) == 0 ? u.ru_maxrss : -1; /* KB on Linux */
 }
 
 /* The broad phase DS_AUTO resolves to for (n, r). */

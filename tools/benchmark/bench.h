@@ -1,4 +1,5 @@
-/* What the sections of tools/bench share (bench.c, bench_events.c). */
+/* What the sections of tools/bench share (bench_stats.c), and the
+ * event-driven section (bench_events.c) that bench.c runs. */
 #ifndef DS_BENCH_H
 #define DS_BENCH_H
 

@@ -2,8 +2,8 @@
  * event_driven.c (the events, the run, creation), event_predict.c (a
  * disk's next event) and event_fetch.c (fetching memory ahead of events).
  * Private to event/; the rest of the library sees event.h. */
-#ifndef DS_EVENT_DRIVEN_H
-#define DS_EVENT_DRIVEN_H
+#ifndef DS_EVENT_STATE_H
+#define DS_EVENT_STATE_H
 
 #include "core/core.h"
 #include "event/cells.h"

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/core.h"
+#include "sim/sim.h"
 #include "init/init.h"
 
 ds_status ds_create(const ds_params *params, ds_sim **out)
@@ -69,34 +69,6 @@ ds_broadphase ds_broadphase_used(const ds_sim *sim) { return sim ? sim->world.br
 ds_integrator ds_integrator_used(const ds_sim *sim)
 {
     return sim ? sim->world.integrator : DS_TIME_STEP;
-}
-
-const char *ds_boundary_name(ds_boundary boundary)
-{
-    switch (boundary) {
-    case DS_WALLS:
-        return "walls";
-    case DS_PERIODIC:
-        return "periodic";
-    }
-    return "unknown";
-}
-
-const char *ds_broadphase_name(ds_broadphase bp)
-{
-    switch (bp) {
-    case DS_SAP:
-        return "sap";
-    case DS_BRUTE_FORCE:
-        return "brute";
-    case DS_SAP_STRIPS:
-        return "strips";
-    case DS_AUTO:
-        return "auto";
-    case DS_CELLS:
-        return "cells";
-    }
-    return "unknown";
 }
 
 ds_disk ds_get(const ds_sim *sim, size_t i)

@@ -1,6 +1,6 @@
 /* The integrators, by their ds_integrator value: a new integrator is its
  * folder (or file) with its table, and one line here. */
-#include "core/core.h"
+#include "sim/sim.h"
 #include "event/event.h"
 #include "timestep/timestep.h"
 

@@ -3,11 +3,10 @@
  * own check, through its table) and explained in one sentence, so the
  * command prints the library's reason instead of deriving it again. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "core/core.h"
+#include "sim/sim.h"
 #include "init/init.h"
 
 ds_params ds_default_params(size_t n, double radius)
@@ -37,18 +36,6 @@ ds_world ds_world_of(const ds_params *p)
     w.placement = p->placement;
     w.seed = p->seed;
     return w;
-}
-
-ds_status ds_refuse(ds_params_error *err, ds_status status, const char *field, const char *fmt, ...)
-{
-    if (err) {
-        snprintf(err->field, sizeof err->field, "%s", field);
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err->message, sizeof err->message, fmt, ap);
-        va_end(ap);
-    }
-    return status;
 }
 
 /* Oler's inequality (1961; Folkman and Graham 1969 for any convex set):
