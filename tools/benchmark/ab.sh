@@ -1,13 +1,14 @@
 #!/bin/sh
 # Compares two builds of the event-driven integrator in one process:
 #
-#   tools/benchmark/ab.sh REV_A REV_B [N [ROUNDS]]
+#   tools/benchmark/ab.sh REV_A REV_B [N [ROUNDS [event|step|seed]]]
 #
 # builds libdisksim.a at two git revisions (or "." for the working tree as
 # it is), gives every global symbol of each an A_ or B_ prefix (objcopy),
 # links both into one program (tools/benchmark/ab_events.c) and times N disks
-# (default 10^6) at area fraction 0.5 in ROUNDS (default 21) alternating
-# rounds of ~10^6 collisions. Two separate runs a minute apart differ here
+# (default 10^6) in ROUNDS (default 21) alternating rounds: event-driven at
+# area fraction 0.5, ~10^6 collisions a round (event, the default); the
+# time step at area fraction 0.1 (step); or the seed case (seed, N unused). Two separate runs a minute apart differ here
 # by 10% and more; within one process the rounds see the same machine.
 # The same build against itself gave 1.01 and 1.04 (quartiles 0.96 to 1.08)
 # at 10^6 over 21 rounds: nothing under ~5% stands out from the noise.
@@ -38,4 +39,4 @@ for side in A B; do
 done
 cc -std=c99 -O2 -DAB_MAIN "$top/tools/benchmark/ab_events.c" "$work/A.o" "$work/B.o" \
     "$work/A_renamed.a" "$work/B_renamed.a" -lm -o "$work/ab"
-"$work/ab" "${3:-1000000}" "${4:-21}"
+"$work/ab" "${3:-1000000}" "${4:-21}" "${5:-event}"

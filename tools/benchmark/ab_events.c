@@ -2,15 +2,21 @@
  * compiled once per build with AB_SIDE set to its symbol prefix (A_ or
  * B_), the prefix tools/benchmark/ab.sh gives every global symbol of that build's
  * libdisksim.a, and once with AB_MAIN for the program that alternates
- * them. Each side builds the same system (area fraction 0.5, walls,
- * event-driven, relaxed ~1 collision per disk), then the rounds time ~10^6
- * collisions on each side in turn, which side goes first alternating, so
- * that both see the same state of a shared, noisy machine. Prints each
- * side's median ns per collision and the median of the per-round ratios
- * B / A with its quartiles. */
+ * them. Each side builds the same system, then the rounds time each side
+ * in turn, which side goes first alternating, so that both see the same
+ * state of a shared, noisy machine:
+ * - event (the default): area fraction 0.5, walls, event-driven, relaxed
+ *   ~1 collision per disk, rounds of ~10^6 collisions, ns per collision;
+ * - step: the time step at area fraction 0.1 (the broad phase DS_AUTO
+ *   picks: SAP up to ~4000 disks, strips beyond), rounds of ~2 x 10^7
+ *   disk-steps, ns of collision processing per disk-step;
+ * - seed: the seed case, 400 disks of R = 5, rounds of 5000 steps.
+ * Prints each side's median and the median of the per-round ratios B / A
+ * with its quartiles. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #if defined(AB_SIDE)
 #include "disk_sim.h"
@@ -27,27 +33,41 @@ uint64_t AB(ds_collision_count)(const ds_sim *sim);
 double AB(ds_collision_seconds)(const ds_sim *sim);
 void AB(ds_destroy)(ds_sim *sim);
 
-void *AB(ab_make)(size_t n);
-double AB(ab_round)(void *sim, size_t n);
+void *AB(ab_make)(size_t n, int kind);
+double AB(ab_round)(void *sim, size_t n, int kind);
 void AB(ab_done)(void *sim);
 
 /* Collisions per step at area fraction 0.5 (as tools/benchmark/bench_events.c). */
 static double per_step(size_t n) { return 3.1e-4 * pow((double)n, 1.5); }
 
-void *AB(ab_make)(size_t n)
+static double radius_at(size_t n, double fraction)
 {
-    ds_params p = AB(ds_default_params)(n, sqrt(0.5 * 1e6 / ((double)n * 3.14159265358979)));
-    p.integrator = DS_EVENT_DRIVEN;
+    return sqrt(fraction * 1e6 / ((double)n * 3.14159265358979));
+}
+
+void *AB(ab_make)(size_t n, int kind)
+{
+    ds_params p = AB(ds_default_params)(n, radius_at(n, kind == 0 ? 0.5 : 0.1));
+    if (kind == 2)
+        p = AB(ds_default_params)(400, 5.0);
+    p.integrator = kind == 0 ? DS_EVENT_DRIVEN : DS_TIME_STEP;
     ds_sim *sim = NULL;
     if (AB(ds_create)(&p, &sim) != DS_OK)
         return NULL;
-    AB(ds_run)(sim, (unsigned long)(0.5 * (double)n / per_step(n)) + 2);
+    AB(ds_run)(sim, kind ? 100 : (unsigned long)(0.5 * (double)n / per_step(n)) + 2);
     return sim;
 }
 
-double AB(ab_round)(void *s, size_t n)
+double AB(ab_round)(void *s, size_t n, int kind)
 {
     ds_sim *sim = s;
+    if (kind) {
+        const unsigned long steps = kind == 2 ? 5000 : (unsigned long)(2e7 / (double)n) + 1;
+        const double s0 = AB(ds_collision_seconds)(sim);
+        AB(ds_run)(sim, steps);
+        const double disks = kind == 2 ? 400.0 : (double)n;
+        return 1e9 * (AB(ds_collision_seconds)(sim) - s0) / (disks * (double)steps);
+    }
     unsigned long steps = (unsigned long)(1e6 / per_step(n));
     steps = steps < 4 ? 4 : steps;
     const uint64_t c0 = AB(ds_collision_count)(sim);
@@ -59,11 +79,11 @@ double AB(ab_round)(void *s, size_t n)
 void AB(ab_done)(void *sim) { AB(ds_destroy)(sim); }
 
 #elif defined(AB_MAIN)
-void *A_ab_make(size_t n);
-double A_ab_round(void *sim, size_t n);
+void *A_ab_make(size_t n, int kind);
+double A_ab_round(void *sim, size_t n, int kind);
 void A_ab_done(void *sim);
-void *B_ab_make(size_t n);
-double B_ab_round(void *sim, size_t n);
+void *B_ab_make(size_t n, int kind);
+double B_ab_round(void *sim, size_t n, int kind);
 void B_ab_done(void *sim);
 
 #define MAX_ROUNDS 1000
@@ -78,11 +98,17 @@ int main(int argc, char **argv)
 {
     const size_t n = argc > 1 ? strtoul(argv[1], NULL, 10) : 0;
     const int rounds = argc > 2 ? atoi(argv[2]) : 0;
-    if (n < 2 || rounds < 1 || rounds > MAX_ROUNDS) {
-        fprintf(stderr, "usage: %s N ROUNDS (N >= 2, 1 <= ROUNDS <= %d)\n", argv[0], MAX_ROUNDS);
+    static const char *const kinds[] = {"event", "step", "seed"};
+    int kind = -1;
+    for (int k = 0; k < 3; ++k)
+        if (strcmp(argc > 3 ? argv[3] : "event", kinds[k]) == 0)
+            kind = k;
+    if (n < 2 || rounds < 1 || rounds > MAX_ROUNDS || kind < 0) {
+        fprintf(stderr, "usage: %s N ROUNDS [event|step|seed] (N >= 2, 1 <= ROUNDS <= %d)\n",
+                argv[0], MAX_ROUNDS);
         return 2;
     }
-    void *a = A_ab_make(n), *b = B_ab_make(n);
+    void *a = A_ab_make(n, kind), *b = B_ab_make(n, kind);
     if (!a || !b) {
         fprintf(stderr, "%s: could not create the systems\n", argv[0]);
         return 1;
@@ -90,20 +116,21 @@ int main(int argc, char **argv)
     static double na[MAX_ROUNDS], nb[MAX_ROUNDS], ratio[MAX_ROUNDS];
     for (int r = 0; r < rounds; ++r) {
         if (r % 2) {
-            nb[r] = B_ab_round(b, n);
-            na[r] = A_ab_round(a, n);
+            nb[r] = B_ab_round(b, n, kind);
+            na[r] = A_ab_round(a, n, kind);
         } else {
-            na[r] = A_ab_round(a, n);
-            nb[r] = B_ab_round(b, n);
+            na[r] = A_ab_round(a, n, kind);
+            nb[r] = B_ab_round(b, n, kind);
         }
         ratio[r] = nb[r] / na[r];
     }
     qsort(na, (size_t)rounds, sizeof *na, compare);
     qsort(nb, (size_t)rounds, sizeof *nb, compare);
     qsort(ratio, (size_t)rounds, sizeof *ratio, compare);
-    printf("N = %zu, %d rounds: A %.0f ns per collision, B %.0f (medians); B / A %.3f "
+    printf("%s, N = %zu, %d rounds: A %.1f ns per %s, B %.1f (medians); B / A %.3f "
            "(quartiles %.3f, %.3f)\n",
-           n, rounds, na[rounds / 2], nb[rounds / 2], ratio[rounds / 2], ratio[rounds / 4],
+           kinds[kind], kind == 2 ? (size_t)400 : n, rounds, na[rounds / 2],
+           kind ? "disk-step" : "collision", nb[rounds / 2], ratio[rounds / 2], ratio[rounds / 4],
            ratio[(3 * rounds) / 4]);
     A_ab_done(a);
     B_ab_done(b);
