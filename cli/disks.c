@@ -154,13 +154,19 @@ static ds_broadphase broadphase_arg(const char *s)
     return DS_AUTO;
 }
 
+/* The integrators are the library's, by name: ds_integrator_name says
+ * "unknown" past the last one. */
 static ds_integrator integrator_arg(const char *s)
 {
-    if (strcmp(s, ds_integrator_name(DS_TIME_STEP)) == 0)
-        return DS_TIME_STEP;
-    if (strcmp(s, ds_integrator_name(DS_EVENT_DRIVEN)) == 0)
-        return DS_EVENT_DRIVEN;
-    die(EXIT_USAGE, "--integrator must be step or event, got '%s'", s);
+    char known[128] = "";
+    for (int k = 0; strcmp(ds_integrator_name((ds_integrator)k), "unknown") != 0; ++k) {
+        const char *name = ds_integrator_name((ds_integrator)k);
+        if (strcmp(s, name) == 0)
+            return (ds_integrator)k;
+        snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", k ? " or " : "",
+                 name);
+    }
+    die(EXIT_USAGE, "--integrator must be %s, got '%s'", known, s);
     return DS_TIME_STEP;
 }
 
