@@ -35,7 +35,7 @@ typedef enum ds_status {
     DS_ERR_PLACEMENT, /* the disks cannot be placed (see DS_RANDOM, DS_LATTICE) */
     DS_ERR_IO,        /* a read or write failed */
     DS_ERR_FORMAT,    /* a frame file is malformed (see ds_frame_error) */
-    DS_ERR_OVERLAP    /* ds_set would make two disks overlap (event-driven integrator) */
+    DS_ERR_OVERLAP    /* ds_set or ds_set_all would make two disks overlap */
 } ds_status;
 
 /* A static English description of a status; never NULL. */
@@ -234,12 +234,36 @@ ds_disk ds_get(const ds_sim *sim, size_t i);
 /* Every disk at once: out[i] = ds_get(sim, i) for i < ds_count(sim), so out
  * must hold ds_count(sim) disks. DS_ERR_ARG if sim or out is NULL. */
 ds_status ds_get_all(const ds_sim *sim, ds_disk *out);
-/* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, or the
- * centre is outside [R, box-R]^2. The time step does not check overlaps
- * (its next step resolves them); the event-driven integrator refuses a
- * centre closer than 2R to another (DS_ERR_OVERLAP, the state unchanged):
- * exact dynamics has no meaning for overlapping hard disks. */
+/* Two centres closer than 2R (1 - DS_CONTACT_TOLERANCE) overlap; closer
+ * than 2R by less is contact, up to the rounding of the coordinates. */
+#define DS_CONTACT_TOLERANCE 1e-9
+
+/* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, a
+ * velocity component exceeds 1e12 in magnitude, or the centre is outside
+ * the box: [R, box - R] x [R, box_y - R] with walls, [0, box) x [0, box_y)
+ * in a periodic box. The time step does not check overlaps (its next step
+ * resolves them); the event-driven integrator refuses a centre that
+ * overlaps another (see DS_CONTACT_TOLERANCE) with DS_ERR_OVERLAP, the
+ * state unchanged: exact dynamics has no meaning for overlapping hard
+ * disks. Moving many disks one by one can fail where the new state is
+ * fine (a disk's new place overlaps a disk not yet moved): use
+ * ds_set_all. */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
+
+/* Why a whole state was refused (ds_set_all, ds_load_state). */
+typedef struct ds_state_error {
+    char message[192]; /* one sentence, e.g. "disks 3 and 17 overlap: ..." */
+} ds_state_error;
+
+/* Replaces every disk at once: disks[i] becomes disk i, for i below
+ * ds_count(sim). The whole new state is checked before anything changes:
+ * DS_ERR_ARG for a disk ds_set would refuse as a value (or sim or disks
+ * NULL), DS_ERR_OVERLAP if two disks overlap (see DS_CONTACT_TOLERANCE;
+ * with either integrator: this is a state to start from). err, if not
+ * NULL, says which disk and why. On DS_OK the integrator starts afresh
+ * from the new state (the event-driven one predicts every event again);
+ * the time, the step count and the observables' accumulators go on. */
+ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
 
 /* The seed's timing measure, summed over all steps. DS_TIME_STEP: seconds
  * spent sorting, pruning, testing and resolving disk-disk pairs.

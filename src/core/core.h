@@ -67,8 +67,10 @@ struct ds_integrator_ops {
     ds_status (*check)(const ds_world *w, unsigned *warnings, ds_params_error *err);
     /* Bytes its state allocates for world w (broad phase resolved). */
     size_t (*bytes)(const ds_world *w);
-    /* Builds its state (sim->state) from the placed disks, in generation
-     * order in sim->disks; it may permute the slots (ds_disks_permute). */
+    /* Builds its state (sim->state) from the disks in sim->disks, in
+     * generation order, at the time sim->steps stands for (0 when the
+     * simulation is created, later for ds_set_all); it may permute the
+     * slots (ds_disks_permute). */
     ds_status (*create)(ds_sim *sim);
     void (*destroy)(ds_sim *sim); /* frees sim->state; safe after a failed create */
     /* Advances steps steps (>= 1) of dt; sim->disks shows the disks at

@@ -305,6 +305,9 @@ static ds_status create(ds_sim *sim)
     e->hi_x = w->box - w->radius;
     e->hi_y = w->box_y - w->radius;
     e->sigma2 = 4.0 * w->radius * w->radius;
+    /* The clock starts at the present step boundary (ds_set_all comes
+     * here later in a run). */
+    e->epoch = (double)sim->steps * w->dt;
     /* Move the epoch about once per time a disk takes to cross the box:
      * by then every disk has had several events, so the O(n) rebase is
      * cheap beside them, and times stay below ~10 crossing times. */
@@ -386,7 +389,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     ds_cells *cells = &e->cells;
     const double now = now_of(sim);
     const uint32_t column = ds_cells_column(cells, nd.x), row = ds_cells_row(cells, nd.y);
-    const double limit = e->sigma2 * (1.0 - CONTACT_TOLERANCE) * (1.0 - CONTACT_TOLERANCE);
+    const double limit = e->sigma2 * (1.0 - DS_CONTACT_TOLERANCE) * (1.0 - DS_CONTACT_TOLERANCE);
     /* Refuse an overlap before changing anything. */
     ds_ed_stencil_cells st;
     ds_ed_stencil(e, column, row, &st);

@@ -18,10 +18,6 @@
 #define EV_CELL_Y (UINT32_MAX - 4)
 #define EV_NONE (UINT32_MAX - 5) /* nothing ahead, ever: the disk is at rest */
 
-/* A centre closer than 2R (1 - this) to another is an overlap that ds_set
- * refuses; closer than 2R by less is contact up to rounding. */
-#define CONTACT_TOLERANCE 1e-9
-
 /* Predicting (event_predict.c) and fetching (event_fetch.c) read a
  * cell as four slots at once (C99 has no static assertion). */
 typedef char ds_ed_cells_have_four_slots[DS_CELL_SLOTS == 4 ? 1 : -1];

@@ -105,16 +105,7 @@ ds_status ds_get_all(const ds_sim *sim, ds_disk *out)
 
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
 {
-    if (!sim || i >= sim->world.n)
-        return DS_ERR_ARG;
-    const ds_world *w = &sim->world;
-    /* With walls the centre stays R from each wall; a periodic box takes
-     * any point of [0, box) x [0, box_y), as its frames show them. */
-    const int inside = w->boundary == DS_PERIODIC
-                           ? d.x >= 0.0 && d.x < w->box && d.y >= 0.0 && d.y < w->box_y
-                           : d.x >= w->radius && d.x <= w->box - w->radius && d.y >= w->radius &&
-                                 d.y <= w->box_y - w->radius;
-    if (!inside || !isfinite(d.vx) || !isfinite(d.vy) || fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
+    if (!sim || i >= sim->world.n || ds_check_disk(&sim->world, i, d, NULL) != DS_OK)
         return DS_ERR_ARG;
     return sim->integrator->set(sim, sim->disks.slot[i], d);
 }

@@ -25,7 +25,7 @@ ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disk
         st = ds_strips_create(bp, w, d);
         break;
     case DS_SAP:
-        ds_bp_insertion_sort(d, 0, d->n, bp->scan);
+        st = ds_bp_sort(d, bp->scan);
         break;
     default:
         break;

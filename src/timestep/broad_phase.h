@@ -57,8 +57,12 @@ size_t ds_bp_bytes(const ds_world *w);
 uint64_t ds_bp_find_pairs(ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);
 
 /* Insertion sort of slots [lo, hi) by x, all arrays moving together
- * (insertion_sort.c). */
+ * (insertion_sort.c): nearly linear for the order of the step before. */
 void ds_bp_insertion_sort(ds_disks *d, size_t lo, size_t hi, ds_scan scan);
+/* The same order from any order (a new state): a stable merge sort,
+ * O(n log n) where insertion sort could take O(n^2); without the memory
+ * for it, the insertion sort. */
+ds_status ds_bp_sort(ds_disks *d, ds_scan scan);
 
 /* The parts behind the dispatcher. */
 uint64_t ds_sap_find_pairs(const ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);

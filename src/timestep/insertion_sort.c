@@ -2,6 +2,9 @@
  * DS_SAP (the whole range) and DS_SAP_STRIPS (one strip at a time). The
  * order barely changes from one step to the next, so the sort is nearly
  * linear: it spends its time looking for the few disks out of order. */
+#include <stdlib.h>
+#include <string.h>
+
 #include "timestep/broad_phase.h"
 
 /* AVX-512 code is compiled with gcc/clang target attributes on x86-64
@@ -60,4 +63,42 @@ void ds_bp_insertion_sort(ds_disks *d, size_t lo, size_t hi, ds_scan scan)
         } while (j > lo && held.x < x[j - 1]);
         ds_disks_store(d, j, held);
     }
+}
+
+/* Merges the sorted runs order[lo, mid) and order[mid, hi) by x into
+ * scratch, the left run first on equal x (stable), and copies back. */
+static void merge_runs(const double *x, uint32_t *order, uint32_t *scratch, size_t lo, size_t mid,
+                       size_t hi)
+{
+    size_t a = lo, b = mid, w = lo;
+    while (a < mid && b < hi)
+        scratch[w++] = x[order[b]] < x[order[a]] ? order[b++] : order[a++];
+    while (a < mid)
+        scratch[w++] = order[a++];
+    while (b < hi)
+        scratch[w++] = order[b++];
+    memcpy(order + lo, scratch + lo, (hi - lo) * sizeof *order);
+}
+
+ds_status ds_bp_sort(ds_disks *d, ds_scan scan)
+{
+    const size_t n = d->n;
+    uint32_t *order = malloc((n ? n : 1) * sizeof *order);
+    uint32_t *scratch = malloc((n ? n : 1) * sizeof *scratch);
+    ds_status st = order && scratch ? DS_OK : DS_ERR_NOMEM;
+    if (st == DS_OK) {
+        for (size_t k = 0; k < n; ++k)
+            order[k] = (uint32_t)k;
+        /* Bottom-up merge sort: runs of 1, 2, 4, ... */
+        for (size_t width = 1; width < n; width *= 2)
+            for (size_t lo = 0; lo + width < n; lo += 2 * width)
+                merge_runs(d->x, order, scratch, lo, lo + width,
+                           lo + 2 * width < n ? lo + 2 * width : n);
+        st = ds_disks_permute(d, order);
+    }
+    free(order);
+    free(scratch);
+    if (st != DS_OK) /* no memory for the copy: the slow way, in place */
+        ds_bp_insertion_sort(d, 0, n, scan);
+    return DS_OK;
 }
