@@ -104,7 +104,28 @@ build-fuzz/fuzz_frame: tests/fuzz_frame.c $(LIB_SRC) $(LIB_HDR)
 	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -g -O1 -fsanitize=fuzzer,address,undefined \
 	    -fno-sanitize-recover=all -o $@ tests/fuzz_frame.c $(LIB_SRC) -lm
 
-fuzz: build-fuzz/fuzz_frame
+# The checkpoint loader likewise (tests/fuzz_state.c), seeded with small
+# checkpoints of every integrator, boundary and broad phase that
+# tests/state_seeds.c writes; crashes go to tests/corpus-state/.
+build-fuzz/fuzz_state: tests/fuzz_state.c $(LIB_SRC) $(LIB_HDR)
+	@mkdir -p build-fuzz/state-found
+	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -g -O1 -fsanitize=fuzzer,address,undefined \
+	    -fno-sanitize-recover=all -o $@ tests/fuzz_state.c $(LIB_SRC) -lm
+
+build-fuzz/state_seeds: tests/state_seeds.c $(LIB)
+	@mkdir -p build-fuzz/state-seeds
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+fuzz: fuzz-frame fuzz-state
+.PHONY: fuzz-frame fuzz-state
+fuzz-state: build-fuzz/fuzz_state build-fuzz/state_seeds
+	./build-fuzz/state_seeds build-fuzz/state-seeds
+	@mkdir -p tests/corpus-state
+	./build-fuzz/fuzz_state -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
+	    -rss_limit_mb=1024 -print_final_stats=1 -artifact_prefix=tests/corpus-state/ \
+	    build-fuzz/state-found build-fuzz/state-seeds tests/corpus-state
+
+fuzz-frame: build-fuzz/fuzz_frame
 	./build-fuzz/fuzz_frame -max_total_time=$(FUZZ_SECONDS) -max_len=2048 -timeout=10 \
 	    -rss_limit_mb=1024 -print_final_stats=1 -artifact_prefix=tests/corpus/ \
 	    -dict=tests/fuzz_frame.dict \
