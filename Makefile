@@ -112,9 +112,9 @@ check-symbols: $(LIB)
 	if [ -n "$$calls" ]; then echo "check-symbols: the library calls" $$calls; exit 1; fi; \
 	echo "check-symbols: $$(nm -g --defined-only $(LIB) | awk 'NF == 3' | wc -l) exported symbols, all ds_*, no printing or exit"
 
-# Regenerates the README "Bad input" table from tests/cli_cases.txt.
+# Regenerates the "Bad input" table of docs/cli.md from tests/cli_cases.txt.
 bad-input-table: all $(BUILD)/tests/test_cli
-	sh tests/bad_input_table.sh $(BUILD)/tests/test_cli README.md
+	sh tests/bad_input_table.sh $(BUILD)/tests/test_cli docs/cli.md
 
 clean:
 	rm -rf build build-san build-fuzz build-werror-gcc build-werror-clang build-plain libdisksim.a disks
