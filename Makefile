@@ -120,7 +120,7 @@ clean:
 	rm -rf build build-san build-fuzz build-werror-gcc build-werror-clang build-plain libdisksim.a disks
 
 # ---------------------------------------------------------------- bench
-# `make bench` prints the performance table of the README (under a minute
+# `make bench` prints the table of docs/performance.md (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
 $(OUT)tools/bench: tools/bench.c tools/bench_events.c tools/bench.h $(LIB) include/disk_sim.h
