@@ -171,6 +171,12 @@ PKGCONFIGDIR = $(LIBDIR)/pkgconfig
 INSTALL      ?= install
 # The gnuplot scripts, wherever they live in the tree (share/disksim/).
 PLT_FILES     = $(wildcard animate_disk.plt tools/*.plt)
+# The documentation, where a package puts it (share/doc/disksim/): the
+# front page, changelog and licence, and the manual in docs/ with its
+# pictures, so the pages' relative links work in the installed copy.
+DOCDIR        = $(DATADIR)/doc/disksim
+DOC_FILES     = README.md CHANGELOG.md LICENSE
+DOC_PAGES     = $(wildcard docs/*.md docs/*.png)
 
 .PHONY: examples install uninstall clean-packaging FORCE
 all: $(OUT)libdisksim.so disksim.pc
@@ -216,15 +222,18 @@ $(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
-# disks-render is installed when the renderer has been built (`make render`).
-# The man page names the gnuplot scripts by their path under the default
-# prefix; the installed copy names them where they really are.
+# disks-render and its man page are installed when the renderer has been
+# built (`make render`). The man page of disks names the gnuplot scripts by
+# their path under the default prefix; the installed copy names them where
+# they really are.
 install: all
 	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
-	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim
+	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim \
+	    $(DESTDIR)$(MANDIR)/man3 $(DESTDIR)$(DOCDIR)/docs
 	$(INSTALL) -m 755 $(DISKS) $(DESTDIR)$(BINDIR)/disks
 	if [ -x $(OUT)tools/render ]; then \
-	    $(INSTALL) -m 755 $(OUT)tools/render $(DESTDIR)$(BINDIR)/disks-render; fi
+	    $(INSTALL) -m 755 $(OUT)tools/render $(DESTDIR)$(BINDIR)/disks-render && \
+	    $(INSTALL) -m 644 man/disks-render.1 $(DESTDIR)$(MANDIR)/man1/disks-render.1; fi
 	$(INSTALL) -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libdisksim.a
 	$(INSTALL) -m 755 $(OUT)$(SHLIB) $(DESTDIR)$(LIBDIR)/$(SHLIB)
 	ln -sf $(SHLIB) $(DESTDIR)$(LIBDIR)/$(SONAME)
@@ -234,16 +243,23 @@ install: all
 	sed 's|/usr/local/share/disksim|$(DATADIR)/disksim|g' man/disks.1 \
 	    > $(DESTDIR)$(MANDIR)/man1/disks.1
 	chmod 644 $(DESTDIR)$(MANDIR)/man1/disks.1
+	$(INSTALL) -m 644 man/disk_sim.3 $(DESTDIR)$(MANDIR)/man3/disk_sim.3
 	$(if $(PLT_FILES),$(INSTALL) -m 644 $(PLT_FILES) $(DESTDIR)$(DATADIR)/disksim/)
+	$(INSTALL) -m 644 $(DOC_FILES) $(DESTDIR)$(DOCDIR)/
+	$(if $(DOC_PAGES),$(INSTALL) -m 644 $(DOC_PAGES) $(DESTDIR)$(DOCDIR)/docs/)
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/disks $(DESTDIR)$(BINDIR)/disks-render \
 	    $(DESTDIR)$(LIBDIR)/libdisksim.a $(DESTDIR)$(LIBDIR)/libdisksim.so \
 	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(SHLIB) \
 	    $(DESTDIR)$(INCLUDEDIR)/disk_sim.h $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc \
-	    $(DESTDIR)$(MANDIR)/man1/disks.1 \
-	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(notdir $(PLT_FILES)))
+	    $(DESTDIR)$(MANDIR)/man1/disks.1 $(DESTDIR)$(MANDIR)/man1/disks-render.1 \
+	    $(DESTDIR)$(MANDIR)/man3/disk_sim.3 \
+	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(notdir $(PLT_FILES))) \
+	    $(addprefix $(DESTDIR)$(DOCDIR)/,$(DOC_FILES)) \
+	    $(addprefix $(DESTDIR)$(DOCDIR)/docs/,$(notdir $(DOC_PAGES)))
 	rmdir $(DESTDIR)$(DATADIR)/disksim 2>/dev/null || true
+	rmdir $(DESTDIR)$(DOCDIR)/docs $(DESTDIR)$(DOCDIR) 2>/dev/null || true
 
 clean-packaging:
 	rm -f libdisksim.so libdisksim.so.* disksim.pc disksim.pc.tmp \
