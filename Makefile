@@ -84,6 +84,19 @@ test: all $(TEST_BIN)
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
 
+# ---------------------------------------------------------------- docs
+# Docs that cannot rot, checked by `make test` (and alone by `make
+# check-docs`): tests/check_docs.sh checks that the links of README.md and
+# docs/ resolve, that every option the programs print in --help is in their
+# man page and docs/ page and no other option is, that example commands use
+# real options, that the README's library example is examples/minimal.c,
+# that the API is named in man/disk_sim.3 and docs/library.md, and that the
+# man pages render without a warning. It prints what is wrong and fails.
+.PHONY: check-docs
+check-docs: all
+	sh tests/check_docs.sh $(DISKS) $(OUT)tools/render $(OUT)tools/gr $(OUT)tools/pressure
+test: check-docs
+
 # ---------------------------------------------------------------- hardening
 .PHONY: fuzz check-symbols bad-input-table
 
