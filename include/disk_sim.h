@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * disksim: hard disks (2D elastic billiards) in a square box.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event-driven integrator, through the public API: exact analytic
  * cases (head-on, oblique, a wall, a corner, Newton's cradle) to the
  * 1e-9 the header promises, no overlap ever in a dense gas, energy and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Bond-orientational order: psi6 per disk (ds_local_psi6) on arrangements
  * whose answer is known exactly, against an all-pairs reference, across a
  * periodic seam, and the global ds_psi6 of a crystal and of a gas. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parameters: ds_diagnose_params gives ds_check_params's answer and says
  * why, naming the field at fault and its value, for every refusal; and it
  * explains a warning. */

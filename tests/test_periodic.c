@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The periodic box and the rectangular one, through the public API, for
  * both integrators: pairs that meet across a seam or a corner collide
  * exactly as inside the box, positions stay wrapped, momentum is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The periodic box in one place: wrapping a coordinate into the box and
  * the separation to the nearest image. Every part that meets the
  * boundary (the integrators, the broad phases, placement) calls these.

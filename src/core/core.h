@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What every part of the library shares: the simulation object, what
  * every part reads (the world), what integrators add to (the tally), and
  * the table of operations an integrator fills.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_EVENT_DRIVEN: exact dynamics of hard disks.
  *
  * Between events every disk flies in a straight line, so the state is

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Initial states: where the disks start and how they move. Random
  * sequential placement (placement_random.c) or a triangular lattice
  * (placement_lattice.c), both filling the disk arrays in generation

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Placement: the initial state as ds_params.placement asks for it. */
 #include "init/init.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lattice placement (DS_LATTICE): the disks on a triangular lattice that
  * fills the box as evenly as it can, the way dense states are started.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Random sequential placement: disk i is drawn uniformly where a centre
  * may be ([R, box - R] x [R, box_y - R] with walls, [0, box) x [0, box_y)
  * in a periodic box) and redrawn until it overlaps none of disks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Order: the bond-orientational order parameter psi6, per disk and for the
  * whole system.
  *

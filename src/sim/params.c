@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parameters: the defaults, what a request may ask for and why not, and
  * the memory it needs. Every refusal is made here (or by the integrator's
  * own check, through its table) and explained in one sentence, so the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_TIME_STEP: the seed's fixed time step. Each step moves every disk by
  * v dt and turns those past a wall, or wraps them in a periodic box
  * (free_flight.c), then the broad phase (broad_phase.c) finds the
