@@ -146,6 +146,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk d)
 
 const ds_integrator_ops ds_time_step_ops = {
     .name = "step",
+    .min_room = 0.0, /* a step is a fixed amount of work, in any room */
     .fits = fits,
     .choose = choose,
     .check = check,
