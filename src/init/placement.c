@@ -9,20 +9,24 @@ void ds_stop_centre_of_mass(ds_disks *d, const ds_world *w)
     const size_t n = d->n;
     if (n < 2)
         return; /* one disk at rest would have no speed at all */
-    double mx = 0.0, my = 0.0;
+    /* With masses: the velocity of the centre of mass, and the kinetic
+     * energy sum m speed^2 / 2 every disk started with. */
+    double mx = 0.0, my = 0.0, mass = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        mx += d->vx[i];
-        my += d->vy[i];
+        const double m = d->m ? d->m[i] : 1.0;
+        mx += m * d->vx[i];
+        my += m * d->vy[i];
+        mass += m;
     }
-    mx /= (double)n;
-    my /= (double)n;
+    mx /= mass;
+    my /= mass;
     double v2 = 0.0;
     for (size_t i = 0; i < n; ++i) {
         d->vx[i] -= mx;
         d->vy[i] -= my;
-        v2 += d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i];
+        v2 += (d->m ? d->m[i] : 1.0) * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
     }
-    const double scale = sqrt((double)n * w->speed * w->speed / v2);
+    const double scale = sqrt(mass * w->speed * w->speed / v2);
     for (size_t i = 0; i < n; ++i) {
         d->vx[i] *= scale;
         d->vy[i] *= scale;

@@ -17,6 +17,7 @@
  * crystal does not drift) and the speeds scaled back to the same kinetic
  * energy, n speed^2 / 2. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "init/init.h"
 
@@ -104,9 +105,29 @@ ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
 {
     const int periodic = w->boundary == DS_PERIODIC;
     const size_t n = w->n;
-    const lattice l = best_lattice(n, w->radius, w->box, w->box_y, periodic);
-    if (!(l.closest >= 2.0 * w->radius * (1.0 - FIT_SLACK)))
+    /* Sites for the largest disk of a mixture. */
+    const double r = w->radius_max;
+    const lattice l = best_lattice(n, r, w->box, w->box_y, periodic);
+    if (!(l.closest >= 2.0 * r * (1.0 - FIT_SLACK)))
         return DS_ERR_PLACEMENT;
+    /* The disks of a mixture take the sites in an order drawn from the
+     * seed (a stream of its own, so the directions are those of a lattice
+     * of one kind): kinds mixed over the box, not one kind in a band. */
+    uint32_t *disk_at = malloc((n ? n : 1) * sizeof *disk_at);
+    if (!disk_at)
+        return DS_ERR_NOMEM;
+    for (size_t i = 0; i < n; ++i)
+        disk_at[i] = (uint32_t)i;
+    if (d->r || d->m) {
+        ds_rng shuffle;
+        ds_rng_seed(&shuffle, w->seed ^ 0x5bd1e995u);
+        for (size_t i = n; i-- > 1;) {
+            const size_t j = (size_t)(ds_rng_next(&shuffle) % (i + 1));
+            const uint32_t t = disk_at[i];
+            disk_at[i] = disk_at[j];
+            disk_at[j] = t;
+        }
+    }
 
     /* Site s (row-major) is taken when floor((s + 1) n / sites) steps up:
      * the empty ones fall evenly along the rows. */
@@ -121,13 +142,14 @@ ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
         if (!periodic) {
             /* The last site of a row is R from the far wall, up to rounding,
              * which must not put it past the wall line. */
-            x = fmin(x, w->box - w->radius);
-            y = fmin(y, w->box_y - w->radius);
+            x = fmin(x, w->box - r);
+            y = fmin(y, w->box_y - r);
         }
-        d->x[placed] = x;
-        d->y[placed] = y;
+        d->x[disk_at[placed]] = x;
+        d->y[disk_at[placed]] = y;
         ++placed;
     }
+    free(disk_at);
 
     ds_rng rng;
     ds_rng_seed(&rng, w->seed);
