@@ -103,6 +103,36 @@ static void test_a_loaded_run_goes_on_bit_for_bit(void **state)
     }
 }
 
+/* The time step turns a disk at a wall after it has moved: between steps
+ * its centre may be past the band a radius from the wall. Saved at such
+ * a step, the run loads and goes on bit for bit (the classic case, which
+ * has a disk past the band within its first hundred steps). */
+static void test_a_time_step_saved_with_a_disk_past_the_wall_band_loads(void **state)
+{
+    (void)state;
+    ds_sim *a = test_create(400, 5.0, 1, DS_SAP);
+    int found = 0;
+    for (int step = 0; step < 2000 && !found; ++step) {
+        ds_step(a);
+        for (size_t k = 0; k < ds_count(a) && !found; ++k) {
+            const ds_disk d = ds_get(a, k);
+            found = d.x < 5.0 || d.x > ds_box(a) - 5.0 || d.y < 5.0 || d.y > ds_box_y(a) - 5.0;
+        }
+    }
+    assert_true(found);
+    size_t len = 0;
+    uint8_t *buf = saved(a, &len);
+    ds_sim *b = NULL;
+    ds_state_error why;
+    assert_int_equal(ds_parse_state(buf, len, &b, &why), DS_OK);
+    ds_run(a, 500);
+    ds_run(b, 500);
+    assert_same_run(a, b);
+    free(buf);
+    ds_destroy(a);
+    ds_destroy(b);
+}
+
 /* A checkpoint of a checkpoint is the same run too, through a file. */
 static void test_a_checkpoint_goes_through_a_file(void **state)
 {
@@ -250,6 +280,21 @@ static void test_forged_checkpoints_never_crash_the_loader(void **state)
     }
 }
 
+/* A stream without end (/dev/zero) is read as far as a header could be,
+ * not to its end: refused at once, no memory grown for ever. */
+static void test_a_stream_without_end_is_refused_at_once(void **state)
+{
+    (void)state;
+    FILE *f = fopen("/dev/zero", "rb");
+    if (!f)
+        skip();
+    ds_sim *b = NULL;
+    ds_state_error why;
+    assert_int_equal(ds_load_state(f, &b, &why), DS_ERR_FORMAT);
+    assert_non_null(strstr(why.message, "not a disksim state"));
+    fclose(f);
+}
+
 static void test_null_arguments_are_refused(void **state)
 {
     (void)state;
@@ -269,9 +314,11 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_a_loaded_run_goes_on_bit_for_bit),
         cmocka_unit_test(test_a_checkpoint_goes_through_a_file),
+        cmocka_unit_test(test_a_time_step_saved_with_a_disk_past_the_wall_band_loads),
         cmocka_unit_test(test_a_state_set_by_hand_is_saved_exactly),
         cmocka_unit_test(test_a_bad_checkpoint_is_refused_with_a_reason),
         cmocka_unit_test(test_forged_checkpoints_never_crash_the_loader),
+        cmocka_unit_test(test_a_stream_without_end_is_refused_at_once),
         cmocka_unit_test(test_null_arguments_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

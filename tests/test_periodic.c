@@ -453,7 +453,10 @@ static void test_periodic_pressure_follows_the_virial_series(void **state)
         print_message("eta %.1f: Z = %.5f +- %.5f, series %.5f\n", etas[k], z.mean, z.error,
                       series);
         assert_true(fabs(z.mean - series) < T_7_DOF_999 * z.error);
-        assert_true(fabs(z.mean / series - 1.0) < 0.002);
+        /* The 0.2% where the run is long enough to tell (not the quick
+         * mode's, whose error is near 0.15% itself). */
+        if (!quick_mode())
+            assert_true(fabs(z.mean / series - 1.0) < 0.002);
     }
 }
 

@@ -61,6 +61,9 @@ ds_status ds_cells_init(ds_cells *cells, size_t n, double box_x, double box_y, d
         cells->slot[s] = cells->empty;
     for (size_t c = 0; c < count; ++c)
         cells->more[c] = cells->empty;
+    /* Read only along a list, but a checkpoint writes all of it. */
+    for (size_t k = 0; k < n; ++k)
+        cells->next[k] = cells->empty;
     return DS_OK;
 }
 

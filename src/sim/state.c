@@ -356,11 +356,38 @@ static ds_status mixture_world(ds_sim *sim, ds_state_error *err)
     return DS_OK;
 }
 
+/* Where a centre may be. Walls: inside the band a disk's radius from
+ * them, less rounding; the time step turns a disk after it has moved, so
+ * its centre may be past the band by what it moves in a step, and a
+ * collision in that step may send it out again once more: twice the
+ * fastest disk's step. Periodic: inside the box. */
+static ds_status check_positions(const ds_sim *sim, ds_state_error *err)
+{
+    const ds_world *w = &sim->world;
+    const ds_disks *d = &sim->disks;
+    const int periodic = w->boundary == DS_PERIODIC;
+    double past = 1e-9 * fmax(w->box, w->box_y);
+    if (!periodic && w->integrator == DS_TIME_STEP) {
+        double fastest = 0.0;
+        for (size_t k = 0; k < d->n; ++k)
+            fastest = fmax(fastest, hypot(d->vx[k], d->vy[k]));
+        past += 2.0 * fastest * w->dt;
+    }
+    for (size_t k = 0; k < d->n; ++k) {
+        const double radius = d->r ? d->r[k] : w->radius;
+        const double lo = periodic ? 0.0 : radius - past;
+        const double hi_x = periodic ? w->box : w->box - radius + past;
+        const double hi_y = periodic ? w->box_y : w->box_y - radius + past;
+        if (!(d->x[k] >= lo && d->x[k] <= hi_x && d->y[k] >= lo && d->y[k] <= hi_y))
+            return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
+    }
+    return DS_OK;
+}
+
 static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
 {
     const ds_world *w = &sim->world;
     ds_disks *d = &sim->disks;
-    const double slack = 1e-9 * fmax(w->box, w->box_y);
     for (size_t k = 0; k < d->n; ++k) {
         d->x[k] = ds_get_f64(r);
         d->y[k] = ds_get_f64(r);
@@ -377,16 +404,14 @@ static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
         if (!(radius > 0.0) || !isfinite(radius) || (d->m && !(d->m[k] > 0.0 && isfinite(d->m[k]))))
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu's radius or mass is no number > 0",
                                    k);
-        const double lo = w->boundary == DS_PERIODIC ? 0.0 : radius - slack;
-        const double hi_x = w->boundary == DS_PERIODIC ? w->box : w->box - radius + slack;
-        const double hi_y = w->boundary == DS_PERIODIC ? w->box_y : w->box_y - radius + slack;
-        if (!(d->x[k] >= lo && d->x[k] <= hi_x && d->y[k] >= lo && d->y[k] <= hi_y) ||
-            !isfinite(d->vx[k]) || !isfinite(d->vy[k]) || d->id[k] >= d->n ||
-            d->slot[d->id[k]] != UINT32_MAX)
+        if (!isfinite(d->x[k]) || !isfinite(d->y[k]) || !isfinite(d->vx[k]) ||
+            !isfinite(d->vy[k]) || !(fabs(d->vx[k]) < 1e300 && fabs(d->vy[k]) < 1e300) ||
+            d->id[k] >= d->n || d->slot[d->id[k]] != UINT32_MAX)
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
         d->slot[d->id[k]] = (uint32_t)k; /* seen */
     }
-    return mixture_world(sim, err);
+    const ds_status st = check_positions(sim, err);
+    return st != DS_OK ? st : mixture_world(sim, err);
 }
 
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err)
@@ -457,23 +482,28 @@ ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err)
         *out = NULL;
     if (!in || !out)
         return ds_state_refuse(err, DS_ERR_ARG, "no file or nowhere to put the simulation (NULL)");
-    size_t cap = 1 << 16, len = 0;
-    uint8_t *buf = malloc(cap);
-    while (buf) {
-        len += fread(buf + len, 1, cap - len, in);
-        if (len < cap)
-            break;
-        uint8_t *grown = cap <= SIZE_MAX / 2 ? realloc(buf, cap * 2) : NULL;
-        if (!grown) {
-            free(buf);
-            buf = NULL;
-        } else {
-            buf = grown;
-            cap *= 2;
-        }
+    /* The header says how long the state is: read that much and one byte
+     * more (which must not be there), never to the end of whatever the
+     * stream is (/dev/zero has none). */
+    uint8_t head[HEADER_BYTES];
+    size_t len = fread(head, 1, sizeof head, in);
+    size_t total = len;
+    if (len == sizeof head && memcmp(head, MAGIC, 8) == 0) {
+        uint64_t payload = 0;
+        for (int k = 0; k < 8; ++k)
+            payload |= (uint64_t)head[32 + k] << (8 * k);
+        if (payload > SIZE_MAX / 2)
+            return ds_state_refuse(err, DS_ERR_FORMAT,
+                                   "its header announces %llu bytes, more than can be held",
+                                   (unsigned long long)payload);
+        total = HEADER_BYTES + (size_t)payload + CHECKSUM_BYTES;
     }
+    uint8_t *buf = malloc(total + 1);
     if (!buf)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to read the state");
+    memcpy(buf, head, len);
+    if (total > len)
+        len += fread(buf + len, 1, total + 1 - len, in);
     if (ferror(in)) {
         free(buf);
         return ds_state_refuse(err, DS_ERR_IO, "the state could not be read");
