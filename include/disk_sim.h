@@ -147,12 +147,12 @@ typedef enum ds_broadphase {
  * of every field that has one, but its broadphase is DS_SAP (0), which
  * serves the time step only: start from ds_default_params (DS_AUTO). */
 typedef struct ds_params {
-    size_t n;      /* number of disks, >= 1 */
-    double radius; /* disk radius: < box/2 and box_y/2 (walls), /4 (periodic) */
-    uint64_t seed; /* seed of the placement and direction generator */
-    double box;    /* width, in (0, 1e9]; 0 means 1000 */
-    double speed;  /* initial speed, in (0, 1e9]; 0 means 100 */
-    double dt;     /* the step, in (0, 1]; 0 means 0.001 */
+    size_t n;                 /* number of disks, >= 1 */
+    double radius;            /* disk radius: < box/2 and box_y/2 (walls), /4 (periodic) */
+    uint64_t seed;            /* seed of the placement and direction generator */
+    double box;               /* width, in (0, 1e9]; 0 means 1000 */
+    double speed;             /* initial speed, in (0, 1e9]; 0 means 100 */
+    double dt;                /* the step, in (0, 1]; 0 means 0.001 */
     ds_broadphase broadphase; /* DS_AUTO in ds_default_params; see above */
     ds_integrator integrator; /* DS_TIME_STEP by default */
     ds_boundary boundary;     /* DS_WALLS by default */
@@ -266,11 +266,11 @@ typedef enum ds_mass_rule {
  * from the seed (not sorted by kind). A mixture of one kind of radius R
  * and mass 1 is exactly ds_create's simulation. */
 typedef struct ds_mixture {
-    size_t species;           /* kinds, or 0 for radii per disk */
-    const ds_species *kinds;  /* species entries */
-    const double *radii;      /* per disk: n radii, in generation order */
-    const double *masses;     /* per disk: n masses, or NULL for the rule */
-    ds_mass_rule mass_rule;   /* for masses not given (0 or NULL) */
+    size_t species;          /* kinds, or 0 for radii per disk */
+    const ds_species *kinds; /* species entries */
+    const double *radii;     /* per disk: n radii, in generation order */
+    const double *masses;    /* per disk: n masses, or NULL for the rule */
+    ds_mass_rule mass_rule;  /* for masses not given (0 or NULL) */
 } ds_mixture;
 
 /* ds_diagnose_params, ds_memory_needed and ds_create for a mixture; a
@@ -292,6 +292,56 @@ ds_status ds_get_radii(const ds_sim *sim, double *radii, double *masses);
 double ds_radius_max(const ds_sim *sim);
 /* The fraction of the box the disks cover, sum of pi r^2 over box box_y. */
 double ds_area_fraction(const ds_sim *sim);
+
+/* Growth (Lubachevsky-Stillinger compression), event-driven integrator in
+ * a periodic box only (DS_ERR_ARG otherwise): from now on every radius
+ * grows in proportion to itself, r(t) = r(now) (1 + rate (t - now)), so
+ * the ratios of a mixture stay, until the area fraction reaches
+ * until_eta (0: no target), at that exact time, or the reduced pressure Z
+ * (watched over windows of 2 n collisions, with the temperature of the
+ * internal motion, K_int / (N - 1)) passes until_z (0 means
+ * DS_JAMMED_Z; at most 1e9), whichever comes first; rate 0 stops it.
+ * Past Z = 10^4 the growth slows as 10^4 / Z, so the disks can rearrange
+ * near jamming (docs/physics.md). A collision reflects the pair's normal
+ * velocity in the frame of their receding surfaces, which adds energy:
+ * at the end of each window every velocity is scaled back to the kinetic
+ * energy of the call. The masses stay. ds_set_all stops growth; so does a
+ * call with other targets, which starts again from now. DS_ERR_ARG for a
+ * rate < 0 or not finite, until_eta not 0 and not between the area
+ * fraction of now and 1, until_z not 0 and not in (1, 1e9]. The step in which growth stops at Z is
+ * finished without it: near jamming that step has many collisions (about 4 (Z - 1) sqrt(kT / (pi
+ * m)) / sigma per disk per unit time). */
+#define DS_JAMMED_Z 1e6
+ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
+
+typedef enum ds_growth_state {
+    DS_GROWTH_NONE = 0,    /* never grown, or stopped with rate 0 */
+    DS_GROWING,            /* growing */
+    DS_GROWTH_REACHED_ETA, /* stopped at until_eta */
+    DS_GROWTH_JAMMED       /* stopped when Z passed until_z */
+} ds_growth_state;
+ds_growth_state ds_growth_state_of(const ds_sim *sim);
+
+/* Every velocity times factor (> 0, finite; DS_ERR_ARG otherwise), at
+ * ds_time: a thermostat's step, or a compression taking out its heat. */
+ds_status ds_scale_velocities(ds_sim *sim, double factor);
+
+/* The contacts of a packing at ds_time: pairs whose centres are closer
+ * than (r_i + r_j) (1 + gap), gap >= 0 (a jammed packing's contacts are
+ * what its pressure keeps a hair apart: at Z = 10^6 they are 1e-8 to 1e-5
+ * of a diameter apart, the next neighbours 1e-3 and more: gap 1e-4 tells
+ * them apart; docs/physics.md). Rattlers, disks with fewer than 3
+ * contacts (which a disk in the plane needs to be held), are removed,
+ * and removed again as their removal leaves others with fewer, until
+ * none is left. */
+typedef struct ds_contacts {
+    size_t pairs;            /* contacts between the disks that are left */
+    size_t rattlers;         /* disks removed */
+    double per_disk;         /* contacts per disk left, 2 pairs / (n - rattlers); 0 if none */
+    double rattler_fraction; /* rattlers / n */
+} ds_contacts;
+/* DS_ERR_ARG for NULL or a gap not in [0, 1); DS_ERR_NOMEM. O(n). */
+ds_status ds_count_contacts(const ds_sim *sim, double gap, ds_contacts *out);
 
 /* Advances simulated time by exactly dt. DS_TIME_STEP: move by v dt,
  * reflect at walls, resolve overlapping pairs. DS_EVENT_DRIVEN: process
@@ -401,9 +451,9 @@ uint64_t ds_pairs_tested(const ds_sim *sim);    /* narrow-phase distance tests *
 /* Observables                                                         */
 /* ------------------------------------------------------------------ */
 
-double ds_kinetic_energy(const ds_sim *sim); /* sum of m v^2/2 */
+double ds_kinetic_energy(const ds_sim *sim);                 /* sum of m v^2/2 */
 void ds_momentum(const ds_sim *sim, double *px, double *py); /* sum of m v */
-uint64_t ds_wall_count(const ds_sim *sim); /* wall reflections since reset */
+uint64_t ds_wall_count(const ds_sim *sim);                   /* wall reflections since reset */
 /* Momentum handed to the walls since the last reset: sum of 2 m |v_n|. */
 double ds_wall_impulse(const ds_sim *sim);
 /* Wall impulse per unit time per unit length of wall the centres reach
@@ -474,9 +524,8 @@ double ds_psi6(const ds_sim *sim);
  * bins is 0, dr or a side is not finite and positive, a centre is not
  * finite, boundary is unknown, or a periodic range is too long;
  * DS_ERR_NOMEM if the grid cannot be allocated. */
-ds_status ds_pair_histogram(size_t n, const double *x, const double *y, double box_x,
-                            double box_y, ds_boundary boundary, double dr, size_t bins,
-                            uint64_t *counts);
+ds_status ds_pair_histogram(size_t n, const double *x, const double *y, double box_x, double box_y,
+                            ds_boundary boundary, double dr, size_t bins, uint64_t *counts);
 
 /* ------------------------------------------------------------------ */
 /* Frames: text files of lines "x y R" or "x y R vx vy"                */

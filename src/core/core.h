@@ -103,6 +103,12 @@ struct ds_integrator_ops {
      * misbehave (indices out of range, lists that loop, times that are
      * not numbers); the checksum catches the rest. */
     ds_status (*load)(ds_sim *sim, ds_reader *r, ds_state_error *err);
+    /* Growth (ds_set_growth), or NULL where the integrator has none. */
+    ds_status (*set_growth)(ds_sim *sim, double rate, double until_eta, double until_z);
+    /* Every velocity times factor (> 0), at the present time. */
+    ds_status (*scale_velocities)(ds_sim *sim, double factor);
+    /* Where growth stands (a ds_growth_state), or NULL: DS_GROWTH_NONE. */
+    int (*growth_state)(const ds_sim *sim);
 };
 
 /* Fills err (if not NULL) with a printf-style sentence; returns status. */

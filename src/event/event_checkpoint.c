@@ -44,6 +44,77 @@ void ds_ed_save(const ds_sim *sim, ds_writer *w)
         ds_put_u32(w, e->cells.more[c]);
     for (size_t k = 0; k < n; ++k)
         ds_put_u32(w, e->cells.next[k]);
+    /* Growth: its clock, targets, energy and window, and the radii it
+     * grows from. */
+    const ds_growth *g = &e->growth;
+    ds_put_u32(w, g->base ? 1u : 0u);
+    if (!g->base)
+        return;
+    ds_put_f64(w, g->rate);
+    ds_put_f64(w, g->asked);
+    ds_put_f64(w, g->scale);
+    ds_put_f64(w, g->from);
+    ds_put_f64(w, g->stop_time);
+    ds_put_f64(w, g->until_eta);
+    ds_put_f64(w, g->until_z);
+    ds_put_f64(w, g->kinetic);
+    ds_put_f64(w, g->kinetic_target);
+    ds_put_f64(w, g->momentum_energy);
+    ds_put_u64(w, g->window);
+    ds_put_f64(w, g->window_start);
+    ds_put_f64(w, g->window_virial);
+    ds_put_u32(w, (uint32_t)g->stopped);
+    for (size_t k = 0; k < n; ++k)
+        ds_put_f64(w, g->base[k]);
+}
+
+static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r,
+                             ds_state_error *err)
+{
+    const size_t n = sim->world.n;
+    const uint32_t has = ds_get_u32(r);
+    if (r->failed || has > 1u)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the growth's part is not one");
+    if (!has)
+        return DS_OK;
+    ds_growth *g = &e->growth;
+    if (!sim->disks.r || !e->periodic)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "growth without radii or walls around it");
+    g->rate = ds_get_f64(r);
+    g->asked = ds_get_f64(r);
+    g->scale = ds_get_f64(r);
+    g->from = ds_get_f64(r);
+    g->stop_time = ds_get_f64(r);
+    g->until_eta = ds_get_f64(r);
+    g->until_z = ds_get_f64(r);
+    g->kinetic = ds_get_f64(r);
+    g->kinetic_target = ds_get_f64(r);
+    g->momentum_energy = ds_get_f64(r);
+    g->window = ds_get_u64(r);
+    g->window_start = ds_get_f64(r);
+    g->window_virial = ds_get_f64(r);
+    g->stopped = (int)ds_get_u32(r);
+    if (r->failed || !(g->rate >= 0.0 && g->rate < 1e300) ||
+        !(g->asked >= g->rate && g->asked < 1e300) || !(g->scale >= 1.0 && g->scale < 1e300) ||
+        !(g->until_eta >= 0.0 && g->until_eta < 1.0) || !(g->from <= now) || !isfinite(g->from) ||
+        isnan(g->stop_time) || !(g->until_z > 1.0 && g->until_z <= 1e9) || !isfinite(g->kinetic) ||
+        !(g->kinetic_target > 0.0 && isfinite(g->kinetic_target)) ||
+        !isfinite(g->momentum_energy) || !isfinite(g->window_start) ||
+        !isfinite(g->window_virial) || g->stopped < 0 || g->stopped > 2 ||
+        !(1.0 + g->rate * (now - g->from) > 0.0))
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the growth's clock or targets are not a run's");
+    if (!(g->base = malloc(n * sizeof *g->base)))
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the growth of %zu disks", n);
+    e->radius = g->base;
+    for (size_t k = 0; k < n; ++k) {
+        g->base[k] = ds_get_f64(r);
+        /* The radius shown is the base grown to now, to the bit. */
+        if (r->failed || !(g->base[k] > 0.0) ||
+            g->base[k] * (1.0 + g->rate * (now - g->from)) != sim->disks.r[k])
+            return ds_state_refuse(err, DS_ERR_FORMAT, "disk %zu's growing radius is not its own",
+                                   k);
+    }
+    return DS_OK;
 }
 
 static int is_event_kind(uint32_t partner)
@@ -206,6 +277,8 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
     ds_status st = read_records(e, n, now, r, err);
     if (st == DS_OK)
         st = read_cells(e, n, r, err);
+    if (st == DS_OK)
+        st = read_growth(sim, e, now, r, err);
     if (st == DS_OK)
         st = check_records(sim, e, now, err);
     if (st == DS_OK)

@@ -51,14 +51,6 @@ static void schedule(ds_events *e, uint32_t i) { ds_eq_set(e->queue, i, ds_ed_pr
 /* Events                                                               */
 /* ------------------------------------------------------------------ */
 
-static inline void advance(ed_disk *d, double t)
-{
-    const double lag = t - d->t;
-    d->x += d->vx * lag;
-    d->y += d->vy * lag;
-    d->t = t;
-}
-
 /* The separation of two centres along one axis, to the nearest image in
  * a periodic box. */
 static inline double nearest(double r, double box, int periodic)
@@ -68,9 +60,13 @@ static inline double nearest(double r, double box, int periodic)
 
 static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t)
 {
+    if (e->growth.rate > 0.0) {
+        ds_ed_collide_growing(tally, e, i, j, t);
+        return;
+    }
     ed_disk *a = &e->disk[i], *b = &e->disk[j];
-    advance(a, t);
-    advance(b, t);
+    ds_ed_advance(a, t);
+    ds_ed_advance(b, t);
     const double rx = nearest(b->x - a->x, e->box_x, e->periodic);
     const double ry = nearest(b->y - a->y, e->box_y, e->periodic);
     const double dvx = b->vx - a->vx, dvy = b->vy - a->vy;
@@ -91,7 +87,7 @@ static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, doubl
 static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, int axis_y)
 {
     ed_disk *d = &e->disk[i];
-    advance(d, t);
+    ds_ed_advance(d, t);
     double *u = axis_y ? &d->y : &d->x, *v = axis_y ? &d->vy : &d->vx;
     /* Snap to the wall line (a mixture's disk: its own): rounding must not
      * let it creep. */
@@ -115,7 +111,7 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
 {
     ed_disk *d = &e->disk[i];
     ds_cells *cells = &e->cells;
-    advance(d, t);
+    ds_ed_advance(d, t);
     ds_cells_remove(cells, ds_cells_index(cells, d->column, d->row), i);
     uint16_t *c = axis_y ? &d->row : &d->column;
     const uint32_t count = axis_y ? cells->ny : cells->nx;
@@ -155,7 +151,7 @@ static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
         if (ds_fetch_note_current(d->partner_changes, e->disk[partner].changes)) {
             collide(tally, e, i, partner, t);
         } else {
-            advance(d, t); /* stale: the partner has changed course */
+            ds_ed_advance(d, t); /* stale: the partner has changed course */
             schedule(e, i);
         }
     }
@@ -189,12 +185,15 @@ static void show_at(ds_disks *disks, const ds_events *e, double t)
 static void rebase(ds_events *e, size_t n, double t)
 {
     for (size_t k = 0; k < n; ++k) {
-        advance(&e->disk[k], t);
+        ds_ed_advance(&e->disk[k], t);
         e->disk[k].t = 0.0;
         e->disk[k].next -= t;
     }
     ds_eq_build(e->queue, 0.0);
     e->epoch += t;
+    e->growth.from -= t;
+    e->growth.stop_time -= t;
+    e->growth.window_start -= t;
 }
 
 static void run(ds_sim *sim, uint64_t steps)
@@ -210,6 +209,10 @@ static void run(ds_sim *sim, uint64_t steps)
             const double t = e->disk[i].next;
             if (!(t < target))
                 break;
+            /* Growing: first the checks that may stop it (and predict
+             * every disk again) before this event. */
+            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t))
+                continue;
             if (e->fetching)
                 ds_fetch_ahead(e);
             handle_event(&sim->tally, e, i, t);
@@ -219,11 +222,22 @@ static void run(ds_sim *sim, uint64_t steps)
             rebase(e, sim->world.n, target);
             target = 0.0;
         }
+        /* Growing: cells wide enough for the next step's contacts, or the
+         * state made again (it then starts at the present time, 0). */
+        if (e->growth.rate > 0.0) {
+            sim->tally.pairs_tested += e->tested;
+            e->tested = 0;
+            if (ds_ed_growth_step_end(sim, target + sim->world.dt) != DS_OK)
+                break; /* no memory: the growth stopped, the state as it was */
+            e = sim->state;
+            target = (double)sim->steps * sim->world.dt - e->epoch;
+        }
     }
     ds_timer_stop(&sim->collision_timer);
     sim->tally.pairs_tested += e->tested;
     e->tested = 0;
     show_at(&sim->disks, e, target);
+    ds_ed_show_radii(sim, e, target);
 }
 
 /* ------------------------------------------------------------------ */
@@ -244,11 +258,12 @@ static size_t bytes(const ds_world *w)
     return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase);
 }
 
-static void destroy(ds_sim *sim)
+void ds_ed_destroy(ds_sim *sim)
 {
     ds_events *e = sim->state;
     if (!e)
         return;
+    free(e->growth.base);
     ds_eq_destroy(e->queue);
     ds_cells_free(&e->cells);
     free(e->disk);
@@ -285,7 +300,7 @@ static ds_status sort_slots_by_cell(ds_disks *disks, const ds_cells *cells)
  * (it sizes its buckets from them). Until then every disk's time is
  * +infinity, so no pair is skipped for its partner's earlier event: the
  * times wait in an array of their own. */
-static ds_status schedule_all(ds_events *e, size_t n)
+ds_status ds_ed_schedule_all(ds_events *e, size_t n)
 {
     double *times = malloc((n ? n : 1) * sizeof *times);
     if (!times)
@@ -321,6 +336,8 @@ ds_status ds_ed_alloc(ds_sim *sim)
      * by then every disk has had several events, so the O(n) rebase is
      * cheap beside them, and times stay below ~10 crossing times. */
     e->rebase_time = fmax(w->box, w->box_y) / w->speed;
+    e->growth.stop_time = INFINITY;
+    e->growth.scale = 1.0;
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
     ds_status st = e->disk ? DS_OK : DS_ERR_NOMEM;
     if (st == DS_OK)
@@ -346,7 +363,7 @@ void ds_ed_start(ds_events *e, double now)
 /* The records are copied from the disk arrays in slot order, once the
  * slots are sorted by cell: record k is slot k's disk, which show_at
  * copies back. */
-static ds_status create(ds_sim *sim)
+ds_status ds_ed_create(ds_sim *sim)
 {
     const size_t n = sim->world.n;
     ds_status st = ds_ed_alloc(sim);
@@ -371,7 +388,7 @@ static ds_status create(ds_sim *sim)
         d->next = INFINITY;
         ds_cells_add(&e->cells, ds_cells_index(&e->cells, d->column, d->row), (uint32_t)k);
     }
-    st = schedule_all(e, n);
+    st = ds_ed_schedule_all(e, n);
     if (st == DS_OK)
         ds_ed_start(e, 0.0);
     return st;
@@ -419,6 +436,9 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     ds_events *e = sim->state;
     ds_cells *cells = &e->cells;
     const double now = now_of(sim);
+    /* Growing: the radii of now, from which the growth goes on. */
+    if (e->growth.rate > 0.0)
+        ds_ed_growth_go_on(e, sim->world.n, now);
     const uint32_t column = ds_cells_column(cells, nd.x), row = ds_cells_row(cells, nd.y);
     /* Refuse an overlap before changing anything. */
     ds_ed_stencil_cells st;
@@ -481,10 +501,13 @@ const ds_integrator_ops ds_event_driven_ops = {
     .choose = choose,
     .check = check,
     .bytes = bytes,
-    .create = create,
-    .destroy = destroy,
+    .create = ds_ed_create,
+    .destroy = ds_ed_destroy,
     .run = run,
     .set = set,
     .save = ds_ed_save,
     .load = ds_ed_load,
+    .set_growth = ds_ed_set_growth,
+    .scale_velocities = ds_ed_scale_velocities,
+    .growth_state = ds_ed_growth_state,
 };

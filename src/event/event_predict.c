@@ -360,8 +360,81 @@ static void gather_cell(predictor *pr, const ds_cells *cells, uint32_t cell, uin
     }
 }
 
+/* The time disk d (at time now) and disk p (at its own time, its centre
+ * shifted by (sx, sy)) come into contact while their contact distance
+ * grows, s0 (1 + rate (t - from)) at time t, or +infinity. With r the
+ * separation at now, v the relative velocity, sigma the contact distance
+ * and a = s0 rate its growth speed: |r + v tau| = sigma + a tau, the
+ * quadratic (v^2 - a^2) tau^2 + 2 (r.v - sigma a) tau + r^2 - sigma^2 = 0
+ * (b, c as for fixed radii with b taken in the growing frame). Already in
+ * contact and closing in that frame (b < 0): now. Faster growth than
+ * approach (v^2 < a^2) always meets. The root in the form that does not
+ * cancel, as pair_time. */
+static double growing_pair_time(const ed_disk *d, const ed_disk *p, double now, double sx,
+                                double sy, double s0, const ds_growth *g)
+{
+    const double lag = now - p->t;
+    const double rx = p->x + p->vx * lag + sx - d->x, ry = p->y + p->vy * lag + sy - d->y;
+    const double vx = p->vx - d->vx, vy = p->vy - d->vy;
+    const double sigma = s0 * (1.0 + g->rate * (now - g->from)), a = s0 * g->rate;
+    const double b = rx * vx + ry * vy - sigma * a;
+    const double c = rx * rx + ry * ry - sigma * sigma;
+    const double quad = vx * vx + vy * vy - a * a;
+    if (c <= 0.0)
+        return b < 0.0 ? now : INFINITY;
+    const double disc = b * b - quad * c;
+    if (quad > 0.0 && !(b < 0.0 && disc > 0.0))
+        return INFINITY;
+    const double den = sqrt(disc > 0.0 ? disc : 0.0) - b;
+    return den > 0.0 ? now + c / den : INFINITY;
+}
+
+/* ds_ed_predict with growing radii (periodic: cell crossings only), in
+ * plain C: the cells around the disk, their slots and overflow lists. */
+double ds_ed_predict_growing(ds_events *e, uint32_t i)
+{
+    ed_disk *const d = &e->disk[i];
+    const ds_cells *cells = &e->cells;
+    const double now = d->t;
+    double best = INFINITY;
+    uint32_t kind = EV_NONE, partner_changes = 0;
+    boundary_event(e, d, i, now, &best, &kind);
+    ds_ed_stencil_cells st;
+    ds_ed_stencil(e, d->column, d->row, &st);
+    uint64_t tested = 0;
+    for (uint32_t c = 0; c < st.count; ++c) {
+        const uint32_t *slot = ds_cells_slots(cells, st.cell[c]);
+        for (int j = 0; j < DS_CELL_SLOTS + 1; ++j) {
+            /* The four slots, then the overflow list behind them. */
+            uint32_t k = j < DS_CELL_SLOTS ? slot[j]
+                         : slot[DS_CELL_SLOTS - 1] != cells->empty
+                             ? ds_cells_overflow(cells, st.cell[c])
+                             : cells->empty;
+            for (; k != cells->empty; k = j < DS_CELL_SLOTS ? cells->empty : cells->next[k]) {
+                if (k == i)
+                    continue;
+                ++tested;
+                const double t = growing_pair_time(d, &e->disk[k], now, st.sx[c], st.sy[c],
+                                                   e->radius[i] + e->radius[k], &e->growth);
+                if (t < best && t <= e->disk[k].next) {
+                    best = t;
+                    kind = k;
+                    partner_changes = e->disk[k].changes;
+                }
+            }
+        }
+    }
+    e->tested += tested;
+    d->partner = kind;
+    const ed_disk *p = &e->disk[kind < cells->empty ? kind : i];
+    d->partner_changes = ds_fetch_note(partner_changes, d->column, d->row, p->column, p->row);
+    return best;
+}
+
 double ds_ed_predict(ds_events *e, uint32_t i)
 {
+    if (e->growth.rate > 0.0)
+        return ds_ed_predict_growing(e, i);
     ed_disk *const d = &e->disk[i];
     const ds_cells *cells = &e->cells;
     const uint32_t empty = cells->empty;

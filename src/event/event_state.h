@@ -43,6 +43,30 @@ typedef struct ed_disk {
  * access, and the fetching ahead asks for one line per disk. */
 typedef char ds_ed_disk_is_one_line[sizeof(ed_disk) == 64 ? 1 : -1];
 
+/* Growth (Lubachevsky-Stillinger, event_growth.c): every radius grows in
+ * proportion, r_i(t) = base_i (1 + rate (t - from)), so a pair's contact
+ * distance is linear in time, (base_i + base_j) (1 + rate (t - from)).
+ * Each restart takes base to its time and divides rate by the factor, so
+ * the radii stay linear in time across restarts: dr_i/dt = r_i(start)
+ * rate scale, r_i(start) the radius when growth was asked for. */
+typedef struct ds_growth {
+    double rate;      /* per unit time, relative to base; 0: not growing */
+    double asked;     /* the rate asked for, relative to the radii it was asked at */
+    double scale;     /* base over the radii at the ask: rate scale is the speed */
+    double from;      /* the integrator time base[] holds at */
+    double stop_time; /* integrator time the area fraction reaches its target, or INFINITY */
+    double until_eta; /* the target area fraction, or 0 */
+    double until_z;   /* growth stops once Z passes this */
+    double *base;     /* radii at `from`, by record; NULL if growth was never asked for */
+    /* The kinetic energy as growth's collisions add to it, the internal
+     * part's degrees of freedom, and a window of collisions over which Z
+     * is watched. */
+    double kinetic, momentum_energy, kinetic_target;
+    uint64_t window;
+    double window_start, window_virial;
+    int stopped; /* why it stopped: 0 still growing or never, 1 eta, 2 Z */
+} ds_growth;
+
 struct ds_events {
     ed_disk *disk; /* n, 64-byte aligned */
     ds_cells cells;
@@ -58,6 +82,7 @@ struct ds_events {
      * slot k is record k), or NULL for one radius (lo_x, ... and sigma2
      * above) and mass 1. */
     const double *radius, *mass;
+    ds_growth growth;
 };
 typedef struct ds_events ds_events;
 
@@ -90,6 +115,39 @@ static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
  * the calendar from the records' times, at integrator time now. */
 ds_status ds_ed_alloc(ds_sim *sim);
 void ds_ed_start(ds_events *e, double now);
+
+static inline void ds_ed_advance(ed_disk *d, double t)
+{
+    const double lag = t - d->t;
+    d->x += d->vx * lag;
+    d->y += d->vy * lag;
+    d->t = t;
+}
+
+/* Creating and freeing the state, and predicting every disk afresh
+ * (event_driven.c): what a restart at one instant needs. */
+ds_status ds_ed_create(ds_sim *sim);
+void ds_ed_destroy(ds_sim *sim);
+ds_status ds_ed_schedule_all(ds_events *e, size_t n);
+
+/* Growth (event_growth.c). A disk's next event with growing radii; the
+ * collision of a growing pair; every disk taken to integrator time t and
+ * predicted again there, growth going on at speed (relative to the radii
+ * it was asked at; 0: stopped), or as it was going (go_on); the checks
+ * before each event (the target area fraction, Z) and at each step's end
+ * (cells wide enough for the next step), which may restart it; the table's
+ * set_growth and scale_velocities. */
+double ds_ed_predict_growing(ds_events *e, uint32_t i);
+void ds_ed_collide_growing(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t);
+void ds_ed_restart_at(ds_events *e, size_t n, double t, double speed);
+void ds_ed_growth_go_on(ds_events *e, size_t n, double t);
+int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t);
+void ds_ed_growth_after_collision(ds_sim *sim, ds_events *e, double t);
+ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next);
+void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t);
+ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
+ds_status ds_ed_scale_velocities(ds_sim *sim, double factor);
+int ds_ed_growth_state(const ds_sim *sim);
 
 /* A checkpoint of the integrator's state (event_checkpoint.c): the
  * table's save and load. */

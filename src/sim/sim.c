@@ -177,6 +177,31 @@ double ds_area_fraction(const ds_sim *sim)
     return sim ? sim->world.covered / (sim->world.box * sim->world.box_y) : 0.0;
 }
 
+ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until_z)
+{
+    if (!sim || !sim->integrator->set_growth || !(rate >= 0.0) || !isfinite(rate) ||
+        !(until_eta >= 0.0 && until_eta < 1.0) ||
+        (until_eta > 0.0 && until_eta <= ds_area_fraction(sim)) ||
+        !(until_z == 0.0 || (until_z > 1.0 && until_z <= 1e9)))
+        return DS_ERR_ARG;
+    return sim->integrator->set_growth(sim, rate, until_eta,
+                                       until_z == 0.0 ? DS_JAMMED_Z : until_z);
+}
+
+ds_growth_state ds_growth_state_of(const ds_sim *sim)
+{
+    return sim && sim->integrator->growth_state
+               ? (ds_growth_state)sim->integrator->growth_state(sim)
+               : DS_GROWTH_NONE;
+}
+
+ds_status ds_scale_velocities(ds_sim *sim, double factor)
+{
+    if (!sim || !(factor > 0.0) || !isfinite(factor))
+        return DS_ERR_ARG;
+    return sim->integrator->scale_velocities(sim, factor);
+}
+
 double ds_collision_seconds(const ds_sim *sim)
 {
     return sim ? ds_timer_seconds(&sim->collision_timer) : 0.0;

@@ -132,6 +132,16 @@ static void destroy(ds_sim *sim)
     sim->state = NULL;
 }
 
+static ds_status scale_velocities(ds_sim *sim, double factor)
+{
+    ds_disks *d = &sim->disks;
+    for (size_t k = 0; k < d->n; ++k) {
+        d->vx[k] *= factor;
+        d->vy[k] *= factor;
+    }
+    return DS_OK;
+}
+
 static void save(const ds_sim *sim, ds_writer *w) { ds_bp_save(sim->state, w); }
 
 static ds_status load(ds_sim *sim, ds_reader *r, ds_state_error *err)
@@ -169,4 +179,7 @@ const ds_integrator_ops ds_time_step_ops = {
     .set = set,
     .save = save,
     .load = load,
+    .set_growth = NULL, /* radii grow only with exact contact times */
+    .scale_velocities = scale_velocities,
+    .growth_state = NULL,
 };

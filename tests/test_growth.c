@@ -1,0 +1,276 @@
+/* SPDX-License-Identifier: MIT */
+/* Growth (Lubachevsky-Stillinger) and the contacts of a packing: two
+ * growing disks meet when the analytic contact time says and leave at
+ * twice the growth speed; a mixture compressed to 0.75 never overlaps,
+ * keeps its radius ratio and stops at the target exactly; a compression
+ * to jamming stops at Z, stable, near the jamming density of the 1:1.4
+ * mixture with an isostatic contact number; a growing run saved and
+ * loaded goes on bit for bit; contacts and rattlers of lattices and a
+ * small cluster are counted exactly. */
+#include "test_util.h"
+
+#define PI 3.14159265358979323846
+
+/* Two disks of radius 5 at rest 30 apart in a periodic box 1000 wide,
+ * growing at rate 0.1: the contact distance 10 (1 + 0.1 t) reaches 30 at
+ * t = 20, and the pair then parts at twice the contact distance's growth
+ * speed, a = 10 x 0.1 = 1 (each disk at 1, equal masses): in the frame of
+ * the receding surfaces the pair arrives at -a and leaves at +a. */
+static void test_two_growing_disks_meet_on_time_and_part_at_twice_the_growth_speed(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(2, 5.0);
+    p.boundary = DS_PERIODIC;
+    p.integrator = DS_EVENT_DRIVEN;
+    p.dt = 0.25;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    ds_disk d[2] = {{500.0, 500.0, 0.0, 0.0}, {530.0, 500.0, 0.0, 0.0}};
+    assert_int_equal(ds_set_all(sim, d, NULL), DS_OK);
+    assert_int_equal(ds_set_growth(sim, 0.1, 0.0, 0.0), DS_OK);
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWING);
+    ds_run(sim, 79); /* t = 19.75: not yet */
+    assert_int_equal(ds_collision_count(sim), 0);
+    assert_true(fabs(ds_radius_of(sim, 0) - 5.0 * (1.0 + 0.1 * 19.75)) < 1e-12);
+    ds_run(sim, 2); /* t = 20.25 */
+    assert_int_equal(ds_collision_count(sim), 1);
+    const ds_disk a = ds_get(sim, 0), b = ds_get(sim, 1);
+    assert_true(fabs(a.vx + 1.0) < 1e-12 && fabs(b.vx - 1.0) < 1e-12);
+    assert_true(fabs(a.vy) < 1e-12 && fabs(b.vy) < 1e-12);
+    /* At t = 20.25 the centres are 30 + 2 x 0.25 apart, the contact
+     * distance 10 (1 + 2.025) = 30.25: the gap opens at a. */
+    assert_true(fabs((b.x - a.x) - 30.5) < 1e-9);
+    ds_destroy(sim);
+}
+
+static ds_sim *mixture(size_t n, double eta, uint64_t seed)
+{
+    const double r = sqrt(eta * 1e6 / (PI * (double)n * (1.0 + 1.96) / 2.0));
+    ds_params p = ds_default_params(n, r);
+    p.boundary = DS_PERIODIC;
+    p.integrator = DS_EVENT_DRIVEN;
+    p.seed = seed;
+    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, 1.4 * r, 0.0}};
+    ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create_mixture(&p, &mix, &sim), DS_OK);
+    return sim;
+}
+
+/* The closest pair relative to contact (brute force, nearest image). */
+static double closest_gap(const ds_sim *sim)
+{
+    const size_t n = ds_count(sim);
+    ds_disk *d = malloc(n * sizeof *d);
+    double *r = malloc(n * sizeof *r);
+    assert_non_null(d);
+    assert_non_null(r);
+    assert_int_equal(ds_get_all(sim, d), DS_OK);
+    assert_int_equal(ds_get_radii(sim, r, NULL), DS_OK);
+    double worst = INFINITY;
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j) {
+            double dx = d[j].x - d[i].x, dy = d[j].y - d[i].y;
+            dx -= ds_box(sim) * round(dx / ds_box(sim));
+            dy -= ds_box_y(sim) * round(dy / ds_box_y(sim));
+            worst = fmin(worst, sqrt(dx * dx + dy * dy) / (r[i] + r[j]) - 1.0);
+        }
+    free(d);
+    free(r);
+    return worst;
+}
+
+/* From 0.5 to 0.75 at rate 0.02 (about 0.005 of a diameter per time
+ * unit at the speed of 100), the heat taken out as the run goes: after
+ * every step no pair is closer than contact (rounding: 1e-12 of a
+ * diameter), the time only goes forward, the radii grow linearly in time,
+ * r0 (1 + rate t), through every window's restart and every new state
+ * (rounding: 1e-16 per restart, a few thousand of them), keep their
+ * ratio, and the growth stops at 0.75 to rounding. */
+static void test_a_mixture_grows_to_its_target_without_overlap(void **state)
+{
+    (void)state;
+    const size_t n = quick_mode() ? 64 : 256;
+    ds_sim *sim = mixture(n, 0.5, 3);
+    const double e0 = ds_kinetic_energy(sim), r0 = ds_radius_of(sim, 0);
+    const double rate = 0.02 * 100.0 / (2.0 * ds_radius(sim));
+    assert_int_equal(ds_set_growth(sim, rate, 0.75, 0.0), DS_OK);
+    double t = 0.0;
+    int steps = 0;
+    while (ds_growth_state_of(sim) == DS_GROWING && steps < 200000) {
+        ds_step(sim);
+        ++steps;
+        assert_true(ds_time(sim) > t);
+        t = ds_time(sim);
+        assert_true(closest_gap(sim) > -1e-12);
+        if (ds_growth_state_of(sim) == DS_GROWING)
+            assert_true(fabs(ds_radius_of(sim, 0) / (r0 * (1.0 + rate * t)) - 1.0) < 1e-12);
+    }
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_REACHED_ETA);
+    assert_true(fabs(ds_area_fraction(sim) - 0.75) < 1e-12);
+    assert_true(fabs(ds_radius_of(sim, n - 1) / ds_radius_of(sim, 0) - 1.4) < 1e-12);
+    /* The heat out: within the last window's growth of the start. */
+    assert_true(fabs(ds_kinetic_energy(sim) / e0 - 1.0) < 0.05);
+    /* Then it runs as any mixture, without overlap. */
+    ds_run(sim, 100);
+    assert_true(closest_gap(sim) > -1e-12);
+    ds_destroy(sim);
+}
+
+/* Compressed to jamming (Z past 10^6): the growth stops, the packing
+ * holds (no overlap), its area fraction is that of the 1:1.4 mixture's
+ * jamming (O'Hern et al. 2003: 0.84; 0.80 to 0.87 for one small packing),
+ * and its contact number, rattlers removed, is isostatic: 2 d = 4 less
+ * O(1/N), within 5%. */
+static void test_a_compression_to_jamming_stops_with_an_isostatic_packing(void **state)
+{
+    (void)state;
+    if (quick_mode())
+        skip(); /* millions of collisions: not under valgrind */
+    ds_sim *sim = mixture(256, 0.5, 7);
+    assert_int_equal(ds_set_growth(sim, 0.01 * 100.0 / (2.0 * ds_radius(sim)), 0.0, 1e6), DS_OK);
+    int steps = 0;
+    while (ds_growth_state_of(sim) == DS_GROWING && steps < 1000000) {
+        ds_run(sim, 10);
+        steps += 10;
+    }
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_JAMMED);
+    const double eta = ds_area_fraction(sim);
+    assert_true(eta > 0.80 && eta < 0.87);
+    assert_true(closest_gap(sim) > -1e-12);
+    ds_contacts c;
+    assert_int_equal(ds_count_contacts(sim, 1e-4, &c), DS_OK);
+    print_message("jammed at %.5f, %zu rattlers, %.4f contacts per disk\n", eta, c.rattlers,
+                  c.per_disk);
+    assert_true(fabs(c.per_disk - 4.0) < 0.2);
+    assert_true(c.rattler_fraction < 0.2);
+    ds_destroy(sim);
+}
+
+/* A growing run saved and loaded goes on to the bit, the thermostat's
+ * windows and the growth's clock and all. */
+static void test_a_growing_run_saved_and_loaded_goes_on_bit_for_bit(void **state)
+{
+    (void)state;
+    ds_sim *a = mixture(200, 0.5, 5);
+    assert_int_equal(ds_set_growth(a, 0.5, 0.7, 0.0), DS_OK);
+    ds_run(a, 30);
+    const size_t len = ds_state_size(a);
+    uint8_t *buf = malloc(len);
+    assert_non_null(buf);
+    assert_int_equal(ds_format_state(a, buf, len, NULL), DS_OK);
+    ds_sim *b = NULL;
+    assert_int_equal(ds_parse_state(buf, len, &b, NULL), DS_OK);
+    free(buf);
+    ds_run(a, 300);
+    ds_run(b, 300);
+    ds_disk da[200], db[200];
+    double ra[200], rb[200];
+    assert_int_equal(ds_get_all(a, da), DS_OK);
+    assert_int_equal(ds_get_all(b, db), DS_OK);
+    assert_int_equal(ds_get_radii(a, ra, NULL), DS_OK);
+    assert_int_equal(ds_get_radii(b, rb, NULL), DS_OK);
+    assert_memory_equal(da, db, sizeof da);
+    assert_memory_equal(ra, rb, sizeof ra);
+    assert_int_equal(ds_collision_count(a), ds_collision_count(b));
+    assert_int_equal(ds_growth_state_of(a), ds_growth_state_of(b));
+    ds_destroy(a);
+    ds_destroy(b);
+}
+
+static void test_growth_is_refused_where_it_cannot_run(void **state)
+{
+    (void)state;
+    ds_sim *walls = test_create(10, 5.0, 1, DS_AUTO); /* the time step, walls */
+    assert_int_equal(ds_set_growth(walls, 0.1, 0.0, 0.0), DS_ERR_ARG);
+    ds_destroy(walls);
+    ds_params p = ds_default_params(10, 5.0);
+    p.integrator = DS_EVENT_DRIVEN;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_set_growth(sim, 0.1, 0.0, 0.0), DS_ERR_ARG); /* walls */
+    ds_destroy(sim);
+    p.boundary = DS_PERIODIC;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_set_growth(sim, -1.0, 0.0, 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_set_growth(sim, NAN, 0.0, 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_set_growth(sim, 0.1, 1.5, 0.0), DS_ERR_ARG);
+    /* A target already passed: the growth would have to run backwards. */
+    assert_int_equal(ds_set_growth(sim, 0.1, 0.5 * ds_area_fraction(sim), 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_set_growth(sim, 0.1, ds_area_fraction(sim), 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_set_growth(sim, 0.1, 0.0, 0.5), DS_ERR_ARG);
+    assert_int_equal(ds_set_growth(NULL, 0.1, 0.0, 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_scale_velocities(sim, 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_NONE);
+    ds_destroy(sim);
+}
+
+/* ------------------------------------------------------------------ */
+/* Contacts                                                             */
+/* ------------------------------------------------------------------ */
+
+/* 64 disks on the 8 x 8 triangular lattice of a periodic box of aspect
+ * sqrt(3)/2, their diameter 1e-6 short of the spacing: six contacts each
+ * within a gap of 1e-5, none within 1e-7. */
+static void test_a_lattice_has_its_coordination_number(void **state)
+{
+    (void)state;
+    const double spacing = 1000.0 / 8.0;
+    ds_params p = ds_default_params(64, 0.5 * spacing / (1.0 + 1e-6));
+    p.boundary = DS_PERIODIC;
+    p.placement = DS_LATTICE;
+    p.box_y = 1000.0 * sqrt(3.0) / 2.0;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    ds_contacts c;
+    assert_int_equal(ds_count_contacts(sim, 1e-5, &c), DS_OK);
+    assert_int_equal(c.pairs, 3 * 64);
+    assert_int_equal(c.rattlers, 0);
+    assert_true(c.per_disk == 6.0);
+    assert_int_equal(ds_count_contacts(sim, 1e-7, &c), DS_OK);
+    assert_int_equal(c.pairs, 0);
+    assert_int_equal(c.rattlers, 64);
+    assert_true(c.rattler_fraction == 1.0);
+    assert_int_equal(ds_count_contacts(sim, 1.5, &c), DS_ERR_ARG);
+    assert_int_equal(ds_count_contacts(NULL, 0.1, &c), DS_ERR_ARG);
+    ds_destroy(sim);
+}
+
+/* A rhombus of four touching disks, two triangles on one edge: the tips
+ * have two contacts each, the edge's disks three. Taking the tips away
+ * leaves the edge's disks with two: they go too, and nothing is left. */
+static void test_rattlers_are_removed_until_none_is_left(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(4, 10.0);
+    p.boundary = DS_PERIODIC;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    /* Centres 20 = 2R apart along every edge: in contact. */
+    const double h = 10.0 * sqrt(3.0);
+    const ds_disk d[4] = {{500.0, 500.0 - h, 0.0, 0.0},
+                          {490.0, 500.0, 0.0, 0.0},
+                          {510.0, 500.0, 0.0, 0.0},
+                          {500.0, 500.0 + h, 0.0, 0.0}};
+    for (int k = 0; k < 4; ++k)
+        assert_int_equal(ds_set(sim, (size_t)k, d[k]), DS_OK);
+    ds_contacts c;
+    assert_int_equal(ds_count_contacts(sim, 1e-6, &c), DS_OK);
+    assert_int_equal(c.rattlers, 4);
+    assert_int_equal(c.pairs, 0);
+    ds_destroy(sim);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_two_growing_disks_meet_on_time_and_part_at_twice_the_growth_speed),
+        cmocka_unit_test(test_a_mixture_grows_to_its_target_without_overlap),
+        cmocka_unit_test(test_a_compression_to_jamming_stops_with_an_isostatic_packing),
+        cmocka_unit_test(test_a_growing_run_saved_and_loaded_goes_on_bit_for_bit),
+        cmocka_unit_test(test_growth_is_refused_where_it_cannot_run),
+        cmocka_unit_test(test_a_lattice_has_its_coordination_number),
+        cmocka_unit_test(test_rattlers_are_removed_until_none_is_left),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
