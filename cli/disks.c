@@ -2,10 +2,17 @@
 /* disks: the command-line front end. Runs the simulation, writes
  * frame_NNNN.txt files crash-safe, prints the seed's timing. All printing
  * and exit codes live in cli/, never in the library (cli.h says which
- * file does what). */
+ * file does what).
+ *
+ * The order is the promise of docs/cli.md: the command line, then every
+ * path, then where the run starts (its checkpoint or frame read and
+ * checked), then the frames of another run, and only then is anything
+ * made: --out, the outputs' temporaries, the disks. A failure up to the
+ * first frame leaves nothing behind. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,7 +41,23 @@ static void progress_clear(const progress *pr)
         fputs("\r\033[K", stderr);
 }
 
-static void stats_row(char **buf, size_t *len, size_t *cap, long frame, const ds_sim *sim)
+/* What a run writes, frame by frame. */
+typedef struct run {
+    const options *o;
+    ds_sim *sim;
+    long first, last; /* the frames this run writes */
+    char *frame_buf, *xyz_buf;
+    size_t frame_cap, xyz_cap;
+    output stats, trajectory;
+    long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
+    progress pr;
+    double sim_seconds, out_seconds;
+} run;
+
+static const char stats_header[] =
+    "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,virial_pressure,psi6\n";
+
+static void stats_row(output *out, long frame, const ds_sim *sim)
 {
     char row[320];
     double px, py;
@@ -44,16 +67,159 @@ static void stats_row(char **buf, size_t *len, size_t *cap, long frame, const ds
                      (unsigned long long)ds_collision_count(sim),
                      (unsigned long long)ds_wall_count(sim), ds_pressure(sim),
                      ds_virial_pressure(sim), ds_psi6(sim));
-    if (*len + (size_t)l + 1 > *cap) {
-        size_t ncap = *cap * 2 + sizeof row;
-        char *grown = realloc(*buf, ncap);
-        if (!grown)
-            die(EXIT_RUN, "out of memory for --stats");
-        *buf = grown;
-        *cap = ncap;
+    output_write(out, row, (size_t)l);
+}
+
+/* The frame file, its trajectory frame and its stats row, with the
+ * signals held: at any moment the three agree. */
+static void emit_frame(run *r, long frame)
+{
+    const options *o = r->o;
+    sigset_t old;
+    hold_signals(&old);
+    char name[32];
+    const char *why = "";
+    size_t len = 0;
+    snprintf(name, sizeof name, "frame_%04ld.txt", frame);
+    ds_format_frame(r->sim, o->velocities, r->frame_buf, r->frame_cap, &len);
+    if (write_file_atomic(o->out_dir, name, r->frame_buf, len, 0, &why) != 0) {
+        progress_clear(&r->pr);
+        die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, why);
     }
-    memcpy(*buf + *len, row, (size_t)l);
-    *len += (size_t)l;
+    if (r->trajectory.f) {
+        ds_format_xyz_frame(r->sim, r->xyz_buf, r->xyz_cap, &len);
+        output_write(&r->trajectory, r->xyz_buf, len);
+    }
+    if (r->stats.f)
+        stats_row(&r->stats, frame, r->sim);
+    keep_created_dirs(); /* --out holds a frame now */
+    release_signals(&old);
+}
+
+static void write_checkpoint(run *r, long frame)
+{
+    checkpoint_write(r->sim, r->o->checkpoint_path);
+    r->checkpoint_frame = frame;
+}
+
+static void close_outputs(run *r)
+{
+    if (r->trajectory.f)
+        output_close(&r->trajectory);
+    if (r->stats.f)
+        output_close(&r->stats);
+}
+
+/* A signal asked the run to stop: the frame it was making is written;
+ * now everything goes into place and the command ends by the signal. */
+static void stop_by_signal(run *r, int sig, long frame)
+{
+    sigset_t old;
+    hold_signals(&old);
+    progress_clear(&r->pr);
+    close_outputs(r);
+    if (r->o->checkpoint_path && r->checkpoint_frame != frame)
+        write_checkpoint(r, frame);
+    if (!r->o->quiet)
+        fprintf(stderr, "disks: stopped by %s after frame %ld%s%s%s\n",
+                sig == SIGINT    ? "SIGINT"
+                : sig == SIGTERM ? "SIGTERM"
+                                 : "SIGHUP",
+                frame, r->o->checkpoint_path ? "; the checkpoint " : "",
+                r->o->checkpoint_path ? r->o->checkpoint_path : "",
+                r->o->checkpoint_path ? " holds it" : "");
+    end_by_signal(sig);
+}
+
+/* Opens --stats and --trajectory (their temporaries) and makes sure the
+ * frames and the checkpoint can be written, before any disk is placed. */
+static void open_outputs(run *r)
+{
+    const options *o = r->o;
+    char name[32];
+    snprintf(name, sizeof name, "frame_%04ld.txt", r->first);
+    int err = probe_dir(o->out_dir, name);
+    if (err)
+        die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, strerror(err));
+    if (o->checkpoint_path)
+        checkpoint_probe(o->checkpoint_path);
+    if (o->trajectory_path)
+        output_open(&r->trajectory, "--trajectory", o->trajectory_path);
+    if (o->stats_path) {
+        output_open(&r->stats, "--stats", o->stats_path);
+        output_write(&r->stats, stats_header, sizeof stats_header - 1);
+    }
+}
+
+static void print_start(const run *r)
+{
+    const options *o = r->o;
+    const ds_sim *sim = r->sim;
+    /* The box is named only when it is not the seed's square with walls. */
+    char box[96] = "", start[PATH_CAP + 128], frames[64];
+    if (ds_boundary_used(sim) != DS_WALLS || ds_box_y(sim) != ds_box(sim))
+        snprintf(box, sizeof box, ", box = %g x %g %s", ds_box(sim), ds_box_y(sim),
+                 ds_boundary_name(ds_boundary_used(sim)));
+    if (o->restart_path)
+        snprintf(start, sizeof start, "restart of %s at frame %ld (t = %g): ", o->restart_path,
+                 r->first - 1, ds_time(sim));
+    else
+        start[0] = '\0';
+    char what[PATH_CAP + 64];
+    if (o->from_path)
+        snprintf(what, sizeof what, "from %s", o->from_path);
+    else if (o->restart_path)
+        snprintf(what, sizeof what, "from the checkpoint");
+    else
+        snprintf(what, sizeof what, "seed = %llu", (unsigned long long)o->seed);
+    if (r->first == 0)
+        snprintf(frames, sizeof frames, "%ld frames", o->frames);
+    else
+        snprintf(frames, sizeof frames, "frames %ld to %ld", r->first, r->last);
+    printf("disks: %sN = %zu, R = %g, %s%s, integrator = %s, broad phase = %s, %s x %llu steps -> "
+           "%s\n",
+           start, ds_count(sim), ds_radius(sim), what, box,
+           ds_integrator_name(ds_integrator_used(sim)), ds_broadphase_name(ds_broadphase_used(sim)),
+           frames, (unsigned long long)o->steps_per_frame, o->out_dir);
+}
+
+static void print_report(const run *r)
+{
+    const ds_sim *sim = r->sim;
+    printf("collision processing time: %.6f s (%s over %llu steps)\n", ds_collision_seconds(sim),
+           ds_integrator_used(sim) == DS_EVENT_DRIVEN
+               ? "predicting and processing collisions, wall turns and cell crossings"
+               : "sorting, pruning, testing and resolving pairs",
+           (unsigned long long)ds_steps(sim));
+    printf("disk-disk collisions: %llu, wall reflections: %llu\n",
+           (unsigned long long)ds_collision_count(sim), (unsigned long long)ds_wall_count(sim));
+    printf("simulation %.3f s, output %.3f s\n", r->sim_seconds, r->out_seconds);
+}
+
+static void run_frames(run *r)
+{
+    const options *o = r->o;
+    frames_begin();
+    for (long k = 0; k < o->frames; ++k) {
+        const long frame = r->first + k;
+        /* Frame 0 is the start; a restart's first frame is one frame on. */
+        if (frame > 0 && (k > 0 || o->restart_path)) {
+            double t0 = ds_now();
+            ds_run(r->sim, o->steps_per_frame);
+            r->sim_seconds += ds_now() - t0;
+        }
+        double t0 = ds_now();
+        emit_frame(r, frame);
+        if (o->checkpoint_every && frame > 0 && frame % o->checkpoint_every == 0 &&
+            frame < r->last && !stop_signal())
+            write_checkpoint(r, frame);
+        r->out_seconds += ds_now() - t0;
+        progress_show(&r->pr, k + 1, o->frames, ds_steps(r->sim));
+        int sig = stop_signal();
+        if (sig)
+            stop_by_signal(r, sig, frame);
+    }
+    progress_clear(&r->pr);
 }
 
 int main(int argc, char **argv)
@@ -64,115 +230,53 @@ int main(int argc, char **argv)
         if (fcntl(fd, F_GETFD) < 0 && open("/dev/null", fd ? O_WRONLY : O_RDONLY) != fd)
             return EXIT_RUN;
     options o = parse_args(argc, argv);
-    ds_params p = ds_default_params(o.n, o.radius);
-    p.seed = o.seed;
-    p.broadphase = o.broadphase;
-    p.integrator = o.integrator;
-    p.placement = o.placement;
-    p.boundary = o.boundary;
-    p.box_y = o.box_y;
-    check_request(&p);
-    char stats_dir[4096], trajectory_dir[4096];
-    const char *stats_base =
-        o.stats_path ? output_split("--stats", o.stats_path, stats_dir, sizeof stats_dir) : NULL;
-    const char *trajectory_base =
-        o.trajectory_path
-            ? output_split("--trajectory", o.trajectory_path, trajectory_dir, sizeof trajectory_dir)
-            : NULL;
-    make_dirs(o.out_dir);
+    catch_signals();
+    check_paths(&o);
 
-    ds_sim *sim = NULL;
-    ds_status st = ds_create(&p, &sim);
-    if (st == DS_ERR_PLACEMENT)
-        die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s", o.n,
-            o.radius, (unsigned long long)o.seed, "try another --seed, or fewer or smaller disks");
-    if (st != DS_OK)
-        die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
-    if (!o.quiet) {
-        /* The box is named only when it is not the seed's square with walls. */
-        char box[96] = "";
-        if (ds_boundary_used(sim) != DS_WALLS || ds_box_y(sim) != ds_box(sim))
-            snprintf(box, sizeof box, ", box = %g x %g %s", ds_box(sim), ds_box_y(sim),
-                     ds_boundary_name(ds_boundary_used(sim)));
-        printf("disks: N = %zu, R = %g, seed = %llu%s, integrator = %s, broad phase = %s, %ld "
-               "frames x %llu steps -> %s\n",
-               o.n, o.radius, (unsigned long long)o.seed, box,
-               ds_integrator_name(ds_integrator_used(sim)),
-               ds_broadphase_name(ds_broadphase_used(sim)), o.frames,
-               (unsigned long long)o.steps_per_frame, o.out_dir);
+    run r;
+    memset(&r, 0, sizeof r);
+    r.o = &o;
+    r.checkpoint_frame = -1;
+    ds_params p = params_of(&o);
+    if (o.restart_path) {
+        r.sim = restart_from(o.restart_path);
+        r.first = restart_frame(&o, r.sim) + 1;
+        check_restart_frame_file(&o, r.sim, r.first - 1);
+    } else if (o.from_path) {
+        r.sim = start_from_frame(&o);
+    } else {
+
+        check_request(&p, NULL);
     }
+    r.last = r.first + o.frames - 1;
+    check_other_runs(&o, r.last);
+
+    make_out_dir(o.out_dir);
+    open_outputs(&r);
+    if (!r.sim)
+        r.sim = create_fresh(&p);
+    remove_other_runs(&o, r.last);
+    r.frame_cap = ds_frame_size(r.sim, o.velocities);
+    r.xyz_cap = o.trajectory_path ? ds_xyz_frame_size(r.sim) : 0;
+    r.frame_buf = malloc(r.frame_cap ? r.frame_cap : 1);
+    r.xyz_buf = malloc(r.xyz_cap ? r.xyz_cap : 1);
+    if (!r.frame_buf || !r.xyz_buf)
+        die(EXIT_RUN, "out of memory for the frame buffers");
+    if (!o.quiet)
+        print_start(&r);
     fflush(stdout);
 
-    size_t cap = ds_frame_size(sim, o.velocities), len = 0;
-    char *buf = malloc(cap ? cap : 1);
-    char *stats = NULL;
-    size_t stats_len = 0, stats_cap = 0;
-    if (!buf)
-        die(EXIT_RUN, "out of memory for the frame buffer");
-    if (o.stats_path) {
-        const char *header = "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,"
-                             "virial_pressure,psi6\n";
-        stats_cap = 4096;
-        stats = malloc(stats_cap);
-        if (!stats)
-            die(EXIT_RUN, "out of memory for --stats");
-        stats_len = strlen(header);
-        memcpy(stats, header, stats_len);
-    }
-
-    trajectory traj = {NULL, NULL, NULL, 0};
-    if (o.trajectory_path)
-        trajectory_open(&traj, o.trajectory_path, trajectory_dir, trajectory_base, sim);
-
-    progress pr = {!o.quiet && isatty(STDERR_FILENO), ds_now()};
-    double sim_seconds = 0.0, out_seconds = 0.0;
-    for (long frame = 0; frame < o.frames; ++frame) {
-        if (frame > 0) {
-            double t0 = ds_now();
-            ds_run(sim, o.steps_per_frame);
-            sim_seconds += ds_now() - t0;
-        }
-        double t0 = ds_now();
-        char name[32];
-        const char *why = "";
-        snprintf(name, sizeof name, "frame_%04ld.txt", frame);
-        ds_format_frame(sim, o.velocities, buf, cap, &len);
-        if (write_file_atomic(o.out_dir, name, buf, len, &why) != 0) {
-            progress_clear(&pr);
-            die(EXIT_RUN, "cannot write %s/%s: %s", o.out_dir, name, why);
-        }
-        if (traj.f)
-            trajectory_append(&traj, sim);
-        if (stats)
-            stats_row(&stats, &stats_len, &stats_cap, frame, sim);
-        out_seconds += ds_now() - t0;
-        progress_show(&pr, frame + 1, o.frames, ds_steps(sim));
-    }
-    progress_clear(&pr);
-    if (traj.f)
-        trajectory_close(&traj);
-    if (stats) {
-        const char *why = "";
-        int failed = is_special_file(o.stats_path)
-                         ? write_file_in_place(o.stats_path, stats, stats_len, &why)
-                         : write_file_atomic(stats_dir, stats_base, stats, stats_len, &why);
-        if (failed)
-            die(EXIT_RUN, "cannot write %s: %s", o.stats_path, why);
-    }
-    if (!o.quiet) {
-        printf("collision processing time: %.6f s (%s over %llu steps)\n",
-               ds_collision_seconds(sim),
-               ds_integrator_used(sim) == DS_EVENT_DRIVEN
-                   ? "predicting and processing collisions, wall turns and cell crossings"
-                   : "sorting, pruning, testing and resolving pairs",
-               (unsigned long long)ds_steps(sim));
-        printf("disk-disk collisions: %llu, wall reflections: %llu\n",
-               (unsigned long long)ds_collision_count(sim), (unsigned long long)ds_wall_count(sim));
-        printf("simulation %.3f s, output %.3f s\n", sim_seconds, out_seconds);
-    }
-    free(buf);
-    free(stats);
-    ds_destroy(sim);
+    r.pr.enabled = !o.quiet && isatty(STDERR_FILENO);
+    r.pr.started = ds_now();
+    run_frames(&r);
+    close_outputs(&r);
+    if (o.checkpoint_path && r.checkpoint_frame != r.last)
+        write_checkpoint(&r, r.last);
+    if (!o.quiet)
+        print_report(&r);
+    free(r.frame_buf);
+    free(r.xyz_buf);
+    ds_destroy(r.sim);
     /* The timing report is output too: `disks 400 5 > /dev/full` must not
      * succeed silently with it lost. */
     int lost = ferror(stdout);

@@ -13,6 +13,8 @@
 
 static const char *const usage_text =
     "usage: disks N R [options]\n"
+    "       disks --restart FILE [options]\n"
+    "       disks [N R] --from FRAME [options]\n"
     "Simulates N hard disks of radius R in the box [0,1000]^2 and writes\n"
     "frame_0000.txt, frame_0001.txt, ... with one line \"x y R\" per disk.\n"
     "\n"
@@ -21,9 +23,18 @@ static const char *const usage_text =
     "  --frames F           frames to write, 1..10000 (default 500)\n"
     "  --steps-per-frame K  steps of dt = 0.001 between frames (default 100)\n"
     "  --out DIR            directory for the frames, created if missing (default .)\n"
+    "  --overwrite          remove the frames of another run from DIR instead of\n"
+    "                       refusing to mix them with this run's\n"
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
     "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
+    "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
+    "                       stopped by a signal (INT, TERM, HUP)\n"
+    "  --checkpoint-every K also every K frames\n"
+    "  --restart FILE       continue the run a checkpoint saved: N, R, the box, the\n"
+    "                       integrator and the frame number come from FILE\n"
+    "  --from FRAME         start at time 0 from the disks of FRAME, a frame written\n"
+    "                       with --velocities (N and R from it)\n"
     "  --lattice            start on a triangular lattice instead of at random\n"
     "  --periodic           periodic box (nearest image) instead of walls\n"
     "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
@@ -35,7 +46,8 @@ static const char *const usage_text =
     "  -h, --help           show this help and exit\n"
     "  --version            show the version and exit\n"
     "\n"
-    "exit status: 0 success, 1 run-time error (placement, I/O), 2 usage error\n";
+    "exit status: 0 success, 1 run-time error (placement, I/O, a file that does not\n"
+    "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n";
 
 /* strtod also reads hexadecimal ("0x10"), "nan" and "infinity": a number
  * on our command line is decimal, so anything else is refused up front. */
@@ -135,6 +147,39 @@ static ds_integrator integrator_arg(const char *s)
     return DS_TIME_STEP;
 }
 
+/* A file name given to an option. */
+static const char *file_arg(const char *option, const char *value)
+{
+    if (!*value)
+        die(EXIT_USAGE, "%s needs a file name", option);
+    return value;
+}
+
+/* The combinations the command refuses: a checkpoint holds the system
+ * (N, R, the box, the integrator and its broad phase, and the state the
+ * seed and placement made), so --restart takes none of them; a frame holds
+ * every position and velocity, so --from takes no seed or placement. */
+static void check_combination(const options *o, int npos, const char *system_option,
+                              const char *placement_option)
+{
+    if (o->restart_path && o->from_path)
+        die(EXIT_USAGE, "--restart and --from are two ways to start a run: give one");
+    if (o->restart_path && npos > 0)
+        die(EXIT_USAGE, "--restart takes N and R from the checkpoint: give no N and R");
+    if (o->restart_path && system_option)
+        die(EXIT_USAGE, "%s cannot be given with --restart: the checkpoint holds the system",
+            system_option);
+    if (o->from_path && placement_option)
+        die(EXIT_USAGE,
+            "%s cannot be given with --from: the frame gives every position and velocity",
+            placement_option);
+    if (o->checkpoint_every && !o->checkpoint_path)
+        die(EXIT_USAGE, "--checkpoint-every needs --checkpoint FILE");
+    if (npos == 1 || (npos == 0 && !o->restart_path && !o->from_path))
+        die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
+            npos == 0 ? "N and R" : "R");
+}
+
 options parse_args(int argc, char **argv)
 {
     options o;
@@ -147,6 +192,9 @@ options parse_args(int argc, char **argv)
 
     const char *positional[2];
     int npos = 0;
+    /* The first option given that describes the system, and the first
+     * that describes the placement (see check_combination). */
+    const char *system_option = NULL, *placement_option = NULL;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -165,12 +213,22 @@ options parse_args(int argc, char **argv)
             o.velocities = 1;
             continue;
         }
+        if (strcmp(a, "--overwrite") == 0) {
+            o.overwrite = 1;
+            continue;
+        }
         if (strcmp(a, "--lattice") == 0) {
             o.placement = DS_LATTICE;
+            if (!placement_option)
+                placement_option = "--lattice";
+            if (!system_option)
+                system_option = "--lattice";
             continue;
         }
         if (strcmp(a, "--periodic") == 0) {
             o.boundary = DS_PERIODIC;
+            if (!system_option)
+                system_option = "--periodic";
             continue;
         }
         if (a[0] == '-' && a[1] == '-') {
@@ -178,52 +236,85 @@ options parse_args(int argc, char **argv)
             const char *eq = strchr(a, '=');
             size_t len = eq ? (size_t)(eq - a) : strlen(a);
             const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
-            const char *names[] = {"--seed",       "--frames",     "--steps-per-frame",
-                                   "--out",        "--stats",      "--broadphase",
-                                   "--integrator", "--trajectory", "--box-y"};
+            enum {
+                SEED,
+                FRAMES,
+                STEPS,
+                OUT,
+                STATS,
+                BROADPHASE,
+                INTEGRATOR,
+                TRAJECTORY,
+                BOX_Y,
+                CHECKPOINT,
+                CHECKPOINT_EVERY,
+                RESTART,
+                FROM
+            };
+            /* In the order of the enum; SEED .. BOX_Y with a system flag. */
+            static const struct {
+                const char *name;
+                int system;
+            } names[] = {
+                {"--seed", 1},  {"--frames", 0},     {"--steps-per-frame", 0},  {"--out", 0},
+                {"--stats", 0}, {"--broadphase", 1}, {"--integrator", 1},       {"--trajectory", 0},
+                {"--box-y", 1}, {"--checkpoint", 0}, {"--checkpoint-every", 0}, {"--restart", 0},
+                {"--from", 0}};
             int which = -1;
             for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
-                if (strlen(names[k]) == len && strncmp(a, names[k], len) == 0)
+                if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
                     which = k;
             if (which < 0)
                 die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, a);
             if (!value)
-                die(EXIT_USAGE, "%s needs a value (try --help)", names[which]);
+                die(EXIT_USAGE, "%s needs a value (try --help)", names[which].name);
             if (!eq)
                 ++i;
+            if (names[which].system && !system_option)
+                system_option = names[which].name;
             switch (which) {
-            case 0:
+            case SEED:
                 o.seed = count_arg("--seed", value, 0, UINT64_MAX);
+                if (!placement_option)
+                    placement_option = "--seed";
                 break;
-            case 1:
+            case FRAMES:
                 o.frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
                 break;
-            case 2:
+            case STEPS:
                 o.steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
                 break;
-            case 3:
+            case OUT:
                 if (!*value)
                     die(EXIT_USAGE, "--out needs a directory name");
                 o.out_dir = value;
                 break;
-            case 4:
-                if (!*value)
-                    die(EXIT_USAGE, "--stats needs a file name");
-                o.stats_path = value;
+            case STATS:
+                o.stats_path = file_arg("--stats", value);
                 break;
-            case 5:
+            case BROADPHASE:
                 o.broadphase = broadphase_arg(value);
                 break;
-            case 6:
+            case INTEGRATOR:
                 o.integrator = integrator_arg(value);
                 break;
-            case 7:
-                if (!*value)
-                    die(EXIT_USAGE, "--trajectory needs a file name");
-                o.trajectory_path = value;
+            case TRAJECTORY:
+                o.trajectory_path = file_arg("--trajectory", value);
+                break;
+            case BOX_Y:
+                o.box_y = box_y_arg(value);
+                break;
+            case CHECKPOINT:
+                o.checkpoint_path = file_arg("--checkpoint", value);
+                break;
+            case CHECKPOINT_EVERY:
+                o.checkpoint_every = (long)count_arg("--checkpoint-every", value, 1, MAX_FRAMES);
+                break;
+            case RESTART:
+                o.restart_path = file_arg("--restart", value);
                 break;
             default:
-                o.box_y = box_y_arg(value);
+                o.from_path = file_arg("--from", value);
             }
             continue;
         }
@@ -236,10 +327,11 @@ options parse_args(int argc, char **argv)
             die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
         positional[npos++] = a;
     }
-    if (npos < 2)
-        die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
-            npos == 0 ? "N and R" : "R");
-    o.n = (size_t)count_arg("N", positional[0], 1, UINT64_MAX);
-    o.radius = radius_arg(positional[1]);
+    check_combination(&o, npos, system_option, placement_option);
+    if (npos == 2) {
+        o.n = (size_t)count_arg("N", positional[0], 1, UINT64_MAX);
+        o.radius = radius_arg(positional[1]);
+        o.have_n = 1;
+    }
     return o;
 }
