@@ -713,7 +713,8 @@ static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **stat
 /* Starts disks in dir with the given arguments and sends sig once
  * dir/wait_for exists (no timing is asserted: the alarm bounds a stuck
  * run). Returns the wait status. */
-static int start_and_signal(const char *dir, const char *args, const char *wait_for, int sig)
+static int start_and_signal_n(const char *dir, const char *args, const char *wait_for, int sig,
+                              int times)
 {
     char words[1024];
     snprintf(words, sizeof words, "%s", args);
@@ -750,7 +751,11 @@ static int start_and_signal(const char *dir, const char *args, const char *wait_
     while (access(path, F_OK) != 0 && (done = waitpid(pid, &ws, WNOHANG)) == 0)
         nanosleep(&(struct timespec){0, 1000000}, NULL);
     if (done == 0) {
-        kill(pid, sig);
+        for (int k = 0; k < times; ++k) {
+            if (k > 0)
+                nanosleep(&(struct timespec){0, 2000000}, NULL);
+            kill(pid, sig);
+        }
         while ((done = waitpid(pid, &ws, 0)) < 0 && errno == EINTR)
             ;
     }
@@ -764,6 +769,11 @@ static int start_and_signal(const char *dir, const char *args, const char *wait_
                  WIFEXITED(ws) ? WEXITSTATUS(ws) : -1);
     assert_int_equal(WTERMSIG(ws), sig);
     return ws;
+}
+
+static int start_and_signal(const char *dir, const char *args, const char *wait_for, int sig)
+{
+    return start_and_signal_n(dir, args, wait_for, sig, 1);
 }
 
 /* The frames of out/: 0 .. n-1 with none missing, each complete; no
@@ -784,7 +794,6 @@ static long complete_frames(const char *dir)
     }
     for (long k = 0; k < n; ++k) {
         char path[PATH_MAX];
-        frame_name(path, sizeof path, dir, 0);
         snprintf(path, sizeof path, "%s/out/frame_%04ld.txt", dir, k);
         ds_frame frame;
         if (ds_read_frame(path, &frame, NULL) != DS_OK)
@@ -875,6 +884,25 @@ static void test_an_interrupted_run_keeps_its_trajectory_and_writes_its_checkpoi
         interrupt_a_run(SIGTERM);
     }
     interrupt_a_run(SIGHUP);
+}
+
+/* A second Ctrl-C ends the run at once, inside a long frame: the frames
+ * written stay, and the trajectory holds exactly them. (Should the frame
+ * end between the two signals, the first stops the run as above: the same
+ * holds.) */
+static void test_a_second_signal_ends_the_run_at_once_keeping_the_trajectory(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    start_and_signal_n(dir,
+                       "2000 2 --periodic --steps-per-frame 2000 --quiet --frames 10000 --out out "
+                       "--trajectory t.xyz --checkpoint c.ckpt",
+                       "out/frame_0001.txt", SIGINT, 2);
+    long n = complete_frames(dir);
+    assert_true(n >= 2);
+    assert_trajectory_holds_the_frames(dir, n);
+    remove_tree(dir);
 }
 
 /* SIGKILL gives no chance to finish: the checkpoint in place is still a
@@ -1162,6 +1190,7 @@ int main(int argc, char **argv)
     const struct CMUnitTest survive[] = {
         cmocka_unit_test(test_a_restart_writes_the_frames_of_an_uninterrupted_run),
         cmocka_unit_test(test_an_interrupted_run_keeps_its_trajectory_and_writes_its_checkpoint),
+        cmocka_unit_test(test_a_second_signal_ends_the_run_at_once_keeping_the_trajectory),
         cmocka_unit_test(test_a_killed_run_leaves_a_checkpoint_that_restarts),
         cmocka_unit_test(test_a_run_starts_from_a_frame_written_with_velocities),
         cmocka_unit_test(test_a_corrupted_checkpoint_is_refused_with_one_line),
