@@ -105,21 +105,31 @@ typedef enum ds_boundary {
     DS_WALLS = 0, /* hard walls: a centre turns at R from each wall */
     /* Periodic in x and y: a disk leaving at one edge comes back at the
      * opposite one, and pairs interact through their nearest image.
-     * Positions stay in [0, box) x [0, box_y). Needs R < box/4 and
-     * R < box_y/4 (so a pair touches through one image only). */
+     * Positions stay in [0, box) x [0, box_y), however far a step takes a
+     * disk. Needs R < box/4 and R < box_y/4 (so a pair touches through
+     * one image only). */
     DS_PERIODIC
 } ds_boundary;
 
 /* Where the disks start. */
 typedef enum ds_placement {
-    DS_RANDOM = 0, /* random sequential: the seed's, up to area fraction 0.54 */
+    /* Random sequential: the seed's, up to area fraction 0.54. In a
+     * periodic box (with more than one disk) the mean velocity is taken
+     * out and the speeds scaled back to the same kinetic energy,
+     * n speed^2 / 2, so the centre of mass stands still; with walls the
+     * velocities are the seed's. */
+    DS_RANDOM = 0,
     /* A triangular lattice of m rows of c sites (c m >= n, empty sites
      * spread evenly), the (c, m) whose closest sites are farthest apart;
      * it fits without strain, up to close packing (area fraction
      * pi / (2 sqrt 3) = 0.9069), in a periodic box of aspect
      * box_y / box = sqrt(3) m / (2 c). ds_check_params refuses
-     * (DS_ERR_PLACEMENT) a request whose best lattice would overlap. In a
-     * periodic box the total momentum is made zero. */
+     * (DS_ERR_PLACEMENT) a request whose best lattice would overlap, and
+     * for the event-driven integrator one whose closest sites are less than
+     * DS_ROOM_TO_MOVE of a diameter apart beyond contact (at close packing
+     * every disk touches its neighbours, and collisions would cascade
+     * without time ever advancing). In a periodic box (with more than one
+     * disk) the total momentum is made zero, as for DS_RANDOM. */
     DS_LATTICE
 } ds_placement;
 
@@ -133,19 +143,32 @@ typedef enum ds_broadphase {
     DS_CELLS        /* the event-driven integrator's cell grid (event-driven only) */
 } ds_broadphase;
 
+/* The parameters of a simulation. A zeroed struct asks for the defaults
+ * of every field that has one, but its broadphase is DS_SAP (0), which
+ * serves the time step only: start from ds_default_params (DS_AUTO). */
 typedef struct ds_params {
     size_t n;      /* number of disks, >= 1 */
     double radius; /* disk radius: < box/2 and box_y/2 (walls), /4 (periodic) */
     uint64_t seed; /* seed of the placement and direction generator */
-    double box;    /* 0 means 1000 */
-    double speed;  /* 0 means 100  */
-    double dt;     /* 0 means 0.001 */
-    ds_broadphase broadphase;
+    double box;    /* width, in (0, 1e9]; 0 means 1000 */
+    double speed;  /* initial speed, in (0, 1e9]; 0 means 100 */
+    double dt;     /* the step, in (0, 1]; 0 means 0.001 */
+    ds_broadphase broadphase; /* DS_AUTO in ds_default_params; see above */
     ds_integrator integrator; /* DS_TIME_STEP by default */
     ds_boundary boundary;     /* DS_WALLS by default */
     ds_placement placement;   /* DS_RANDOM by default */
-    double box_y;             /* height of the box; 0 means box (square) */
+    double box_y;             /* height of the box, in (0, 1e9]; 0 means box (square) */
 } ds_params;
+
+/* The least room the event-driven integrator takes, as a fraction of a
+ * diameter: between a lattice's closest sites beyond contact, and for a
+ * centre between the walls (box - 2R and box_y - 2R). With less, its
+ * events cascade at one instant (disks in contact on every side) or
+ * follow each other a rounding error apart (a disk in a band a rounding
+ * error wider than itself): a step would not end. ds_check_params refuses
+ * such a request with DS_ERR_PLACEMENT (the lattice) or DS_ERR_ARG (the
+ * radius). */
+#define DS_ROOM_TO_MOVE 1e-6
 
 #define DS_DEFAULT_SEED 20260101u
 
@@ -208,6 +231,67 @@ ds_status ds_memory_needed(const ds_params *params, size_t *bytes);
 /* Creates and places the disks. On success *out owns the simulation. */
 ds_status ds_create(const ds_params *params, ds_sim **out);
 void ds_destroy(ds_sim *sim); /* NULL is allowed */
+
+/* ------------------------------------------------------------------ */
+/* Mixtures: disks of several radii and masses                          */
+/* ------------------------------------------------------------------ */
+
+/* One kind of disk of a mixture. */
+typedef struct ds_species {
+    size_t count;  /* disks of this kind */
+    double radius; /* > 0 */
+    double mass;   /* > 0, or 0 for the mixture's mass rule */
+} ds_species;
+
+/* The mass of a disk whose mass is not given. */
+typedef enum ds_mass_rule {
+    DS_MASS_EQUAL = 0, /* 1, whatever the radius: the seed's rule */
+    DS_MASS_AREA       /* (r / R)^2, R the radius of ds_params: disks of R weigh 1 */
+} ds_mass_rule;
+
+/* A mixture, given as species or disk by disk (one of the two):
+ * - species: kinds[0 .. species) with counts that add up to ds_params.n;
+ *   disks 0 .. count_0 - 1 are of the first kind, and so on;
+ * - per disk: radii[i] and, if masses is not NULL, masses[i], for every
+ *   disk i < n (kinds NULL, species 0).
+ * Each disk then has its own radius and mass: the pair test is the sum of
+ * the two radii, a collision is elastic along the line of centres for the
+ * two masses, walls turn a disk at its own radius. ds_params.radius is the
+ * reference radius R of DS_MASS_AREA (and what ds_radius returns); the
+ * disks' radii come from the mixture. Broad phases prune with the largest
+ * diameter; ds_check_params's limits hold with every radius. Random
+ * placement places the largest disks first (ties in the order of the
+ * disks), each uniformly where its centre may be; the lattice puts the
+ * disks on sites at least the largest diameter apart, in an order drawn
+ * from the seed (not sorted by kind). A mixture of one kind of radius R
+ * and mass 1 is exactly ds_create's simulation. */
+typedef struct ds_mixture {
+    size_t species;           /* kinds, or 0 for radii per disk */
+    const ds_species *kinds;  /* species entries */
+    const double *radii;      /* per disk: n radii, in generation order */
+    const double *masses;     /* per disk: n masses, or NULL for the rule */
+    ds_mass_rule mass_rule;   /* for masses not given (0 or NULL) */
+} ds_mixture;
+
+/* ds_diagnose_params, ds_memory_needed and ds_create for a mixture; a
+ * NULL mixture is ds_params alone. A refusal of the mixture names the
+ * field "mixture" (a count that does not add up, a radius or mass that is
+ * not a positive finite number, an unknown rule) or a field of params. */
+ds_status ds_diagnose_mixture(const ds_params *params, const ds_mixture *mixture,
+                              unsigned *warnings, ds_params_error *err);
+ds_status ds_memory_needed_mixture(const ds_params *params, const ds_mixture *mixture,
+                                   size_t *bytes);
+ds_status ds_create_mixture(const ds_params *params, const ds_mixture *mixture, ds_sim **out);
+
+/* Disk i's radius and mass (generation order; 0 out of range), every
+ * disk's at once into arrays of ds_count(sim) (either may be NULL), and
+ * the largest radius. With one kind of disk: ds_radius and 1. */
+double ds_radius_of(const ds_sim *sim, size_t i);
+double ds_mass_of(const ds_sim *sim, size_t i);
+ds_status ds_get_radii(const ds_sim *sim, double *radii, double *masses);
+double ds_radius_max(const ds_sim *sim);
+/* The fraction of the box the disks cover, sum of pi r^2 over box box_y. */
+double ds_area_fraction(const ds_sim *sim);
 
 /* Advances simulated time by exactly dt. DS_TIME_STEP: move by v dt,
  * reflect at walls, resolve overlapping pairs. DS_EVENT_DRIVEN: process
@@ -317,15 +401,17 @@ uint64_t ds_pairs_tested(const ds_sim *sim);    /* narrow-phase distance tests *
 /* Observables                                                         */
 /* ------------------------------------------------------------------ */
 
-double ds_kinetic_energy(const ds_sim *sim); /* sum of v^2/2, unit masses */
-void ds_momentum(const ds_sim *sim, double *px, double *py);
+double ds_kinetic_energy(const ds_sim *sim); /* sum of m v^2/2 */
+void ds_momentum(const ds_sim *sim, double *px, double *py); /* sum of m v */
 uint64_t ds_wall_count(const ds_sim *sim); /* wall reflections since reset */
-/* Momentum handed to the walls since the last reset: sum of 2|v_n|. */
+/* Momentum handed to the walls since the last reset: sum of 2 m |v_n|. */
 double ds_wall_impulse(const ds_sim *sim);
 /* Wall impulse per unit time per unit length of wall the centres reach
  * (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the last
  * reset; 0 before any step. In 2D this is a force per length, the ideal
- * gas has P A = N <v^2>/2. A periodic box has no walls: there it is
+ * gas has P A = N <m v^2>/2. In a mixture each disk's impulse is over the
+ * perimeter its own centre reaches, so that the partial pressures of the
+ * kinds add up. A periodic box has no walls: there it is
  * ds_virial_pressure. */
 double ds_pressure(const ds_sim *sim);
 /* Pressure from the collision virial, averaged since the last reset, 0
@@ -334,8 +420,12 @@ double ds_pressure(const ds_sim *sim);
  * joins the centres (nearest image) and dp_i is disk i's change of
  * momentum. A is the area the centres reach: (box - 2R) (box_y - 2R) with
  * walls, where the virial theorem makes it equal to ds_pressure over a
- * long run, and box box_y in a periodic box. With the time step the
- * collisions happen a little inside 2R, which biases it low (README). */
+ * long run, and box box_y in a periodic box. For a mixture with walls A
+ * is the mean of each disk's (box - 2 r) (box_y - 2 r): the virial theorem
+ * weighs each kind's area by its partial pressure, so this differs from
+ * ds_pressure at second order in the radii over the box; periodic, it is
+ * exact. With the time step the collisions happen a little inside 2R,
+ * which biases it low (docs/physics.md). */
 double ds_virial_pressure(const ds_sim *sim);
 /* Zeroes the wall impulse, wall count, collision virial and pressure clock
  * (not the collision count or time), so a relaxation period can be
@@ -355,8 +445,9 @@ void ds_reset_observables(ds_sim *sim);
  * lattice's orientation. The box is [0, box_x] x [0, box_y]; with
  * DS_PERIODIC separations are minimum images (centres anywhere, wrapped),
  * which is unique only if cutoff < min(box_x, box_y) / 2. O(n) with a cell
- * grid allocated inside. n = 0 is DS_OK and writes nothing. DS_ERR_ARG if
- * a pointer is NULL, box_x, box_y or cutoff is not finite and positive, a
+ * grid allocated inside. n = 0 is DS_OK and reads and writes nothing (the
+ * pointers may then be NULL). DS_ERR_ARG if, with n > 0, a pointer is
+ * NULL, or if box_x, box_y or cutoff is not finite and positive, a
  * centre is not finite, boundary is unknown, or a periodic cutoff is not
  * below half the shorter side; DS_ERR_NOMEM if the grid cannot be
  * allocated. */

@@ -21,6 +21,10 @@
 typedef struct ds_world {
     size_t n;
     double radius, box, box_y, speed, dt; /* box is the width, box_y the height */
+    /* The disks' smallest and largest radius (both radius for one kind;
+     * a mixture's radii are in the disk arrays) and the area they cover,
+     * sum of pi r^2. Pruning and cells take the largest. */
+    double radius_min, radius_max, covered;
     ds_integrator integrator;
     ds_boundary boundary;
     ds_broadphase broadphase; /* resolved, never DS_AUTO */
@@ -33,8 +37,11 @@ typedef struct ds_tally {
     uint64_t collisions;   /* disk-disk collisions resolved */
     uint64_t pairs_tested; /* narrow-phase distance tests */
     uint64_t wall_count;   /* wall reflections since the last reset */
-    double wall_impulse;   /* sum of 2 |v_n| over them */
-    double virial;         /* sum over collisions of r_ij . dp_i since the reset */
+    double wall_impulse;   /* sum of 2 m |v_n| over them */
+    /* A mixture's: sum of 2 m |v_n| / L_i, L_i the perimeter disk i's
+     * centre reaches (0 for one kind: wall_impulse / L then). */
+    double wall_reach;
+    double virial; /* sum over collisions of r_ij . dp_i since the reset */
 } ds_tally;
 
 typedef struct ds_integrator_ops ds_integrator_ops;
@@ -58,6 +65,10 @@ struct ds_sim {
  * sim/integrators.c by its ds_integrator value. */
 struct ds_integrator_ops {
     const char *name; /* ds_integrator_name */
+    /* The least room between disks it takes, as a fraction of a diameter
+     * (DS_ROOM_TO_MOVE, or 0): sim/params.c refuses lattices and walls
+     * closer than that. */
+    double min_room;
     /* Whether broad phase bp (never DS_AUTO) serves this integrator. */
     int (*fits)(ds_broadphase bp);
     /* The broad phase DS_AUTO means for world w. */

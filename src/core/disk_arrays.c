@@ -7,7 +7,7 @@
 #include "core/disk_arrays.h"
 
 /* The moving arrays of n + 1 slots, the sentinel at n. */
-static ds_status alloc_moving(ds_disks *d, size_t n)
+static ds_status alloc_moving(ds_disks *d, size_t n, int radii, int masses)
 {
     const size_t cap = n + 1;
     d->n = n;
@@ -16,7 +16,8 @@ static ds_status alloc_moving(ds_disks *d, size_t n)
     d->vx = malloc(cap * sizeof *d->vx);
     d->vy = malloc(cap * sizeof *d->vy);
     d->id = malloc(cap * sizeof *d->id);
-    if (!d->x || !d->y || !d->vx || !d->vy || !d->id) {
+    if (!d->x || !d->y || !d->vx || !d->vy || !d->id ||
+        ds_disks_add_mixture(d, radii, masses) != DS_OK) {
         ds_disks_free(d);
         return DS_ERR_NOMEM;
     }
@@ -28,10 +29,24 @@ static ds_status alloc_moving(ds_disks *d, size_t n)
     return DS_OK;
 }
 
+ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses)
+{
+    const size_t cap = d->n + 1;
+    if (radii && !d->r && !(d->r = calloc(cap, sizeof *d->r)))
+        return DS_ERR_NOMEM;
+    if (masses && !d->m) {
+        if (!(d->m = malloc(cap * sizeof *d->m)))
+            return DS_ERR_NOMEM;
+        for (size_t k = 0; k < cap; ++k)
+            d->m[k] = 1.0;
+    }
+    return DS_OK;
+}
+
 ds_status ds_disks_alloc(ds_disks *d, size_t n)
 {
     memset(d, 0, sizeof *d);
-    if (alloc_moving(d, n) != DS_OK)
+    if (alloc_moving(d, n, 0, 0) != DS_OK)
         return DS_ERR_NOMEM;
     d->slot = malloc((n + 1) * sizeof *d->slot);
     if (!d->slot) {
@@ -46,10 +61,10 @@ ds_status ds_disks_alloc(ds_disks *d, size_t n)
     return DS_OK;
 }
 
-ds_status ds_disks_alloc_spare(ds_disks *d, size_t n)
+ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like)
 {
     memset(d, 0, sizeof *d);
-    return alloc_moving(d, n);
+    return alloc_moving(d, like->n, like->r != NULL, like->m != NULL);
 }
 
 void ds_disks_free(ds_disks *d)
@@ -58,9 +73,11 @@ void ds_disks_free(ds_disks *d)
     free(d->y);
     free(d->vx);
     free(d->vy);
+    free(d->r);
+    free(d->m);
     free(d->id);
     free(d->slot);
-    d->x = d->y = d->vx = d->vy = NULL;
+    d->x = d->y = d->vx = d->vy = d->r = d->m = NULL;
     d->id = d->slot = NULL;
 }
 
@@ -77,6 +94,8 @@ void ds_disks_swap(ds_disks *a, ds_disks *b)
     swap_doubles(&a->y, &b->y);
     swap_doubles(&a->vx, &b->vx);
     swap_doubles(&a->vy, &b->vy);
+    swap_doubles(&a->r, &b->r);
+    swap_doubles(&a->m, &b->m);
     uint32_t *t = a->id;
     a->id = b->id;
     b->id = t;
@@ -85,7 +104,7 @@ void ds_disks_swap(ds_disks *a, ds_disks *b)
 ds_status ds_disks_permute(ds_disks *d, const uint32_t *order)
 {
     ds_disks old;
-    if (ds_disks_alloc_spare(&old, d->n) != DS_OK)
+    if (ds_disks_alloc_spare(&old, d) != DS_OK)
         return DS_ERR_NOMEM;
     ds_disks_swap(d, &old);
     for (size_t k = 0; k < d->n; ++k)

@@ -28,28 +28,36 @@
 typedef struct ds_disks {
     size_t n;
     double *x, *y, *vx, *vy;
+    /* A mixture's radii and masses (ds_disks_add_mixture); NULL when every
+     * disk has the world's radius (r) or mass 1 (m): then the hot loops
+     * take the one radius, and the arrays cost nothing. */
+    double *r, *m;
     uint32_t *id;   /* the generation index of the disk in each slot */
     uint32_t *slot; /* the slot of disk i: the inverse of id */
 } ds_disks;
 
 /* One disk with everything that moves with it between slots. */
 typedef struct ds_disk_record {
-    double x, y, vx, vy;
+    double x, y, vx, vy, r, m;
     uint32_t id;
 } ds_disk_record;
 
 /* Memory per disk: the arrays that move (a spare set, see
- * ds_disks_alloc_spare) and the slot index. */
+ * ds_disks_alloc_spare) and the slot index; a mixture's radius and mass. */
 #define DS_DISKS_MOVING_BYTES (4 * sizeof(double) + sizeof(uint32_t))
 #define DS_DISKS_BYTES_PER_DISK (DS_DISKS_MOVING_BYTES + sizeof(uint32_t))
+#define DS_DISKS_MIXTURE_BYTES (2 * sizeof(double))
 
 /* Arrays for n disks (+ 1: the sentinel slot n, x = y = +infinity), the
  * slots in generation order (id[k] = k, slot[i] = i), positions and
  * velocities zero. DS_ERR_NOMEM leaves nothing allocated. */
 ds_status ds_disks_alloc(ds_disks *d, size_t n);
-/* A second set of the moving arrays (no slot[]), for a broad phase that
- * rebuilds the order into it and swaps (DS_SAP_STRIPS). */
-ds_status ds_disks_alloc_spare(ds_disks *d, size_t n);
+/* The radius and mass arrays of a mixture (radii, masses: either NULL
+ * for none), sentinel slot included. */
+ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses);
+/* A second set of the moving arrays of `like` (no slot[]), for a broad
+ * phase that rebuilds the order into it and swaps (DS_SAP_STRIPS). */
+ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like);
 void ds_disks_free(ds_disks *d); /* NULL pointers are allowed */
 
 /* Exchanges the moving arrays of a and b (not slot[]). */
@@ -62,6 +70,8 @@ ds_status ds_disks_permute(ds_disks *d, const uint32_t *order);
 /* slot[] from id[], after the slots moved. */
 void ds_disks_rebuild_slots(ds_disks *d);
 
+/* A mixture's arrays move with the disk; whether they exist does not
+ * change during a run, so the branches on it are always predicted. */
 static inline ds_disk_record ds_disks_load(const ds_disks *d, size_t k)
 {
     ds_disk_record r;
@@ -69,6 +79,8 @@ static inline ds_disk_record ds_disks_load(const ds_disks *d, size_t k)
     r.y = d->y[k];
     r.vx = d->vx[k];
     r.vy = d->vy[k];
+    r.r = d->r ? d->r[k] : 0.0;
+    r.m = d->m ? d->m[k] : 1.0;
     r.id = d->id[k];
     return r;
 }
@@ -79,11 +91,32 @@ static inline void ds_disks_store(ds_disks *d, size_t k, ds_disk_record r)
     d->y[k] = r.y;
     d->vx[k] = r.vx;
     d->vy[k] = r.vy;
+    if (d->r)
+        d->r[k] = r.r;
+    if (d->m)
+        d->m[k] = r.m;
     d->id[k] = r.id;
 }
 
-/* Slot `from` of src into slot `to` of dst (the same set or another). */
+/* Slot `from` of src into slot `to` of dst (the same set or another, with
+ * the same arrays). */
 static inline void ds_disks_copy(ds_disks *dst, size_t to, const ds_disks *src, size_t from)
+{
+    dst->x[to] = src->x[from];
+    dst->y[to] = src->y[from];
+    dst->vx[to] = src->vx[from];
+    dst->vy[to] = src->vy[from];
+    if (src->r)
+        dst->r[to] = src->r[from];
+    if (src->m)
+        dst->m[to] = src->m[from];
+    dst->id[to] = src->id[from];
+}
+
+/* ds_disks_copy for arrays known to hold no mixture's (r and m NULL):
+ * for a loop that has asked once. */
+static inline void ds_disks_copy_motion(ds_disks *dst, size_t to, const ds_disks *src,
+                                        size_t from)
 {
     dst->x[to] = src->x[from];
     dst->y[to] = src->y[from];

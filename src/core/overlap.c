@@ -4,14 +4,14 @@
 #include "core/boundary.h"
 #include "core/grid.h"
 
-ds_status ds_find_overlap(const ds_world *w, const double *x, const double *y, size_t *a, size_t *b)
+ds_status ds_find_overlap(const ds_world *w, const double *x, const double *y, const double *r,
+                          size_t *a, size_t *b)
 {
     const size_t n = w->n;
     const int periodic = w->boundary == DS_PERIODIC;
-    const double contact = 2.0 * w->radius;
-    const double limit = contact * (1.0 - DS_CONTACT_TOLERANCE);
+    const double keep = 1.0 - DS_CONTACT_TOLERANCE;
     ds_grid g;
-    ds_grid_init(&g, w->box, w->box_y, contact, 4 * n + 16, periodic);
+    ds_grid_init(&g, w->box, w->box_y, 2.0 * w->radius_max, 4 * n + 16, periodic);
     ds_grid_bins bins;
     if (ds_grid_bin(&g, n, x, y, &bins) != DS_OK)
         return DS_ERR_NOMEM;
@@ -27,6 +27,7 @@ ds_status ds_find_overlap(const ds_world *w, const double *x, const double *y, s
                     dx = ds_nearest(dx, w->box);
                     dy = ds_nearest(dy, w->box_y);
                 }
+                const double limit = (r ? r[j] + r[k] : 2.0 * w->radius) * keep;
                 if (k > j && dx * dx + dy * dy < limit * limit) {
                     *a = j;
                     *b = k;

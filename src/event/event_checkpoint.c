@@ -177,7 +177,7 @@ static ds_status check_records(const ds_sim *sim, const ds_events *e, double now
                                    "disk %zu's record is not the disk of its slot", k);
     }
     size_t i = 0, j = 0;
-    const ds_status st = ds_find_overlap(&sim->world, a->x, a->y, &i, &j);
+    const ds_status st = ds_find_overlap(&sim->world, a->x, a->y, a->r, &i, &j);
     if (st == DS_ERR_OVERLAP)
         return ds_state_refuse(err, DS_ERR_FORMAT, "the disks of slots %zu and %zu overlap", i, j);
     return st == DS_OK ? DS_OK : ds_state_refuse(err, st, "no memory to check the disks");
@@ -189,6 +189,8 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
     if (ds_ed_alloc(sim) != DS_OK)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the events of %zu disks", n);
     ds_events *e = sim->state;
+    e->radius = sim->disks.r;
+    e->mass = sim->disks.m;
     e->epoch = ds_get_f64(r);
     const double rebase_time = ds_get_f64(r);
     e->tested = ds_get_u64(r);

@@ -77,7 +77,10 @@ static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, doubl
     const double approach = rx * dvx + ry * dvy;
     /* Rounding can leave a predicted pair a hair from approaching; then
      * there is nothing to exchange, and both are simply predicted again. */
-    if (approach < 0.0)
+    if (approach < 0.0 && e->mass)
+        ds_collide_masses(rx, ry, approach, e->mass[i], e->mass[j], &a->vx, &a->vy, &b->vx, &b->vy,
+                          tally);
+    else if (approach < 0.0)
         ds_collide(rx, ry, approach, &a->vx, &a->vy, &b->vx, &b->vy, tally);
     ++a->changes;
     ++b->changes;
@@ -90,9 +93,18 @@ static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, in
     ed_disk *d = &e->disk[i];
     advance(d, t);
     double *u = axis_y ? &d->y : &d->x, *v = axis_y ? &d->vy : &d->vx;
-    /* Snap to the wall line: rounding must not let it creep. */
-    *u = *v < 0.0 ? (axis_y ? e->lo_y : e->lo_x) : (axis_y ? e->hi_y : e->hi_x);
-    tally->wall_impulse += 2.0 * fabs(*v);
+    /* Snap to the wall line (a mixture's disk: its own): rounding must not
+     * let it creep. */
+    if (e->radius || e->mass) {
+        const double r = e->radius ? e->radius[i] : e->lo_x, m = e->mass ? e->mass[i] : 1.0;
+        const double perimeter = 2.0 * (e->box_x - 2.0 * r) + 2.0 * (e->box_y - 2.0 * r);
+        *u = *v < 0.0 ? r : (axis_y ? e->box_y : e->box_x) - r;
+        tally->wall_impulse += 2.0 * m * fabs(*v);
+        tally->wall_reach += 2.0 * m * fabs(*v) / perimeter;
+    } else {
+        *u = *v < 0.0 ? (axis_y ? e->lo_y : e->lo_x) : (axis_y ? e->hi_y : e->hi_x);
+        tally->wall_impulse += 2.0 * fabs(*v);
+    }
     ++tally->wall_count;
     *v = -*v;
     ++d->changes;
@@ -229,7 +241,7 @@ static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_b
 
 static size_t bytes(const ds_world *w)
 {
-    return ed_bytes(w->n, w->radius, w->box, w->box_y, w->broadphase);
+    return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase);
 }
 
 static void destroy(ds_sim *sim)
@@ -312,7 +324,7 @@ ds_status ds_ed_alloc(ds_sim *sim)
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
     ds_status st = e->disk ? DS_OK : DS_ERR_NOMEM;
     if (st == DS_OK)
-        st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius,
+        st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius_max,
                            w->broadphase == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
     if (st == DS_OK)
         st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));
@@ -343,6 +355,9 @@ static ds_status create(ds_sim *sim)
         st = sort_slots_by_cell(&sim->disks, &e->cells);
     if (st != DS_OK)
         return st;
+    /* After the cell sort (which moved the arrays). */
+    e->radius = sim->disks.r;
+    e->mass = sim->disks.m;
     const ds_disks *disks = &sim->disks;
     for (size_t k = n; k-- > 0;) {
         ed_disk *d = &e->disk[k];
@@ -362,27 +377,32 @@ static ds_status create(ds_sim *sim)
     return st;
 }
 
-static int too_close(const ed_disk *p, double now, double x, double y, double limit)
+/* Whether disk k (record p) at time now is closer to (x, y) than the
+ * contact distance with disk self allows (DS_CONTACT_TOLERANCE). */
+static int too_close(const ds_events *e, uint32_t k, uint32_t self, double now, double x, double y)
 {
+    const ed_disk *p = &e->disk[k];
     const double lag = now - p->t;
     const double rx = p->x + p->vx * lag - x, ry = p->y + p->vy * lag - y;
+    const double keep = 1.0 - DS_CONTACT_TOLERANCE;
+    const double sigma = e->radius ? e->radius[k] + e->radius[self] : 0.0;
+    const double limit = (e->radius ? sigma * sigma : e->sigma2) * keep * keep;
     return rx * rx + ry * ry < limit;
 }
 
-/* Whether a disk of cell other than `self` has its centre closer than
- * sqrt(limit) to (x, y) at time now. */
+/* Whether a disk of cell other than `self` overlaps a disk self at (x, y)
+ * at time now. */
 static int cell_overlaps(const ds_events *e, uint32_t cell, uint32_t self, double now, double x,
-                         double y, double limit)
+                         double y)
 {
     const ds_cells *cells = &e->cells;
     const uint32_t *slot = ds_cells_slots(cells, cell);
     for (int j = 0; j < DS_CELL_SLOTS; ++j)
-        if (slot[j] != cells->empty && slot[j] != self &&
-            too_close(&e->disk[slot[j]], now, x, y, limit))
+        if (slot[j] != cells->empty && slot[j] != self && too_close(e, slot[j], self, now, x, y))
             return 1;
     if (slot[DS_CELL_SLOTS - 1] != cells->empty)
         for (uint32_t m = ds_cells_overflow(cells, cell); m != cells->empty; m = cells->next[m])
-            if (m != self && too_close(&e->disk[m], now, x, y, limit))
+            if (m != self && too_close(e, m, self, now, x, y))
                 return 1;
     return 0;
 }
@@ -400,12 +420,11 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     ds_cells *cells = &e->cells;
     const double now = now_of(sim);
     const uint32_t column = ds_cells_column(cells, nd.x), row = ds_cells_row(cells, nd.y);
-    const double limit = e->sigma2 * (1.0 - DS_CONTACT_TOLERANCE) * (1.0 - DS_CONTACT_TOLERANCE);
     /* Refuse an overlap before changing anything. */
     ds_ed_stencil_cells st;
     ds_ed_stencil(e, column, row, &st);
     for (uint32_t c = 0; c < st.count; ++c)
-        if (cell_overlaps(e, st.cell[c], (uint32_t)k, now, nd.x - st.sx[c], nd.y - st.sy[c], limit))
+        if (cell_overlaps(e, st.cell[c], (uint32_t)k, now, nd.x - st.sx[c], nd.y - st.sy[c]))
             return DS_ERR_OVERLAP;
     ed_disk *d = &e->disk[k];
     ds_cells_remove(cells, ds_cells_index(cells, d->column, d->row), (uint32_t)k);
@@ -455,6 +474,9 @@ static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *e
 
 const ds_integrator_ops ds_event_driven_ops = {
     .name = "event",
+    /* Disks in contact on every side (a lattice at close packing) would
+     * collide for ever at one instant. */
+    .min_room = DS_ROOM_TO_MOVE,
     .fits = fits,
     .choose = choose,
     .check = check,

@@ -48,11 +48,16 @@ static inline void axis_event(double u, double v, uint32_t cell, uint32_t count,
  * without SSE2: the same times to the bit), the choices made with masks:
  * which way a disk moves along each axis is a coin toss, and a branch on
  * it was mispredicted about once a prediction. */
-static inline void boundary_event(const ds_events *e, const ed_disk *d, double now, double *best,
-                                  uint32_t *kind)
+static inline void boundary_event(const ds_events *e, const ed_disk *d, uint32_t i, double now,
+                                  double *best, uint32_t *kind)
 {
     const ds_cells *cells = &e->cells;
     const int walls = !e->periodic;
+    /* The wall lines: R from each wall, a mixture's disk its own R. */
+    const double r = e->radius ? e->radius[i] : 0.0;
+    const double lo_x = e->radius ? r : e->lo_x, lo_y = e->radius ? r : e->lo_y;
+    const double hi_x = e->radius ? e->box_x - r : e->hi_x;
+    const double hi_y = e->radius ? e->box_y - r : e->hi_y;
 #if defined(__SSE2__)
     const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
     const __m128d u = _mm_loadu_pd(&d->x), v = _mm_loadu_pd(&d->vx); /* (x, y), (vx, vy) */
@@ -60,7 +65,7 @@ static inline void boundary_event(const ds_events *e, const ed_disk *d, double n
     const __m128d up = _mm_cmpgt_pd(v, zero);
     const __m128d last = _mm_set_pd((double)cells->ny - 1.0, (double)cells->nx - 1.0);
     const __m128d at_wall = walls ? _mm_cmpeq_pd(cell, _mm_and_pd(up, last)) : zero;
-    const __m128d wall = select_pd(up, _mm_set_pd(e->hi_y, e->hi_x), _mm_set_pd(e->lo_y, e->lo_x));
+    const __m128d wall = select_pd(up, _mm_set_pd(hi_y, hi_x), _mm_set_pd(lo_y, lo_x));
     const __m128d edge_of_cell =
         _mm_mul_pd(_mm_add_pd(cell, _mm_and_pd(up, one)), _mm_set_pd(cells->wy, cells->wx));
     const __m128d edge = select_pd(at_wall, wall, edge_of_cell);
@@ -79,10 +84,10 @@ static inline void boundary_event(const ds_events *e, const ed_disk *d, double n
     *kind = earlier ? k : *kind;
     *best = earlier ? first : *best;
 #else
-    axis_event(d->x, d->vx, d->column, cells->nx, cells->wx, e->lo_x, e->hi_x, walls, EV_CELL_X,
+    axis_event(d->x, d->vx, d->column, cells->nx, cells->wx, lo_x, hi_x, walls, EV_CELL_X,
                EV_WALL_X, now, best, kind);
-    axis_event(d->y, d->vy, d->row, cells->ny, cells->wy, e->lo_y, e->hi_y, walls, EV_CELL_Y,
-               EV_WALL_Y, now, best, kind);
+    axis_event(d->y, d->vy, d->row, cells->ny, cells->wy, lo_y, hi_y, walls, EV_CELL_Y, EV_WALL_Y,
+               now, best, kind);
 #endif
 }
 
@@ -159,8 +164,9 @@ typedef struct predictor {
  * candidate beats the best so far is a coin toss the branch predictor
  * lost a few times per prediction, each time throwing away the square
  * roots and divisions in flight. The two lanes are merged at the end,
- * the earlier place winning a tie, as in the plain-C loop. */
-static inline void test_gathered(predictor *pr, int shifted)
+ * the earlier place winning a tie, as in the plain-C loop. A mixture
+ * (mixed) takes each pair's contact distance, the sum of the radii. */
+static inline void test_gathered(predictor *pr, int shifted, int mixed)
 {
     const ds_events *e = pr->e;
     const ed_disk *d = pr->d;
@@ -192,7 +198,14 @@ static inline void test_gathered(predictor *pr, int shifted)
         ry = _mm_sub_pd(ry, dy);
         const __m128d vx = _mm_sub_pd(pvx, dvx), vy = _mm_sub_pd(pvy, dvy);
         const __m128d b = _mm_add_pd(_mm_mul_pd(rx, vx), _mm_mul_pd(ry, vy));
-        const __m128d c = _mm_sub_pd(_mm_add_pd(_mm_mul_pd(rx, rx), _mm_mul_pd(ry, ry)), sigma2);
+        __m128d contact2 = sigma2;
+        if (mixed) {
+            const __m128d sigma =
+                _mm_add_pd(_mm_set1_pd(e->radius[pr->self]),
+                           load_pair(&e->radius[pr->disk[j]], &e->radius[pr->disk[j + 1]]));
+            contact2 = _mm_mul_pd(sigma, sigma);
+        }
+        const __m128d c = _mm_sub_pd(_mm_add_pd(_mm_mul_pd(rx, rx), _mm_mul_pd(ry, ry)), contact2);
         const __m128d disc = _mm_sub_pd(
             _mm_mul_pd(b, b), _mm_mul_pd(_mm_add_pd(_mm_mul_pd(vx, vx), _mm_mul_pd(vy, vy)), c));
         const __m128d den = _mm_add_pd(_mm_sqrt_pd(_mm_max_pd(disc, zero)), _mm_andnot_pd(sign, b));
@@ -260,21 +273,39 @@ static inline double pair_time(const ed_disk *d, const ed_disk *p, double now, d
     return b < 0.0 && disc > 0.0 ? t : INFINITY;
 }
 
-static inline void test_gathered(predictor *pr, int shifted)
+static inline void test_gathered(predictor *pr, int shifted, int mixed)
 {
+    const double *radius = pr->e->radius;
     for (uint32_t j = 0; j < pr->count; ++j) {
         const uint32_t k = pr->disk[j];
         const double sx = shifted ? pr->sx[pr->image[j]] : 0.0;
         const double sy = shifted ? pr->sy[pr->image[j]] : 0.0;
-        keep_if_earlier(pr, k, pair_time(pr->d, &pr->e->disk[k], pr->now, sx, sy, pr->e->sigma2));
+        const double sigma = mixed ? radius[pr->self] + radius[k] : 0.0;
+        const double sigma2 = mixed ? sigma * sigma : pr->e->sigma2;
+        keep_if_earlier(pr, k, pair_time(pr->d, &pr->e->disk[k], pr->now, sx, sy, sigma2));
     }
     pr->tested += pr->count;
     pr->count = 0;
 }
 #endif
 
-static void test_candidates(predictor *pr) { test_gathered(pr, 1); }
-static void test_unshifted(predictor *pr) { test_gathered(pr, 0); }
+/* The four forms, each compiled with its constants: one kind of disk is
+ * the hot loop as it was. */
+static void test_candidates(predictor *pr)
+{
+    if (pr->e->radius)
+        test_gathered(pr, 1, 1);
+    else
+        test_gathered(pr, 1, 0);
+}
+
+static void test_unshifted(predictor *pr)
+{
+    if (pr->e->radius)
+        test_gathered(pr, 0, 1);
+    else
+        test_gathered(pr, 0, 0);
+}
 
 /* Appends the disks of `count` consecutive slots, image 0. Empty slots
  * are written but not counted: no branch per slot. The disk itself may be
@@ -344,7 +375,7 @@ double ds_ed_predict(ds_events *e, uint32_t i)
     pr.partner_changes = 0;
     pr.count = 0;
     pr.tested = 0;
-    boundary_event(e, d, pr.now, &pr.best, &pr.kind);
+    boundary_event(e, d, i, pr.now, &pr.best, &pr.kind);
 
     if (ds_ed_interior(cells, d)) {
         /* Away from the edges of the grid (nearly every disk of a large

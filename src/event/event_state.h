@@ -54,6 +54,10 @@ struct ds_events {
     double rebase_time; /* integrator time after which the epoch moves */
     double box_x, box_y, lo_x, hi_x, lo_y, hi_y, sigma2;
     int periodic;
+    /* A mixture's radii and masses by record (the disk arrays', whose
+     * slot k is record k), or NULL for one radius (lo_x, ... and sigma2
+     * above) and mass 1. */
+    const double *radius, *mass;
 };
 typedef struct ds_events ds_events;
 

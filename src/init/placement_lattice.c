@@ -17,6 +17,7 @@
  * crystal does not drift) and the speeds scaled back to the same kinetic
  * energy, n speed^2 / 2. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "init/init.h"
 
@@ -89,19 +90,44 @@ static lattice best_lattice(size_t n, double radius, double box_x, double box_y,
  * round a hair below 2R. */
 #define FIT_SLACK 1e-12
 
+double ds_lattice_closest(size_t n, double radius, double box_x, double box_y, int periodic)
+{
+    return best_lattice(n, radius, box_x, box_y, periodic).closest;
+}
+
 int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int periodic)
 {
-    const lattice l = best_lattice(n, radius, box_x, box_y, periodic);
-    return l.closest >= 2.0 * radius * (1.0 - FIT_SLACK);
+    return ds_lattice_closest(n, radius, box_x, box_y, periodic) >=
+           2.0 * radius * (1.0 - FIT_SLACK);
 }
 
 ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
 {
     const int periodic = w->boundary == DS_PERIODIC;
     const size_t n = w->n;
-    const lattice l = best_lattice(n, w->radius, w->box, w->box_y, periodic);
-    if (!(l.closest >= 2.0 * w->radius * (1.0 - FIT_SLACK)))
+    /* Sites for the largest disk of a mixture. */
+    const double r = w->radius_max;
+    const lattice l = best_lattice(n, r, w->box, w->box_y, periodic);
+    if (!(l.closest >= 2.0 * r * (1.0 - FIT_SLACK)))
         return DS_ERR_PLACEMENT;
+    /* The disks of a mixture take the sites in an order drawn from the
+     * seed (a stream of its own, so the directions are those of a lattice
+     * of one kind): kinds mixed over the box, not one kind in a band. */
+    uint32_t *disk_at = malloc((n ? n : 1) * sizeof *disk_at);
+    if (!disk_at)
+        return DS_ERR_NOMEM;
+    for (size_t i = 0; i < n; ++i)
+        disk_at[i] = (uint32_t)i;
+    if (d->r || d->m) {
+        ds_rng shuffle;
+        ds_rng_seed(&shuffle, w->seed ^ 0x5bd1e995u);
+        for (size_t i = n; i-- > 1;) {
+            const size_t j = (size_t)(ds_rng_next(&shuffle) % (i + 1));
+            const uint32_t t = disk_at[i];
+            disk_at[i] = disk_at[j];
+            disk_at[j] = t;
+        }
+    }
 
     /* Site s (row-major) is taken when floor((s + 1) n / sites) steps up:
      * the empty ones fall evenly along the rows. */
@@ -116,38 +142,23 @@ ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
         if (!periodic) {
             /* The last site of a row is R from the far wall, up to rounding,
              * which must not put it past the wall line. */
-            x = fmin(x, w->box - w->radius);
-            y = fmin(y, w->box_y - w->radius);
+            x = fmin(x, w->box - r);
+            y = fmin(y, w->box_y - r);
         }
-        d->x[placed] = x;
-        d->y[placed] = y;
+        d->x[disk_at[placed]] = x;
+        d->y[disk_at[placed]] = y;
         ++placed;
     }
+    free(disk_at);
 
     ds_rng rng;
     ds_rng_seed(&rng, w->seed);
-    double mx = 0.0, my = 0.0;
     for (size_t i = 0; i < n; ++i) {
         const double angle = ds_rng_uniform(&rng, 0.0, DS_TWO_PI);
         d->vx[i] = w->speed * cos(angle);
         d->vy[i] = w->speed * sin(angle);
-        mx += d->vx[i];
-        my += d->vy[i];
     }
-    if (periodic && n > 1) {
-        mx /= (double)n;
-        my /= (double)n;
-        double v2 = 0.0;
-        for (size_t i = 0; i < n; ++i) {
-            d->vx[i] -= mx;
-            d->vy[i] -= my;
-            v2 += d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i];
-        }
-        const double scale = sqrt((double)n * w->speed * w->speed / v2);
-        for (size_t i = 0; i < n; ++i) {
-            d->vx[i] *= scale;
-            d->vy[i] *= scale;
-        }
-    }
+    if (periodic)
+        ds_stop_centre_of_mass(d, w);
     return DS_OK;
 }

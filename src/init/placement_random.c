@@ -9,6 +9,7 @@
  * generator. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/boundary.h"
 #include "core/grid.h"
@@ -55,6 +56,30 @@ static int overlaps_in_cell(const grid *g, size_t cell, double px, double py, do
         if (dx * dx + dy * dy < d2min)
             return 1;
     }
+    return 0;
+}
+
+/* Whether a placed disk of a mixture (radii r) overlaps a candidate of
+ * radius radius at (px, py) through the nearest image, in the cells
+ * around it. */
+static int overlaps_mixed(const ds_world *w, const grid *g, const double *r, double radius,
+                          double px, double py)
+{
+    const int periodic = w->boundary == DS_PERIODIC;
+    size_t around[9];
+    const int count = ds_grid_neighbours(&g->cells, ds_grid_column(&g->cells, px),
+                                         ds_grid_row(&g->cells, py), around);
+    for (int c = 0; c < count; ++c)
+        for (uint32_t k = g->head[around[c]]; k != UINT32_MAX; k = g->node[k].next) {
+            double dx = g->node[k].x - px, dy = g->node[k].y - py;
+            if (periodic) {
+                dx = ds_nearest(dx, w->box);
+                dy = ds_nearest(dy, w->box_y);
+            }
+            const double sigma = radius + r[k];
+            if (dx * dx + dy * dy < sigma * sigma)
+                return 1;
+        }
     return 0;
 }
 
@@ -121,20 +146,73 @@ static void prefetch_nodes(const grid *g, double px, double py)
         }
 }
 
+/* u in [0, 1) taken to [lo, hi), as ds_rng_uniform does (the same bits). */
+static inline double in_range(double lo, double hi, double u)
+{
+    const double r = lo + (hi - lo) * u;
+    return r < hi ? r : lo;
+}
+
+/* Where a disk of radius r may have its centre along a side: all of it in
+ * a periodic box, r from each wall otherwise. */
+typedef struct range {
+    double lo, hi, lo_y, hi_y;
+} range;
+
+static range centre_range(const ds_world *w, double r)
+{
+    const int periodic = w->boundary == DS_PERIODIC;
+    const range c = {periodic ? 0.0 : r, periodic ? w->box : w->box - r, periodic ? 0.0 : r,
+                     periodic ? w->box_y : w->box_y - r};
+    return c;
+}
+
+/* The order of placement: the disks in generation order, or for a
+ * mixture the largest first (ties in generation order): a large disk
+ * finds room more easily among fewer disks. */
+static uint32_t *placement_order(const ds_disks *d)
+{
+    uint32_t *order = malloc((d->n ? d->n : 1) * sizeof *order);
+    if (!order)
+        return NULL;
+    for (size_t i = 0; i < d->n; ++i)
+        order[i] = (uint32_t)i;
+    if (!d->r)
+        return order;
+    /* Insertion of each into the sorted front, found by binary search:
+     * O(n log n) comparisons; the moves are cheap memmove's. */
+    for (size_t i = 1; i < d->n; ++i) {
+        const uint32_t k = order[i];
+        size_t lo = 0, hi = i;
+        while (lo < hi) {
+            const size_t mid = lo + (hi - lo) / 2;
+            if (d->r[order[mid]] >= d->r[k])
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        memmove(order + lo + 1, order + lo, (i - lo) * sizeof *order);
+        order[lo] = k;
+    }
+    return order;
+}
+
 ds_status ds_place_random(ds_disks *d, const ds_world *w)
 {
-    const double r = w->radius, box = w->box, box_y = w->box_y;
+    const double box = w->box, box_y = w->box_y;
     const int periodic = w->boundary == DS_PERIODIC;
     grid g;
-    /* Cells at least 2R wide, but no more than ~4 per disk so tiny radii
-     * with few disks do not allocate a huge empty grid. */
-    ds_grid_init(&g.cells, box, box_y, 2.0 * r, 4 * w->n + 16, periodic);
+    /* Cells at least the largest diameter wide, but no more than ~4 per
+     * disk so tiny radii with few disks do not allocate a huge empty grid. */
+    ds_grid_init(&g.cells, box, box_y, 2.0 * w->radius_max, 4 * w->n + 16, periodic);
     const size_t cells = g.cells.nx * g.cells.ny;
     g.head = malloc(cells * sizeof *g.head);
     g.node = malloc(w->n * sizeof *g.node);
-    if (!g.head || !g.node) {
+    uint32_t *order = placement_order(d);
+    if (!g.head || !g.node || !order) {
         free(g.head);
         free(g.node);
+        free(order);
         return DS_ERR_NOMEM;
     }
     for (size_t c = 0; c < cells; ++c)
@@ -142,8 +220,9 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
 
     /* Centres and directions come from two generators, so the sequence of
      * candidate centres does not depend on which of them are accepted: it
-     * can be drawn ahead, and the grid cells of candidates still to come
-     * fetched while the current one is tested. */
+     * can be drawn ahead (as numbers in [0, 1), taken to the range of the
+     * disk that tests them), and the grid cells of candidates still to
+     * come fetched while the current one is tested. */
     ds_rng centres, directions;
     ds_rng_seed(&centres, w->seed);
     ds_rng_seed(&directions, ds_rng_next(&centres));
@@ -151,20 +230,23 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
     /* Below ~1 MB of heads the grid stays in cache and prefetching only
      * costs instructions. */
     const int big_grid = cells >= ((size_t)1 << 18);
-    /* ds_rng_uniform draws in [lo, hi): in a periodic box, all of it. */
-    const double lo = periodic ? 0.0 : r, hi = periodic ? box : box - r;
-    const double lo_y = periodic ? 0.0 : r, hi_y = periodic ? box_y : box_y - r;
-    double ahead_x[AHEAD], ahead_y[AHEAD];
+    range at = centre_range(w, d->r ? d->r[order[0]] : w->radius);
+    double ahead_u[AHEAD], ahead_v[AHEAD];
     for (size_t k = 0; k < AHEAD; ++k) {
-        ahead_x[k] = ds_rng_uniform(&centres, lo, hi);
-        ahead_y[k] = ds_rng_uniform(&centres, lo_y, hi_y);
+        ahead_u[k] = ds_rng_uniform(&centres, 0.0, 1.0);
+        ahead_v[k] = ds_rng_uniform(&centres, 0.0, 1.0);
         if (big_grid)
-            prefetch_cells(&g, ahead_x[k], ahead_y[k]);
+            prefetch_cells(&g, in_range(at.lo, at.hi, ahead_u[k]),
+                           in_range(at.lo_y, at.hi_y, ahead_v[k]));
     }
 
     ds_status status = DS_OK;
     size_t next = 0; /* ring slot of the next candidate */
-    for (size_t i = 0; i < w->n; ++i) {
+    for (size_t o = 0; o < w->n; ++o) {
+        const uint32_t i = order[o];
+        const double radius = d->r ? d->r[i] : w->radius;
+        if (d->r)
+            at = centre_range(w, radius);
         double px, py;
         unsigned draws = 0;
         do {
@@ -172,20 +254,22 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
                 status = DS_ERR_PLACEMENT;
                 goto done;
             }
-            px = ahead_x[next];
-            py = ahead_y[next];
+            px = in_range(at.lo, at.hi, ahead_u[next]);
+            py = in_range(at.lo_y, at.hi_y, ahead_v[next]);
             /* The candidate AHEAD on takes this slot; its heads are fetched
              * now, and NODES_AHEAD candidates before its test its first
              * disks (the heads have arrived by then). */
-            ahead_x[next] = ds_rng_uniform(&centres, lo, hi);
-            ahead_y[next] = ds_rng_uniform(&centres, lo_y, hi_y);
+            ahead_u[next] = ds_rng_uniform(&centres, 0.0, 1.0);
+            ahead_v[next] = ds_rng_uniform(&centres, 0.0, 1.0);
             if (big_grid) {
-                prefetch_cells(&g, ahead_x[next], ahead_y[next]);
+                prefetch_cells(&g, in_range(at.lo, at.hi, ahead_u[next]),
+                               in_range(at.lo_y, at.hi_y, ahead_v[next]));
                 size_t soon = (next + NODES_AHEAD) & (AHEAD - 1);
-                prefetch_nodes(&g, ahead_x[soon], ahead_y[soon]);
+                prefetch_nodes(&g, in_range(at.lo, at.hi, ahead_u[soon]),
+                               in_range(at.lo_y, at.hi_y, ahead_v[soon]));
             }
             next = (next + 1) & (AHEAD - 1);
-        } while (overlaps_any(w, &g, px, py));
+        } while (d->r ? overlaps_mixed(w, &g, d->r, radius, px, py) : overlaps_any(w, &g, px, py));
 
         d->x[i] = px;
         d->y[i] = py;
@@ -193,17 +277,23 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
         g.node[i].x = px;
         g.node[i].y = py;
         g.node[i].next = g.head[c];
-        g.head[c] = (uint32_t)i;
+        g.head[c] = i;
     }
 
-    /* Directions uniform in [0, 2 pi), one per disk in placement order. */
+    /* Directions uniform in [0, 2 pi), one per disk in generation order. */
     for (size_t i = 0; i < w->n; ++i) {
         double angle = ds_rng_uniform(&directions, 0.0, DS_TWO_PI);
         d->vx[i] = w->speed * cos(angle);
         d->vy[i] = w->speed * sin(angle);
     }
+    /* With walls the seed's velocities, as they are (the walls take the
+     * momentum); in a periodic box nothing does: the centre of mass would
+     * drift for ever. */
+    if (periodic)
+        ds_stop_centre_of_mass(d, w);
 done:
     free(g.head);
     free(g.node);
+    free(order);
     return status;
 }

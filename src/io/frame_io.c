@@ -12,7 +12,27 @@
 size_t ds_radius_text(const ds_sim *sim, char out[DS_RADIUS_TEXT_MAX])
 {
     ds_format_shortest(out, DS_RADIUS_TEXT_MAX, sim->world.radius);
-    return strlen(out);
+    /* The longest shortest form: a sign, 17 digits, a point, "e-308". */
+    return sim->disks.r ? 24 : strlen(out);
+}
+
+void ds_radius_cache_init(ds_radius_cache *c, const ds_sim *sim)
+{
+    c->value = sim->world.radius;
+    ds_format_shortest(c->text, sizeof c->text, c->value);
+    c->len = strlen(c->text);
+}
+
+const char *ds_radius_at(const ds_sim *sim, size_t k, ds_radius_cache *c, size_t *len)
+{
+    const double r = sim->disks.r ? sim->disks.r[k] : sim->world.radius;
+    if (r != c->value) {
+        c->value = r;
+        ds_format_shortest(c->text, sizeof c->text, r);
+        c->len = strlen(c->text);
+    }
+    *len = c->len;
+    return c->text;
 }
 
 size_t ds_frame_size(const ds_sim *sim, int velocities)
@@ -32,8 +52,8 @@ ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t c
     /* buf NULL with cap 0 asks only for the size: the loop copies nothing. */
     if (!sim || (!buf && cap))
         return DS_ERR_ARG;
-    char radius[DS_RADIUS_TEXT_MAX];
-    const size_t rlen = ds_radius_text(sim, radius);
+    ds_radius_cache radius;
+    ds_radius_cache_init(&radius, sim);
     const ds_disks *d = &sim->disks;
     char line[4 * (DS_FIELD_MAX + 1) + 40];
     size_t used = 0;
@@ -43,7 +63,9 @@ ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t c
         line[l++] = ' ';
         l += ds_format_fixed6(line + l, d->y[k]);
         line[l++] = ' ';
-        memcpy(line + l, radius, rlen);
+        size_t rlen = 0;
+        const char *r = ds_radius_at(sim, k, &radius, &rlen);
+        memcpy(line + l, r, rlen);
         l += rlen;
         if (velocities) {
             line[l++] = ' ';

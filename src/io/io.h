@@ -12,8 +12,21 @@
 #define DS_RADIUS_TEXT_MAX 32
 
 /* The radius as frames write it: the shortest text that reads back as the
- * same double; returns its length. */
+ * same double; returns its length. For a mixture, the longest such text
+ * a radius can take (24 characters). */
 size_t ds_radius_text(const ds_sim *sim, char out[DS_RADIUS_TEXT_MAX]);
+
+/* The radius of the disk in slot k as text, written again only when it
+ * differs from the last one asked for (a mixture's kinds repeat; one kind
+ * is written once). Start with ds_radius_cache_init. */
+typedef struct ds_radius_cache {
+    double value;
+    size_t len;
+    char text[DS_RADIUS_TEXT_MAX];
+} ds_radius_cache;
+
+void ds_radius_cache_init(ds_radius_cache *c, const ds_sim *sim);
+const char *ds_radius_at(const ds_sim *sim, size_t k, ds_radius_cache *c, size_t *len);
 
 /* Formats the state with format into a buffer of cap bytes and writes it
  * to out, flushed and checked; the frame writers and the trajectory

@@ -36,7 +36,7 @@ static size_t format_header(const ds_sim *sim, char *out)
     const ds_world *w = &sim->world;
     ds_format_shortest(box, sizeof box, w->box);
     ds_format_shortest(box_y, sizeof box_y, w->box_y);
-    ds_format_shortest(height, sizeof height, 2.0 * w->radius);
+    ds_format_shortest(height, sizeof height, 2.0 * w->radius_max);
     time[ds_format_fixed6(time, ds_time(sim))] = '\0';
     /* Periodic along x and y, never along the flat z of the layer. */
     const char *pbc = w->boundary == DS_PERIODIC ? "T T F" : "F F F";
@@ -57,8 +57,8 @@ ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *
     size_t used = format_header(sim, line);
     if (used <= cap)
         memcpy(buf, line, used);
-    char radius[DS_RADIUS_TEXT_MAX];
-    const size_t rlen = ds_radius_text(sim, radius);
+    ds_radius_cache radius;
+    ds_radius_cache_init(&radius, sim);
     const ds_disks *d = &sim->disks;
     for (size_t i = 0; i < d->n; ++i) {
         const size_t k = d->slot[i];
@@ -70,7 +70,9 @@ ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *
         l += ds_format_fixed6(line + l, d->y[k]);
         memcpy(line + l, " 0 ", 3);
         l += 3;
-        memcpy(line + l, radius, rlen);
+        size_t rlen = 0;
+        const char *r = ds_radius_at(sim, k, &radius, &rlen);
+        memcpy(line + l, r, rlen);
         l += rlen;
         line[l++] = ' ';
         l += ds_format_fixed6(line + l, d->vx[k]);

@@ -11,8 +11,12 @@ double ds_kinetic_energy(const ds_sim *sim)
         return 0.0;
     const ds_disks *d = &sim->disks;
     double e = 0.0;
-    for (size_t k = 0; k < d->n; ++k)
-        e += d->vx[k] * d->vx[k] + d->vy[k] * d->vy[k];
+    if (d->m)
+        for (size_t k = 0; k < d->n; ++k)
+            e += d->m[k] * (d->vx[k] * d->vx[k] + d->vy[k] * d->vy[k]);
+    else
+        for (size_t k = 0; k < d->n; ++k)
+            e += d->vx[k] * d->vx[k] + d->vy[k] * d->vy[k];
     return 0.5 * e;
 }
 
@@ -20,8 +24,9 @@ void ds_momentum(const ds_sim *sim, double *px, double *py)
 {
     double sx = 0.0, sy = 0.0;
     for (size_t k = 0; sim && k < sim->disks.n; ++k) {
-        sx += sim->disks.vx[k];
-        sy += sim->disks.vy[k];
+        const double m = sim->disks.m ? sim->disks.m[k] : 1.0;
+        sx += m * sim->disks.vx[k];
+        sy += m * sim->disks.vy[k];
     }
     if (px)
         *px = sx;
@@ -45,24 +50,36 @@ double ds_pressure(const ds_sim *sim)
     const ds_world *w = &sim->world;
     if (w->boundary == DS_PERIODIC) /* no wall to push on */
         return ds_virial_pressure(sim);
+    /* A mixture: the partial pressures of its disks add up, each over the
+     * perimeter its own centre reaches (the integrators tally it). */
+    if (sim->disks.r || sim->disks.m)
+        return sim->tally.wall_reach / elapsed(sim);
     const double perimeter = 2.0 * (w->box - 2.0 * w->radius) + 2.0 * (w->box_y - 2.0 * w->radius);
     return sim->tally.wall_impulse / (elapsed(sim) * perimeter);
 }
 
-/* The area the centres reach: with walls they stay R from each wall. */
-static double centre_area(const ds_world *w)
+/* The area the centres reach: with walls they stay R from each wall; a
+ * mixture's disks, each its own R: their mean area. */
+static double centre_area(const ds_sim *sim)
 {
+    const ds_world *w = &sim->world;
     if (w->boundary == DS_PERIODIC)
         return w->box * w->box_y;
-    return (w->box - 2.0 * w->radius) * (w->box_y - 2.0 * w->radius);
+    if (!sim->disks.r)
+        return (w->box - 2.0 * w->radius) * (w->box_y - 2.0 * w->radius);
+    double sum = 0.0;
+    for (size_t k = 0; k < sim->disks.n; ++k) {
+        const double r = sim->disks.r[k];
+        sum += (w->box - 2.0 * r) * (w->box_y - 2.0 * r);
+    }
+    return sum / (double)sim->disks.n;
 }
 
 double ds_virial_pressure(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
-    return (ds_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) /
-           centre_area(&sim->world);
+    return (ds_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) / centre_area(sim);
 }
 
 void ds_reset_observables(ds_sim *sim)
@@ -71,6 +88,7 @@ void ds_reset_observables(ds_sim *sim)
         return;
     sim->tally.wall_count = 0;
     sim->tally.wall_impulse = 0.0;
+    sim->tally.wall_reach = 0.0;
     sim->tally.virial = 0.0;
     sim->observables_since_step = sim->steps;
 }

@@ -41,10 +41,17 @@ static void add_bond(double dx, double dy, double r2, double *re, double *im)
     *im += 2.0 * u3r * u3i;
 }
 
+/* psi6 of n checked centres; with radii (a mixture's), the bond cutoff
+ * of a pair is factor times its contact distance, cutoff the largest. */
+static ds_status local_psi6(size_t n, const double *x, const double *y, const double *radii,
+                            double factor, double box_x, double box_y, int periodic, double cutoff,
+                            double *re, double *im);
+
 ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x, double box_y,
                         ds_boundary boundary, double cutoff, double *re, double *im)
 {
-    if (!x || !y || !re || !im)
+    /* No disks: nothing to read or write, whatever the pointers. */
+    if (n > 0 && (!x || !y || !re || !im))
         return DS_ERR_ARG;
     if (!(box_x > 0.0) || !isfinite(box_x) || !(box_y > 0.0) || !isfinite(box_y) ||
         !(cutoff > 0.0) || !isfinite(cutoff))
@@ -60,6 +67,13 @@ ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x
             return DS_ERR_ARG;
     if (n == 0)
         return DS_OK;
+    return local_psi6(n, x, y, NULL, 0.0, box_x, box_y, periodic, cutoff, re, im);
+}
+
+static ds_status local_psi6(size_t n, const double *x, const double *y, const double *radii,
+                            double factor, double box_x, double box_y, int periodic, double cutoff,
+                            double *re, double *im)
+{
     if (n > SIZE_MAX / sizeof(size_t) / CELLS_PER_DISK - 1 || n > SIZE_MAX / (2 * sizeof(double)))
         return DS_ERR_NOMEM;
 
@@ -101,8 +115,9 @@ ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x
                     dy = ds_nearest(dy, box_y);
                 }
                 const double r2 = dx * dx + dy * dy;
+                const double pair_cut = radii ? factor * (radii[j] + radii[k]) : 0.0;
                 /* A coincident centre has no bond direction. */
-                if (k == j || !(r2 < cut2) || r2 == 0.0)
+                if (k == j || !(r2 < (radii ? pair_cut * pair_cut : cut2)) || r2 == 0.0)
                     continue;
                 add_bond(dx, dy, r2, &sum_re, &sum_im);
                 ++bonds;
@@ -123,10 +138,22 @@ double ds_psi6(const ds_sim *sim)
     const size_t n = w->n;
     double *re = malloc(n * sizeof *re), *im = malloc(n * sizeof *im);
     double result = NAN;
-    /* The arrays hold the disks in slot order, which the mean ignores. */
+    /* The arrays hold the disks in slot order, which the mean ignores. A
+     * mixture's pair is bonded within 1.4 times its own contact distance;
+     * its cells are as wide as the largest pair's cutoff. */
+    const double cutoff = PSI6_CUTOFF_DIAMETERS * 2.0 * w->radius_max;
+    const int periodic = w->boundary == DS_PERIODIC;
+    if (re && im && periodic && !(cutoff < 0.5 * fmin(w->box, w->box_y))) {
+        free(re);
+        free(im);
+        return NAN;
+    }
     if (re && im &&
-        ds_local_psi6(n, sim->disks.x, sim->disks.y, w->box, w->box_y, w->boundary,
-                      PSI6_CUTOFF_DIAMETERS * 2.0 * w->radius, re, im) == DS_OK) {
+        (sim->disks.r
+             ? local_psi6(n, sim->disks.x, sim->disks.y, sim->disks.r, PSI6_CUTOFF_DIAMETERS,
+                          w->box, w->box_y, periodic, cutoff, re, im)
+             : ds_local_psi6(n, sim->disks.x, sim->disks.y, w->box, w->box_y, w->boundary, cutoff,
+                             re, im)) == DS_OK) {
         double sum_re = 0.0, sum_im = 0.0;
         for (size_t j = 0; j < n; ++j) {
             sum_re += re[j];

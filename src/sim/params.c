@@ -36,7 +36,92 @@ ds_world ds_world_of(const ds_params *p)
     w.broadphase = p->broadphase;
     w.placement = p->placement;
     w.seed = p->seed;
+    w.radius_min = w.radius_max = p->radius;
+    w.covered = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius;
     return w;
+}
+
+/* The radius and mass of disk i of a mixture (checked). */
+double ds_mixture_radius(const ds_mixture *m, size_t i)
+{
+    if (!m->kinds)
+        return m->radii[i];
+    for (size_t k = 0;; ++k) {
+        if (i < m->kinds[k].count)
+            return m->kinds[k].radius;
+        i -= m->kinds[k].count;
+    }
+}
+
+double ds_mixture_mass(const ds_mixture *m, double reference_radius, size_t i)
+{
+    double mass = 0.0;
+    if (m->kinds) {
+        size_t k = 0;
+        for (size_t left = i; left >= m->kinds[k].count; ++k)
+            left -= m->kinds[k].count;
+        mass = m->kinds[k].mass;
+    } else if (m->masses) {
+        mass = m->masses[i];
+    }
+    if (mass > 0.0)
+        return mass;
+    const double r = ds_mixture_radius(m, i) / reference_radius;
+    return m->mass_rule == DS_MASS_AREA ? r * r : 1.0;
+}
+
+/* A mixture's form, its counts, radii and masses; on DS_OK its smallest
+ * and largest radius and the area its disks cover are in w. */
+static ds_status check_mixture(const ds_mixture *m, double reference, ds_world *w,
+                               ds_params_error *err)
+{
+    if ((unsigned)m->mass_rule > (unsigned)DS_MASS_AREA)
+        return ds_refuse(err, DS_ERR_ARG, "mixture", "mixture: mass rule %d is not a ds_mass_rule",
+                         (int)m->mass_rule);
+    if ((m->species > 0) == (m->radii != NULL) || (m->species > 0 && !m->kinds) ||
+        (m->species == 0 && m->masses && !m->radii))
+        return ds_refuse(err, DS_ERR_ARG, "mixture",
+                         "mixture: give either species (kinds, with their count) or radii per "
+                         "disk, not both and not neither");
+    if (m->kinds) {
+        size_t total = 0;
+        for (size_t k = 0; k < m->species; ++k) {
+            if (m->kinds[k].count > w->n - total)
+                return ds_refuse(err, DS_ERR_ARG, "mixture",
+                                 "mixture: the species' counts add up to more than n = %zu", w->n);
+            total += m->kinds[k].count;
+        }
+        if (total != w->n)
+            return ds_refuse(err, DS_ERR_ARG, "mixture",
+                             "mixture: the species' counts add up to %zu, not n = %zu", total,
+                             w->n);
+    }
+    double lo = INFINITY, hi = 0.0, covered = 0.0;
+    for (size_t i = 0; i < w->n; ++i) {
+        const double r = ds_mixture_radius(m, i);
+        const double given = m->kinds ? 0.0 : m->masses ? m->masses[i] : 1.0;
+        if (!(r > 0.0) || !isfinite(r))
+            return ds_refuse(err, DS_ERR_ARG, "mixture",
+                             "mixture: disk %zu's radius %g is not a number > 0", i, r);
+        if (!(ds_mixture_mass(m, reference, i) > 0.0) ||
+            !isfinite(ds_mixture_mass(m, reference, i)) || !(given >= 0.0) || !isfinite(given))
+            return ds_refuse(err, DS_ERR_ARG, "mixture",
+                             "mixture: disk %zu's mass is not a finite number > 0", i);
+        lo = fmin(lo, r);
+        hi = fmax(hi, r);
+        covered += DS_TWO_PI * 0.5 * r * r;
+    }
+    if (m->kinds)
+        for (size_t k = 0; k < m->species; ++k)
+            if (!(m->kinds[k].mass >= 0.0) || !isfinite(m->kinds[k].mass))
+                return ds_refuse(err, DS_ERR_ARG, "mixture",
+                                 "mixture: species %zu's mass %g is not a finite number >= 0 (0 "
+                                 "for the rule)",
+                                 k, m->kinds[k].mass);
+    w->radius_min = lo;
+    w->radius_max = hi;
+    w->covered = covered;
+    return DS_OK;
 }
 
 /* Oler's inequality (1961; Folkman and Graham 1969 for any convex set):
@@ -112,7 +197,7 @@ static ds_status check_kinds(const ds_params *p, ds_params_error *err)
 /* A disk fits between the walls; in a periodic box two disks in contact
  * must be so through one image only (boundary.h), so each side is more
  * than two diameters. */
-static ds_status check_size(const ds_world *w, ds_params_error *err)
+static ds_status check_size(const ds_world *w, int mixture, double min_room, ds_params_error *err)
 {
     if (w->n < 1)
         return ds_refuse(err, DS_ERR_ARG, "n", "n = 0: there must be at least one disk");
@@ -120,47 +205,85 @@ static ds_status check_size(const ds_world *w, ds_params_error *err)
     const double most = (periodic ? 0.25 : 0.5) * fmin(w->box, w->box_y);
     if (!(w->radius > 0.0) || !isfinite(w->radius))
         return ds_refuse(err, DS_ERR_ARG, "radius", "radius = %g must be a number > 0", w->radius);
-    if (!(w->radius < most))
-        return ds_refuse(err, DS_ERR_ARG, "radius",
-                         periodic ? "radius = %g is too large for a periodic box of %g x %g: it "
+    /* A mixture is held to this by its largest disk. */
+    const char *field = mixture ? "mixture" : "radius";
+    const char *what = mixture ? "mixture: its largest radius," : "radius =";
+    const char *sep = mixture ? "," : "";
+    const double r = w->radius_max;
+    if (!(r < most))
+        return ds_refuse(err, DS_ERR_ARG, field,
+                         periodic ? "%s %g%s is too large for a periodic box of %g x %g: it "
                                     "must be below a quarter of each side (%g)"
-                                  : "radius = %g does not fit a box of %g x %g: it must be below "
+                                  : "%s %g%s does not fit a box of %g x %g: it must be below "
                                     "half of its shorter side (%g)",
-                         w->radius, w->box, w->box_y, most);
+                         what, r, sep, w->box, w->box_y, most);
+    /* The band a centre moves in between the walls, for an integrator that
+     * needs room: a disk in a band a rounding error wider than itself
+     * would turn at the walls a rounding error apart. */
+    const double band = fmin(w->box, w->box_y) - 2.0 * r;
+    if (!periodic && min_room > 0.0 && !(band >= 2.0 * r * min_room))
+        return ds_refuse(err, DS_ERR_ARG, field,
+                         "%s %.17g%s leaves its centre a band of %g between the walls: the %s "
+                         "integrator needs %g of a diameter at least (%g)",
+                         what, r, sep, band, ds_integrator_ops_of(w->integrator)->name, min_room,
+                         2.0 * r * min_room);
     /* Ids are 32-bit; beyond that no machine this runs on has the memory. */
     if (w->n >= UINT32_MAX ||
-        w->n > (SIZE_MAX - 64) / (DS_DISKS_BYTES_PER_DISK + DS_PLACEMENT_BYTES_PER_DISK))
+        w->n > (SIZE_MAX - 64) /
+                   (DS_DISKS_BYTES_PER_DISK + DS_DISKS_MIXTURE_BYTES + DS_PLACEMENT_BYTES_PER_DISK))
         return ds_refuse(err, DS_ERR_NOMEM, "n", "n = %zu disks cannot be held in memory", w->n);
     return DS_OK;
 }
 
-/* The packings refused before trying (see DS_MANY_DISKS in the header). */
-static ds_status check_packing(const ds_world *w, ds_params_error *err)
+/* The packings refused before trying (see DS_MANY_DISKS in the header).
+ * A mixture is held to them with its largest radius where a disk needs
+ * room (a lattice's sites) and its smallest where every disk must keep
+ * its distance (Oler's bound: centres 2 r_min apart at least). */
+static ds_status check_packing(const ds_world *w, int mixture, double min_room,
+                               ds_params_error *err)
 {
     const int periodic = w->boundary == DS_PERIODIC;
-    const double fraction =
-        (double)w->n * DS_TWO_PI * 0.5 * w->radius * w->radius / (w->box * w->box_y);
+    const double fraction = w->covered / (w->box * w->box_y);
+    const double site = w->radius_max; /* what a lattice's sites must hold */
+    char disks[96];
+    if (mixture)
+        snprintf(disks, sizeof disks, "disks of radii %g to %g", w->radius_min, w->radius_max);
+    else
+        snprintf(disks, sizeof disks, "disks of radius %g", w->radius);
     if (w->placement == DS_LATTICE) {
-        if (!ds_lattice_fits(w->n, w->radius, w->box, w->box_y, periodic))
+        if (!ds_lattice_fits(w->n, site, w->box, w->box_y, periodic))
             return ds_refuse(err, DS_ERR_PLACEMENT, "n",
-                             "n = %zu disks of radius %g cover %.3f of the box; no triangular "
-                             "lattice of them fits without overlap (close packing is 0.9069)",
-                             w->n, w->radius, fraction);
+                             "n = %zu %s cover %.3f of the box; no triangular lattice of them "
+                             "fits without overlap (close packing is 0.9069%s)",
+                             w->n, disks, fraction, mixture ? " for the largest" : "");
+        const double closest = ds_lattice_closest(w->n, site, w->box, w->box_y, periodic);
+        if (min_room > 0.0 && !(closest >= 2.0 * site * (1.0 + min_room)))
+            return ds_refuse(err, DS_ERR_PLACEMENT, "n",
+                             "n = %zu %s cover %.7f of the box: their lattice is at close "
+                             "packing, its neighbours %.3g of a diameter apart beyond contact; "
+                             "the %s integrator needs %g at least (a slightly larger box or "
+                             "smaller disks)",
+                             w->n, disks, fraction, closest / (2.0 * site) - 1.0,
+                             ds_integrator_ops_of(w->integrator)->name, min_room);
         return DS_OK;
     }
-    if (disks_cannot_fit(w))
+    ds_world smallest = *w;
+    smallest.radius = w->radius_min;
+    if (disks_cannot_fit(&smallest) || fraction > 1.0)
         return ds_refuse(err, DS_ERR_PLACEMENT, "n",
-                         "n = %zu disks of radius %g cannot fit in the box without overlap", w->n,
-                         w->radius);
+                         "n = %zu %s cannot fit in the box without overlap", w->n, disks);
     if (w->n > DS_MANY_DISKS && fraction > DS_MAX_AREA_FRACTION)
         return ds_refuse(err, DS_ERR_PLACEMENT, "n",
-                         "n = %zu disks of radius %g cover %.3f of the box; random placement of "
-                         "more than %d disks cannot exceed %.2f",
-                         w->n, w->radius, fraction, DS_MANY_DISKS, DS_MAX_AREA_FRACTION);
+                         "n = %zu %s cover %.3f of the box; random placement of more than %d "
+                         "disks cannot exceed %.2f",
+                         w->n, disks, fraction, DS_MANY_DISKS, DS_MAX_AREA_FRACTION);
     return DS_OK;
 }
 
-ds_status ds_diagnose_params(const ds_params *p, unsigned *warnings, ds_params_error *err)
+/* ds_diagnose_mixture's checks; on DS_OK, *world is the request's world
+ * (the mixture's radii in it), broad phase as given. */
+static ds_status diagnose(const ds_params *p, const ds_mixture *mixture, unsigned *warnings,
+                          ds_params_error *err, ds_world *world)
 {
     if (warnings)
         *warnings = 0;
@@ -171,38 +294,71 @@ ds_status ds_diagnose_params(const ds_params *p, unsigned *warnings, ds_params_e
     ds_status st = check_numbers(p, err);
     if (st == DS_OK)
         st = check_kinds(p, err);
-    const ds_world w = ds_world_of(p);
+    ds_world w = ds_world_of(p);
+    if (st == DS_OK && !(w.radius > 0.0 && isfinite(w.radius)))
+        st = ds_refuse(err, DS_ERR_ARG, "radius", "radius = %g must be a number > 0", w.radius);
+    if (st == DS_OK && w.n < 1)
+        st = ds_refuse(err, DS_ERR_ARG, "n", "n = 0: there must be at least one disk");
+    if (st == DS_OK && mixture)
+        st = check_mixture(mixture, w.radius, &w, err);
+    const double min_room = st == DS_OK ? ds_integrator_ops_of(w.integrator)->min_room : 0.0;
     if (st == DS_OK)
-        st = check_size(&w, err);
+        st = check_size(&w, mixture != NULL, min_room, err);
     if (st == DS_OK)
         st = ds_integrator_ops_of(w.integrator)->check(&w, warnings, err);
     if (st == DS_OK)
-        st = check_packing(&w, err);
+        st = check_packing(&w, mixture != NULL, min_room, err);
     if (st != DS_OK && warnings)
         *warnings = 0;
     if (st != DS_OK && err)
         err->warning[0] = '\0';
+    if (world)
+        *world = w;
     return st;
+}
+
+ds_status ds_diagnose_mixture(const ds_params *p, const ds_mixture *mixture, unsigned *warnings,
+                              ds_params_error *err)
+{
+    return diagnose(p, mixture, warnings, err, NULL);
+}
+
+ds_status ds_diagnose_params(const ds_params *p, unsigned *warnings, ds_params_error *err)
+{
+    return diagnose(p, NULL, warnings, err, NULL);
 }
 
 ds_status ds_check_params(const ds_params *params, unsigned *warnings)
 {
-    return ds_diagnose_params(params, warnings, NULL);
+    return diagnose(params, NULL, warnings, NULL, NULL);
 }
 
-ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
+ds_status ds_world_of_request(const ds_params *params, const ds_mixture *mixture, ds_world *world)
+{
+    return diagnose(params, mixture, NULL, NULL, world);
+}
+
+ds_status ds_memory_needed_mixture(const ds_params *params, const ds_mixture *mixture,
+                                   size_t *bytes)
 {
     if (!bytes)
         return DS_ERR_ARG;
-    ds_status st = ds_check_params(params, NULL);
+    ds_world w;
+    ds_status st = diagnose(params, mixture, NULL, NULL, &w);
     if (st == DS_ERR_PLACEMENT)
         st = DS_OK; /* memory is still a meaningful answer */
     if (st != DS_OK)
         return st;
-    ds_world w = ds_world_of(params);
     const ds_integrator_ops *ops = ds_integrator_ops_of(w.integrator);
     if (w.broadphase == DS_AUTO)
         w.broadphase = ops->choose(&w);
-    *bytes = (w.n + 1) * (DS_DISKS_BYTES_PER_DISK + DS_PLACEMENT_BYTES_PER_DISK) + ops->bytes(&w);
+    const size_t per_disk = DS_DISKS_BYTES_PER_DISK + DS_PLACEMENT_BYTES_PER_DISK +
+                            (mixture ? DS_DISKS_MIXTURE_BYTES : 0);
+    *bytes = (w.n + 1) * per_disk + ops->bytes(&w);
     return DS_OK;
+}
+
+ds_status ds_memory_needed(const ds_params *params, size_t *bytes)
+{
+    return ds_memory_needed_mixture(params, NULL, bytes);
 }

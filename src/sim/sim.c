@@ -8,22 +8,47 @@
 #include "sim/sim.h"
 #include "init/init.h"
 
-ds_status ds_create(const ds_params *params, ds_sim **out)
+/* A mixture's radii and masses into the disk arrays (generation order):
+ * an array only where the disks differ from the world's radius or from
+ * mass 1, so that a mixture of one kind of radius R and mass 1 is the
+ * plain simulation, to the bit. */
+static ds_status fill_mixture(ds_disks *d, const ds_mixture *m, double radius)
+{
+    int radii = 0, masses = 0;
+    for (size_t i = 0; i < d->n; ++i) {
+        radii |= ds_mixture_radius(m, i) != radius;
+        masses |= ds_mixture_mass(m, radius, i) != 1.0;
+    }
+    if (ds_disks_add_mixture(d, radii, masses) != DS_OK)
+        return DS_ERR_NOMEM;
+    for (size_t i = 0; i < d->n; ++i) {
+        if (d->r)
+            d->r[i] = ds_mixture_radius(m, i);
+        if (d->m)
+            d->m[i] = ds_mixture_mass(m, radius, i);
+    }
+    return DS_OK;
+}
+
+ds_status ds_create_mixture(const ds_params *params, const ds_mixture *mixture, ds_sim **out)
 {
     if (!out)
         return DS_ERR_ARG;
     *out = NULL;
-    ds_status st = ds_check_params(params, NULL);
+    ds_world w;
+    ds_status st = ds_world_of_request(params, mixture, &w);
     if (st != DS_OK)
         return st;
     ds_sim *sim = calloc(1, sizeof *sim);
     if (!sim)
         return DS_ERR_NOMEM;
-    sim->world = ds_world_of(params);
+    sim->world = w;
     sim->integrator = ds_integrator_ops_of(sim->world.integrator);
     if (sim->world.broadphase == DS_AUTO)
         sim->world.broadphase = sim->integrator->choose(&sim->world);
     st = ds_disks_alloc(&sim->disks, sim->world.n);
+    if (st == DS_OK && mixture)
+        st = fill_mixture(&sim->disks, mixture, w.radius);
     if (st == DS_OK)
         st = ds_place(&sim->disks, &sim->world);
     if (st == DS_OK)
@@ -36,6 +61,11 @@ ds_status ds_create(const ds_params *params, ds_sim **out)
     ds_timer_reset(&sim->collision_timer);
     *out = sim;
     return DS_OK;
+}
+
+ds_status ds_create(const ds_params *params, ds_sim **out)
+{
+    return ds_create_mixture(params, NULL, out);
 }
 
 void ds_destroy(ds_sim *sim)
@@ -106,9 +136,45 @@ ds_status ds_get_all(const ds_sim *sim, ds_disk *out)
 
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
 {
-    if (!sim || i >= sim->world.n || ds_check_disk(&sim->world, i, d, NULL) != DS_OK)
+    if (!sim || i >= sim->world.n ||
+        ds_check_disk(&sim->world, i, ds_radius_of(sim, i), d, NULL) != DS_OK)
         return DS_ERR_ARG;
     return sim->integrator->set(sim, sim->disks.slot[i], d);
+}
+
+double ds_radius_of(const ds_sim *sim, size_t i)
+{
+    if (!sim || i >= sim->world.n)
+        return 0.0;
+    return sim->disks.r ? sim->disks.r[sim->disks.slot[i]] : sim->world.radius;
+}
+
+double ds_mass_of(const ds_sim *sim, size_t i)
+{
+    if (!sim || i >= sim->world.n)
+        return 0.0;
+    return sim->disks.m ? sim->disks.m[sim->disks.slot[i]] : 1.0;
+}
+
+ds_status ds_get_radii(const ds_sim *sim, double *radii, double *masses)
+{
+    if (!sim)
+        return DS_ERR_ARG;
+    const ds_disks *a = &sim->disks;
+    for (size_t k = 0; k < a->n; ++k) {
+        if (radii)
+            radii[a->id[k]] = a->r ? a->r[k] : sim->world.radius;
+        if (masses)
+            masses[a->id[k]] = a->m ? a->m[k] : 1.0;
+    }
+    return DS_OK;
+}
+
+double ds_radius_max(const ds_sim *sim) { return sim ? sim->world.radius_max : 0.0; }
+
+double ds_area_fraction(const ds_sim *sim)
+{
+    return sim ? sim->world.covered / (sim->world.box * sim->world.box_y) : 0.0;
 }
 
 double ds_collision_seconds(const ds_sim *sim)

@@ -12,9 +12,16 @@ const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator);
 /* The world params describe, defaults resolved (broadphase as given,
  * maybe DS_AUTO). No checks. */
 ds_world ds_world_of(const ds_params *params);
+/* The world of a request, mixture and all (mixture may be NULL), after
+ * every check of ds_diagnose_mixture: its status. */
+ds_status ds_world_of_request(const ds_params *params, const ds_mixture *mixture, ds_world *world);
+/* Disk i's radius and mass in a (checked) mixture; reference_radius is
+ * ds_params.radius, the R of DS_MASS_AREA. */
+double ds_mixture_radius(const ds_mixture *m, size_t i);
+double ds_mixture_mass(const ds_mixture *m, double reference_radius, size_t i);
 
 /* DS_OK, or why disk i cannot be d in world w (not finite, too fast,
  * outside the box): what ds_set and ds_set_all refuse as a value. */
-ds_status ds_check_disk(const ds_world *w, size_t i, ds_disk d, ds_state_error *err);
+ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, ds_state_error *err);
 
 #endif

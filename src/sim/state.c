@@ -11,7 +11,7 @@
 #include "core/overlap.h"
 #include "sim/sim.h"
 
-ds_status ds_check_disk(const ds_world *w, size_t i, ds_disk d, ds_state_error *err)
+ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, ds_state_error *err)
 {
     if (!isfinite(d.x) || !isfinite(d.y) || !isfinite(d.vx) || !isfinite(d.vy))
         return ds_state_refuse(err, DS_ERR_ARG, "disk %zu has a value that is not a finite number",
@@ -28,19 +28,21 @@ ds_status ds_check_disk(const ds_world *w, size_t i, ds_disk d, ds_state_error *
                                    "disk %zu at (%g, %g) is outside the periodic box [0, %g) x "
                                    "[0, %g)",
                                    i, d.x, d.y, w->box, w->box_y);
-    } else if (!(d.x >= w->radius && d.x <= w->box - w->radius && d.y >= w->radius &&
-                 d.y <= w->box_y - w->radius)) {
+    } else if (!(d.x >= radius && d.x <= w->box - radius && d.y >= radius &&
+                 d.y <= w->box_y - radius)) {
         return ds_state_refuse(err, DS_ERR_ARG,
                                "disk %zu at (%g, %g) is outside [%g, %g] x [%g, %g], where the "
                                "centre of a disk of radius %g stays between the walls",
-                               i, d.x, d.y, w->radius, w->box - w->radius, w->radius,
-                               w->box_y - w->radius, w->radius);
+                               i, d.x, d.y, radius, w->box - radius, radius, w->box_y - radius,
+                               radius);
     }
     return DS_OK;
 }
 
-/* The first pair closer than contact allows, named. */
-static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, ds_state_error *err)
+/* The first pair closer than contact allows, named; radii in generation
+ * order (NULL: one radius). */
+static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, const double *radii,
+                                ds_state_error *err)
 {
     const size_t n = w->n;
     double *xy = malloc(2 * n * sizeof *xy);
@@ -51,7 +53,7 @@ static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, ds_stat
         xy[n + i] = disks[i].y;
     }
     size_t j = 0, k = 0;
-    const ds_status st = ds_find_overlap(w, xy, xy + n, &j, &k);
+    const ds_status st = ds_find_overlap(w, xy, xy + n, radii, &j, &k);
     free(xy);
     if (st == DS_ERR_NOMEM)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to check %zu disks", n);
@@ -63,8 +65,9 @@ static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, ds_stat
         }
         return ds_state_refuse(err, DS_ERR_OVERLAP,
                                "disks %zu and %zu overlap: their centres are %.17g apart, closer "
-                               "than 2R = %.17g",
-                               j, k, sqrt(dx * dx + dy * dy), 2.0 * w->radius);
+                               "than their radii's sum, %.17g",
+                               j, k, sqrt(dx * dx + dy * dy),
+                               radii ? radii[j] + radii[k] : 2.0 * w->radius);
     }
     return DS_OK;
 }
@@ -76,20 +79,29 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
     if (!sim || !disks)
         return ds_state_refuse(err, DS_ERR_ARG, "no simulation or no disks (NULL)");
     const ds_world *w = &sim->world;
-    for (size_t i = 0; i < w->n; ++i) {
-        const ds_status st = ds_check_disk(w, i, disks[i], err);
-        if (st != DS_OK)
-            return st;
+    double *radii = NULL;
+    if (sim->disks.r) {
+        if (!(radii = malloc(w->n * sizeof *radii)))
+            return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to check %zu disks", w->n);
+        ds_get_radii(sim, radii, NULL);
     }
-    ds_status st = check_overlaps(w, disks, err);
-    if (st != DS_OK)
+    ds_status st = DS_OK;
+    for (size_t i = 0; i < w->n && st == DS_OK; ++i)
+        st = ds_check_disk(w, i, radii ? radii[i] : w->radius, disks[i], err);
+    if (st == DS_OK)
+        st = check_overlaps(w, disks, radii, err);
+    if (st != DS_OK) {
+        free(radii);
         return st;
+    }
     /* A fresh simulation from the new state, at the present time; the old
      * one is replaced only once the new one stands, so a failure changes
      * nothing. */
     ds_sim fresh = *sim;
     fresh.state = NULL;
     st = ds_disks_alloc(&fresh.disks, w->n);
+    if (st == DS_OK)
+        st = ds_disks_add_mixture(&fresh.disks, sim->disks.r != NULL, sim->disks.m != NULL);
     if (st == DS_OK) {
         for (size_t i = 0; i < w->n; ++i) {
             fresh.disks.x[i] = disks[i].x;
@@ -97,8 +109,11 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
             fresh.disks.vx[i] = disks[i].vx;
             fresh.disks.vy[i] = disks[i].vy;
         }
+        if (fresh.disks.r || fresh.disks.m)
+            ds_get_radii(sim, fresh.disks.r, fresh.disks.m);
         st = fresh.integrator->create(&fresh);
     }
+    free(radii);
     if (st != DS_OK) {
         fresh.integrator->destroy(&fresh);
         ds_disks_free(&fresh.disks);
@@ -146,12 +161,15 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
     ds_put_u32(w, (uint32_t)wo->broadphase);
     ds_put_u32(w, (uint32_t)wo->placement);
     ds_put_u64(w, wo->seed);
+    /* Which of a mixture's arrays follow each disk: 1 radii, 2 masses. */
+    ds_put_u32(w, (sim->disks.r ? 1u : 0u) | (sim->disks.m ? 2u : 0u));
     ds_put_u64(w, sim->steps);
     ds_put_u64(w, sim->observables_since_step);
     ds_put_u64(w, sim->tally.collisions);
     ds_put_u64(w, sim->tally.pairs_tested);
     ds_put_u64(w, sim->tally.wall_count);
     ds_put_f64(w, sim->tally.wall_impulse);
+    ds_put_f64(w, sim->tally.wall_reach);
     ds_put_f64(w, sim->tally.virial);
     ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
     const ds_disks *d = &sim->disks;
@@ -161,6 +179,10 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
         ds_put_f64(w, d->vx[k]);
         ds_put_f64(w, d->vy[k]);
         ds_put_u32(w, d->id[k]);
+        if (d->r)
+            ds_put_f64(w, d->r[k]);
+        if (d->m)
+            ds_put_f64(w, d->m[k]);
     }
     sim->integrator->save(sim, w);
 }
@@ -309,6 +331,31 @@ static ds_status read_world(ds_reader *r, ds_world *w, ds_state_error *err)
 /* The disks in their slots: finite, inside the box up to the rounding of
  * a flight (a centre shown at a time a hair past its wall turn), each
  * generation index once. */
+/* A mixture's radii (after read_disks): the world's smallest, largest and
+ * covered area from them, the largest held to what ds_check_params holds
+ * a radius to. */
+static ds_status mixture_world(ds_sim *sim, ds_state_error *err)
+{
+    ds_world *w = &sim->world;
+    if (!sim->disks.r)
+        return DS_OK;
+    double lo = INFINITY, hi = 0.0, covered = 0.0;
+    for (size_t k = 0; k < sim->disks.n; ++k) {
+        const double r = sim->disks.r[k];
+        lo = fmin(lo, r);
+        hi = fmax(hi, r);
+        covered += DS_TWO_PI * 0.5 * r * r;
+    }
+    const double most = (w->boundary == DS_PERIODIC ? 0.25 : 0.5) * fmin(w->box, w->box_y);
+    if (!(hi < most))
+        return ds_state_refuse(err, DS_ERR_FORMAT, "its largest radius %g does not fit its box",
+                               hi);
+    w->radius_min = lo;
+    w->radius_max = hi;
+    w->covered = covered;
+    return DS_OK;
+}
+
 static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
 {
     const ds_world *w = &sim->world;
@@ -320,18 +367,26 @@ static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
         d->vx[k] = ds_get_f64(r);
         d->vy[k] = ds_get_f64(r);
         d->id[k] = ds_get_u32(r);
+        if (d->r)
+            d->r[k] = ds_get_f64(r);
+        if (d->m)
+            d->m[k] = ds_get_f64(r);
         if (r->failed)
             return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside slot %zu", k);
-        const double lo = w->boundary == DS_PERIODIC ? 0.0 : w->radius - slack;
-        const double hi_x = w->boundary == DS_PERIODIC ? w->box : w->box - w->radius + slack;
-        const double hi_y = w->boundary == DS_PERIODIC ? w->box_y : w->box_y - w->radius + slack;
+        const double radius = d->r ? d->r[k] : w->radius;
+        if (!(radius > 0.0) || !isfinite(radius) || (d->m && !(d->m[k] > 0.0 && isfinite(d->m[k]))))
+            return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu's radius or mass is no number > 0",
+                                   k);
+        const double lo = w->boundary == DS_PERIODIC ? 0.0 : radius - slack;
+        const double hi_x = w->boundary == DS_PERIODIC ? w->box : w->box - radius + slack;
+        const double hi_y = w->boundary == DS_PERIODIC ? w->box_y : w->box_y - radius + slack;
         if (!(d->x[k] >= lo && d->x[k] <= hi_x && d->y[k] >= lo && d->y[k] <= hi_y) ||
             !isfinite(d->vx[k]) || !isfinite(d->vy[k]) || d->id[k] >= d->n ||
             d->slot[d->id[k]] != UINT32_MAX)
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
         d->slot[d->id[k]] = (uint32_t)k; /* seen */
     }
-    return DS_OK;
+    return mixture_world(sim, err);
 }
 
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err)
@@ -357,18 +412,25 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     }
     sim->world = w;
     sim->integrator = ds_integrator_ops_of(w.integrator);
+    const uint32_t arrays = ds_get_u32(&r);
+    if (arrays > 3u)
+        st = ds_state_refuse(err, DS_ERR_FORMAT, "it names arrays this library does not know");
+    else if (ds_disks_add_mixture(&sim->disks, arrays & 1u, arrays & 2u) != DS_OK)
+        st = ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", w.n);
     sim->steps = ds_get_u64(&r);
     sim->observables_since_step = ds_get_u64(&r);
     sim->tally.collisions = ds_get_u64(&r);
     sim->tally.pairs_tested = ds_get_u64(&r);
     sim->tally.wall_count = ds_get_u64(&r);
     sim->tally.wall_impulse = ds_get_f64(&r);
+    sim->tally.wall_reach = ds_get_f64(&r);
     sim->tally.virial = ds_get_f64(&r);
     ds_timer_reset(&sim->collision_timer);
     sim->collision_timer.total = ds_get_f64(&r);
-    if (r.failed || sim->observables_since_step > sim->steps ||
-        !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.virial) ||
-        !(sim->collision_timer.total >= 0.0) || !((double)sim->steps * w.dt < 1e300))
+    if (st == DS_OK && (r.failed || sim->observables_since_step > sim->steps ||
+                        !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.wall_reach) ||
+                        !isfinite(sim->tally.virial) || !(sim->collision_timer.total >= 0.0) ||
+                        !((double)sim->steps * w.dt < 1e300)))
         st = ds_state_refuse(err, DS_ERR_FORMAT, "its clock or tally is not a run's");
     for (size_t k = 0; st == DS_OK && k < w.n; ++k)
         sim->disks.slot[k] = UINT32_MAX;

@@ -16,7 +16,7 @@ static void set_up(ds_bp *bp, ds_broadphase kind, const ds_world *w)
 {
     bp->kind = kind;
     bp->scan = ds_bp_widest_scan();
-    bp->diameter = 2.0 * w->radius;
+    bp->diameter = 2.0 * w->radius_max; /* a mixture prunes with its largest */
     bp->box = w->box;
     bp->box_y = w->box_y;
     bp->periodic = w->boundary == DS_PERIODIC;

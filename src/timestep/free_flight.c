@@ -6,8 +6,45 @@
 #include "core/boundary.h"
 #include "timestep/timestep.h"
 
+/* A mixture: each disk turns at its own radius, and hands the walls 2 m
+ * |v_n| over the perimeter its centre reaches (tally.wall_reach), so that
+ * the partial pressures of the kinds add up (observables.c). */
+static void move_and_reflect_mixture(ds_disks *d, const ds_world *w, ds_tally *t)
+{
+    const size_t n = d->n;
+    const double dt = w->dt;
+    uint64_t hits = 0;
+    double impulse = 0.0, reach = 0.0;
+    for (size_t k = 0; k < n; ++k) {
+        const double r = d->r ? d->r[k] : w->radius, m = d->m ? d->m[k] : 1.0;
+        const double perimeter = 2.0 * (w->box - 2.0 * r) + 2.0 * (w->box_y - 2.0 * r);
+        const double px = d->x[k] + d->vx[k] * dt, py = d->y[k] + d->vy[k] * dt;
+        d->x[k] = px;
+        d->y[k] = py;
+        if ((px < r && d->vx[k] < 0.0) || (px > w->box - r && d->vx[k] > 0.0)) {
+            impulse += 2.0 * m * fabs(d->vx[k]);
+            reach += 2.0 * m * fabs(d->vx[k]) / perimeter;
+            d->vx[k] = -d->vx[k];
+            ++hits;
+        }
+        if ((py < r && d->vy[k] < 0.0) || (py > w->box_y - r && d->vy[k] > 0.0)) {
+            impulse += 2.0 * m * fabs(d->vy[k]);
+            reach += 2.0 * m * fabs(d->vy[k]) / perimeter;
+            d->vy[k] = -d->vy[k];
+            ++hits;
+        }
+    }
+    t->wall_count += hits;
+    t->wall_impulse += impulse;
+    t->wall_reach += reach;
+}
+
 void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
 {
+    if (d->r || d->m) {
+        move_and_reflect_mixture(d, w, t);
+        return;
+    }
     const size_t n = d->n;
     const double dt = w->dt, lo = w->radius;
     const double hi_x = w->box - w->radius, hi_y = w->box_y - w->radius;

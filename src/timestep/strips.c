@@ -67,7 +67,7 @@ struct ds_strips {
  * box * DBL_EPSILON; the slack keeps h - 2m above 2R despite it. */
 static void strips_geometry(const ds_world *w, size_t *count, double *height, double *margin)
 {
-    const double diameter = 2.0 * w->radius, box = w->box_y; /* strips cut the height */
+    const double diameter = 2.0 * w->radius_max, box = w->box_y; /* strips cut the height */
     double s = floor(box / (STRIP_HEIGHT_DIAMETERS * diameter));
     /* No more strips than disks: empty strips cost a loop iteration each. */
     if (s > (double)w->n)
@@ -154,9 +154,11 @@ static void bucket_movers(const ds_disks *d, struct ds_strips *st, size_t nm)
 /* Writes strip t of the new layout at w: the disks that stay (slots of
  * the previous arrays, st->spare, not in mover[], in their previous
  * order) merged by x with the bucket of incoming disks. *mp walks
- * mover[], which is in slot order. Returns the end of the strip. */
-static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w, size_t nm,
-                          size_t *mp)
+ * mover[], which is in slot order. Returns the end of the strip. Compiled
+ * twice (mixture constant): with one kind of disk the copy has no branch
+ * on a mixture's arrays (3.5% of a step at 10^5 disks with it). */
+static ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
+                                       size_t nm, size_t *mp, int mixture)
 {
     const ds_disks *prev = &st->spare;
     const double *restrict x0 = prev->x;
@@ -178,10 +180,19 @@ static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
             from = incoming[in++];
         else
             break;
-        ds_disks_copy(d, w++, prev, from);
+        if (mixture)
+            ds_disks_copy(d, w++, prev, from);
+        else
+            ds_disks_copy_motion(d, w++, prev, from);
     }
     *mp = m;
     return w;
+}
+
+static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w, size_t nm,
+                          size_t *mp)
+{
+    return d->r || d->m ? merge_into(d, st, t, w, nm, mp, 1) : merge_into(d, st, t, w, nm, mp, 0);
 }
 
 /* Lists the disks outside their strip's band, with the strip their
@@ -261,8 +272,9 @@ static void initial_layout(ds_disks *d, const ds_world *world, struct ds_strips 
 }
 
 /* The strips' structure for world w, no disk in it yet. */
-static ds_status strips_alloc(ds_bp *bp, const ds_world *w, size_t n)
+static ds_status strips_alloc(ds_bp *bp, const ds_world *w, const ds_disks *d)
 {
+    const size_t n = d->n;
     struct ds_strips *st = calloc(1, sizeof *st);
     if (!st)
         return DS_ERR_NOMEM;
@@ -275,7 +287,7 @@ static ds_status strips_alloc(ds_bp *bp, const ds_world *w, size_t n)
     st->mover_strip = malloc(n * sizeof *st->mover_strip);
     st->incoming = malloc(n * sizeof *st->incoming);
     if (!st->start || !st->next_start || !st->bucket_start || !st->mover || !st->mover_strip ||
-        !st->incoming || ds_disks_alloc_spare(&st->spare, n) != DS_OK) {
+        !st->incoming || ds_disks_alloc_spare(&st->spare, d) != DS_OK) {
         ds_strips_destroy(bp);
         return DS_ERR_NOMEM;
     }
@@ -285,7 +297,7 @@ static ds_status strips_alloc(ds_bp *bp, const ds_world *w, size_t n)
 ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d)
 {
     const size_t n = d->n;
-    const ds_status st = strips_alloc(bp, w, n);
+    const ds_status st = strips_alloc(bp, w, d);
     if (st != DS_OK)
         return st;
     initial_layout(d, w, bp->strips, bp->scan);
@@ -307,7 +319,7 @@ void ds_strips_save(const ds_bp *bp, ds_writer *w)
 ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r,
                          ds_state_error *err)
 {
-    ds_status status = strips_alloc(bp, w, d->n);
+    ds_status status = strips_alloc(bp, w, d);
     if (status != DS_OK)
         return ds_state_refuse(err, status, "no memory for the strips of %zu disks", d->n);
     struct ds_strips *st = bp->strips;

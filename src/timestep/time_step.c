@@ -19,15 +19,27 @@ typedef struct pair_context {
     double box, box_y;
 } pair_context;
 
-/* The response to a pair whose separation from a to b is (dx, dy). */
+/* The response to a pair whose separation from a to b is (dx, dy). A
+ * mixture's broad phase prunes with the largest diameter: the pair's own
+ * contact distance is tested here. */
 static inline void resolve(ds_disks *d, size_t a, size_t b, double dx, double dy, ds_tally *t)
 {
+    if (d->r) {
+        const double sigma = d->r[a] + d->r[b];
+        if (!(dx * dx + dy * dy < sigma * sigma))
+            return;
+    }
     const double approach = (d->vx[b] - d->vx[a]) * dx + (d->vy[b] - d->vy[a]) * dy;
     /* Only an approaching pair collides. An overlapping pair that already
      * separates was resolved on an earlier step; swapping again would turn
      * it back towards each other and the disks would stick together.
      * approach < 0 needs dx, dy != 0. */
-    if (approach < 0.0)
+    if (!(approach < 0.0))
+        return;
+    if (d->m)
+        ds_collide_masses(dx, dy, approach, d->m[a], d->m[b], &d->vx[a], &d->vy[a], &d->vx[b],
+                          &d->vy[b], t);
+    else
         ds_collide(dx, dy, approach, &d->vx[a], &d->vy[a], &d->vx[b], &d->vy[b], t);
 }
 
@@ -84,17 +96,17 @@ static ds_broadphase choose(const ds_world *w)
 
 /* A head-on pair at 3x the initial speed (which the Rayleigh tail exceeds
  * with probability e^-9) can pass through each other between two steps
- * when 2 * speed_max * dt > 4 R. */
+ * when 2 * speed_max * dt > 4 R (the smallest R of a mixture). */
 static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *err)
 {
-    if (2.0 * 3.0 * w->speed * w->dt > 4.0 * w->radius) {
+    if (2.0 * 3.0 * w->speed * w->dt > 4.0 * w->radius_min) {
         if (warnings)
             *warnings |= DS_WARN_TUNNELING;
         if (err)
             snprintf(err->warning, sizeof err->warning,
                      "radius = %g is small for speeds near %g and dt = %g: a fast pair can pass "
                      "through each other within one step and miss its collision",
-                     w->radius, w->speed, w->dt);
+                     w->radius_min, w->speed, w->dt);
     }
     return DS_OK;
 }
@@ -146,6 +158,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk d)
 
 const ds_integrator_ops ds_time_step_ops = {
     .name = "step",
+    .min_room = 0.0, /* a step is a fixed amount of work, in any room */
     .fits = fits,
     .choose = choose,
     .check = check,

@@ -1,0 +1,413 @@
+/* SPDX-License-Identifier: MIT */
+/* Mixtures: disks of their own radius and mass. Unequal masses collide
+ * as the elastic rule says, to rounding, conserving energy and momentum;
+ * every broad phase finds the pairs brute force finds (ratios 1.4 and 3,
+ * walls and periodic); a dilute binary mixture's pressure has the exact
+ * second virial coefficient of mixtures; the energy of a long event-driven
+ * run with unequal masses stays put; one kind of disk is the plain
+ * simulation to the bit; refusals name the mixture. */
+#include "test_util.h"
+
+#include "timestep/broad_phase.h"
+
+#define PI 3.14159265358979323846
+
+static ds_sim *pair_sim(ds_integrator integrator, const double r[2], const double m[2])
+{
+    ds_params p = ds_default_params(2, r[0]);
+    p.integrator = integrator;
+    p.box = 1e5; /* the two disks alone in the middle */
+    ds_mixture mix = {0, NULL, r, m, DS_MASS_EQUAL};
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create_mixture(&p, &mix, &sim), DS_OK);
+    return sim;
+}
+
+static void put(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
+{
+    const ds_disk d = {x, y, vx, vy};
+    assert_int_equal(ds_set(sim, i, d), DS_OK);
+}
+
+/* Within 1e-12 of the speed scale: the rule's few products and sums. */
+static void assert_velocity(const ds_sim *sim, size_t i, double vx, double vy)
+{
+    const ds_disk d = ds_get(sim, i);
+    if (fabs(d.vx - vx) > 1e-12 * 100.0 || fabs(d.vy - vy) > 1e-12 * 100.0)
+        fail_msg("disk %zu: (%.17g, %.17g), want (%.17g, %.17g)", i, d.vx, d.vy, vx, vy);
+}
+
+static void assert_conserved(const ds_sim *sim, double e0, double px0, double py0)
+{
+    double px, py;
+    ds_momentum(sim, &px, &py);
+    assert_true(fabs(ds_kinetic_energy(sim) - e0) <= 1e-12 * e0);
+    assert_true(fabs(px - px0) <= 1e-12 * 1e3 && fabs(py - py0) <= 1e-12 * 1e3);
+}
+
+/* Head on, masses 1 and 3, radii 5 and 7, speeds 40 and -60 along x:
+ * v1' = ((m1 - m2) v1 + 2 m2 v2) / (m1 + m2) = (-80 - 360) / 4 = -110,
+ * v2' = ((m2 - m1) v2 + 2 m1 v1) / (m1 + m2) = (-120 + 80) / 4 = -10. Both
+ * integrators: the line of centres is x however late the time step sees
+ * the contact. */
+static void test_unequal_masses_collide_head_on_as_the_elastic_rule_says(void **state)
+{
+    (void)state;
+    const double r[2] = {5.0, 7.0}, m[2] = {1.0, 3.0};
+    for (int integ = DS_TIME_STEP; integ <= DS_EVENT_DRIVEN; ++integ) {
+        ds_sim *sim = pair_sim((ds_integrator)integ, r, m);
+        put(sim, 0, 50000.0, 50000.0, 40.0, 0.0);
+        put(sim, 1, 50020.0, 50000.0, -60.0, 0.0);
+        const double e0 = ds_kinetic_energy(sim);
+        ds_run(sim, 200);
+        assert_int_equal(ds_collision_count(sim), 1);
+        assert_velocity(sim, 0, -110.0, 0.0);
+        assert_velocity(sim, 1, -10.0, 0.0);
+        assert_conserved(sim, e0, 40.0 - 180.0, 0.0);
+        ds_destroy(sim);
+    }
+}
+
+/* Oblique, event-driven: disk 0 (R 4, m 2) at rest, disk 1 (R 6, m 0.5)
+ * coming along -x with impact parameter b = 6: at contact the line of
+ * centres is n = (sqrt(100 - 36), 6) / 10 = (0.8, 0.6). Disk 0 takes
+ * 2 m1 / (m0 + m1) (v1 . n) n = 0.4 (-80)(0.8, 0.6) = (-25.6, -19.2), and
+ * disk 1 gives 2 m0 / (m0 + m1) times that along n: (-100, 0) - 1.6 (-80)
+ * (0.8, 0.6) = (2.4, 76.8). */
+static void test_unequal_masses_collide_obliquely_along_the_line_of_centres(void **state)
+{
+    (void)state;
+    const double r[2] = {4.0, 6.0}, m[2] = {2.0, 0.5};
+    ds_sim *sim = pair_sim(DS_EVENT_DRIVEN, r, m);
+    put(sim, 0, 50000.0, 50000.0, 0.0, 0.0);
+    put(sim, 1, 50030.0, 50006.0, -100.0, 0.0);
+    const double e0 = ds_kinetic_energy(sim);
+    ds_run(sim, 500);
+    assert_int_equal(ds_collision_count(sim), 1);
+    assert_velocity(sim, 0, -25.6, -19.2);
+    assert_velocity(sim, 1, 2.4, 76.8);
+    assert_conserved(sim, e0, -50.0, 0.0);
+    ds_destroy(sim);
+}
+
+/* A mixture of n disks, 50:50 radii r and ratio r, masses by area. */
+static ds_sim *binary(size_t n, double r, double ratio, double box_y, ds_integrator integ,
+                      ds_broadphase bp, ds_boundary boundary, uint64_t seed)
+{
+    ds_params p = ds_default_params(n, r);
+    p.integrator = integ;
+    p.broadphase = bp;
+    p.boundary = boundary;
+    p.box_y = box_y;
+    p.seed = seed;
+    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, ratio * r, 0.0}};
+    ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_AREA};
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create_mixture(&p, &mix, &sim), DS_OK);
+    return sim;
+}
+
+/* ------------------------------------------------------------------ */
+/* Every broad phase, the pairs of brute force                          */
+/* ------------------------------------------------------------------ */
+
+typedef struct pair_list {
+    uint64_t *pairs;
+    size_t count, cap;
+    double box_x, box_y; /* periodic: the sides for the nearest image; else 0 */
+} pair_list;
+
+/* A broad phase reports the pairs closer than the largest diameter; the
+ * pair test of a mixture is its own contact distance: kept here as the
+ * time step keeps it. */
+static void record_touching(ds_disks *d, size_t a, size_t b, void *ctx)
+{
+    pair_list *list = ctx;
+    double dx = d->x[b] - d->x[a], dy = d->y[b] - d->y[a];
+    if (list->box_x > 0.0) {
+        dx -= list->box_x * round(dx / list->box_x);
+        dy -= list->box_y * round(dy / list->box_y);
+    }
+    const double sigma = d->r[a] + d->r[b];
+    if (!(dx * dx + dy * dy < sigma * sigma))
+        return;
+    if (list->count == list->cap) {
+        list->cap = list->cap ? 2 * list->cap : 256;
+        list->pairs = realloc(list->pairs, list->cap * sizeof *list->pairs);
+        assert_non_null(list->pairs);
+    }
+    const uint64_t ia = d->id[a], ib = d->id[b];
+    list->pairs[list->count++] = ia < ib ? ia << 32 | ib : ib << 32 | ia;
+}
+
+static int compare_u64(const void *a, const void *b)
+{
+    const uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+static pair_list touching(ds_sim *sim, ds_broadphase kind)
+{
+    const int periodic = ds_boundary_used(sim) == DS_PERIODIC;
+    pair_list list = {NULL, 0, 0, periodic ? ds_box(sim) : 0.0, periodic ? ds_box_y(sim) : 0.0};
+    ds_bp *bp = sim->state;
+    const ds_broadphase own = bp->kind;
+    bp->kind = kind;
+    ds_bp_find_pairs(bp, &sim->disks, record_touching, &list);
+    bp->kind = own;
+    ds_disks_rebuild_slots(&sim->disks);
+    if (list.count)
+        qsort(list.pairs, list.count, sizeof *list.pairs, compare_u64);
+    return list;
+}
+
+static void test_every_broad_phase_finds_the_pairs_of_brute_force(void **state)
+{
+    (void)state;
+    static const double ratios[] = {1.4, 3.0};
+    static const ds_broadphase sweeps[] = {DS_SAP, DS_SAP_STRIPS};
+    ds_rng rng;
+    ds_rng_seed(&rng, 17);
+    size_t total = 0;
+    for (int k = 0; k < 2; ++k)
+        for (int b = DS_WALLS; b <= DS_PERIODIC; ++b)
+            for (int s = 0; s < 2; ++s) {
+                ds_sim *sim =
+                    binary(3000, 2.0, ratios[k], 800.0, DS_TIME_STEP, sweeps[s], (ds_boundary)b, 5);
+                /* Scatter every disk anywhere (overlaps and all: the time
+                 * step takes them), then let them move. */
+                for (size_t i = 0; i < ds_count(sim); ++i) {
+                    const double r = ds_radius_of(sim, i);
+                    const double lo = b == DS_PERIODIC ? 0.0 : r;
+                    ds_disk d = {ds_rng_uniform(&rng, lo, ds_box(sim) - lo),
+                                 ds_rng_uniform(&rng, lo, ds_box_y(sim) - lo),
+                                 ds_rng_uniform(&rng, -100.0, 100.0),
+                                 ds_rng_uniform(&rng, -100.0, 100.0)};
+                    assert_int_equal(ds_set(sim, i, d), DS_OK);
+                }
+                for (int step = 0; step < 4; ++step) {
+                    pair_list got = touching(sim, sweeps[s]);
+                    pair_list want = touching(sim, DS_BRUTE_FORCE);
+                    assert_int_equal(got.count, want.count);
+                    for (size_t p = 0; p < want.count; ++p)
+                        assert_true(got.pairs[p] == want.pairs[p]);
+                    total += want.count;
+                    free(got.pairs);
+                    free(want.pairs);
+                    ds_run(sim, 5);
+                }
+                ds_destroy(sim);
+            }
+    assert_true(total > 1000); /* not empty cases */
+}
+
+/* The event-driven integrator, cells against brute force: the same
+ * collisions at the same times, positions equal up to rounding, which
+ * collisions amplify, so about 2 collisions per disk. */
+static void test_event_cells_follow_brute_force_in_a_mixture(void **state)
+{
+    (void)state;
+    static const double ratios[] = {1.4, 3.0};
+    for (int k = 0; k < 2; ++k)
+        for (int b = DS_WALLS; b <= DS_PERIODIC; ++b) {
+            ds_sim *cells =
+                binary(300, 8.0, ratios[k], 0.0, DS_EVENT_DRIVEN, DS_CELLS, (ds_boundary)b, 3);
+            ds_sim *brute = binary(300, 8.0, ratios[k], 0.0, DS_EVENT_DRIVEN, DS_BRUTE_FORCE,
+                                   (ds_boundary)b, 3);
+            while (ds_collision_count(cells) < 600) {
+                ds_step(cells);
+                ds_step(brute);
+                assert_int_equal(ds_collision_count(cells), ds_collision_count(brute));
+            }
+            for (size_t i = 0; i < 300; ++i) {
+                const ds_disk c = ds_get(cells, i), d = ds_get(brute, i);
+                assert_true(fabs(c.x - d.x) < 1e-6 && fabs(c.y - d.y) < 1e-6);
+            }
+            /* And no pair closer than its contact distance. */
+            ds_disk all[300];
+            assert_int_equal(ds_get_all(cells, all), DS_OK);
+            assert_int_equal(ds_set_all(cells, all, NULL), DS_OK);
+            ds_destroy(cells);
+            ds_destroy(brute);
+        }
+}
+
+/* ------------------------------------------------------------------ */
+/* Pressure and energy                                                  */
+/* ------------------------------------------------------------------ */
+
+/* Z = P A / (N kT) = 1 + B2 rho + B3 rho^2 + ..., and for a mixture
+ * B2 = (pi / 2) sum_ij x_i x_j sigma_ij^2, sigma_ij = r_i + r_j. A dilute
+ * 50:50 mixture of ratio 1.4, periodic, event-driven. The B3 term is
+ * bounded with the one-kind ratio B3 / B2^2 = 4/3 - sqrt(3)/pi = 0.782,
+ * taken twice for the mixture's asymmetry; the statistical error from 10
+ * blocks (each many sound crossings of the box). N kT is the kinetic
+ * energy (zero total momentum: the canonical temperature of the pair's
+ * motion differs by 1/N, 2e-4 here, far below the tolerance). */
+static void test_a_dilute_mixture_has_the_second_virial_coefficient_of_mixtures(void **state)
+{
+    (void)state;
+    const size_t n = 4000;
+    const double r = 1.0, ratio = 1.4; /* area fraction 0.019 */
+    ds_sim *sim = binary(n, r, ratio, 0.0, DS_EVENT_DRIVEN, DS_AUTO, DS_PERIODIC, 21);
+    const double sigma[3] = {2.0 * r, r + ratio * r, 2.0 * ratio * r}; /* 11, 12, 22 */
+    const double b2 =
+        PI / 2.0 *
+        (0.25 * sigma[0] * sigma[0] + 0.5 * sigma[1] * sigma[1] + 0.25 * sigma[2] * sigma[2]);
+    const double rho = (double)n / (ds_box(sim) * ds_box_y(sim));
+    const double expected = b2 * rho; /* Z - 1 to first order */
+    ds_run(sim, 2000);
+    const int blocks = quick_mode() ? 4 : 10;
+    double sum = 0.0, sum2 = 0.0;
+    for (int k = 0; k < blocks; ++k) {
+        ds_reset_observables(sim);
+        ds_run(sim, quick_mode() ? 2000 : 5000);
+        const double z =
+            ds_virial_pressure(sim) * ds_box(sim) * ds_box_y(sim) / ds_kinetic_energy(sim) - 1.0;
+        sum += z;
+        sum2 += z * z;
+    }
+    const double mean = sum / blocks;
+    const double error = sqrt(fmax(sum2 / blocks - mean * mean, 0.0) / (blocks - 1));
+    const double third = 2.0 * 0.782 * expected * expected;
+    print_message("Z - 1 = %.6f +- %.6f, B2 rho = %.6f (B3 bound %.6f)\n", mean, error, expected,
+                  third);
+    assert_true(fabs(mean - expected) < third + 4.0 * error);
+    assert_true(error < 0.05 * expected); /* a measurement, not noise */
+    ds_destroy(sim);
+}
+
+/* Masses 1 and 9 (ratio 3, by area), walls and periodic: the energy of an
+ * event-driven run is conserved to rounding, 1e-12 relative, over 10^6
+ * collisions (each exchange is exact to a few ulps; the errors add as a
+ * random walk, ~1e-16 sqrt(1e6) = 1e-13). */
+static void test_energy_is_conserved_over_a_million_collisions_with_unequal_masses(void **state)
+{
+    (void)state;
+    const uint64_t target = quick_mode() ? 20000 : 1000000;
+    ds_sim *sim = binary(2000, 4.0, 3.0, 0.0, DS_EVENT_DRIVEN, DS_AUTO, DS_WALLS, 8);
+    const double e0 = ds_kinetic_energy(sim);
+    while (ds_collision_count(sim) < target)
+        ds_run(sim, 100);
+    const double e1 = ds_kinetic_energy(sim);
+    print_message("%llu collisions: energy %.17g -> %.17g\n",
+                  (unsigned long long)ds_collision_count(sim), e0, e1);
+    assert_true(fabs(e1 - e0) <= 1e-12 * e0);
+    ds_destroy(sim);
+}
+
+/* ------------------------------------------------------------------ */
+/* One kind, placement, refusals                                        */
+/* ------------------------------------------------------------------ */
+
+static void test_one_kind_is_the_plain_simulation_to_the_bit(void **state)
+{
+    (void)state;
+    for (int integ = DS_TIME_STEP; integ <= DS_EVENT_DRIVEN; ++integ) {
+        ds_params p = ds_default_params(400, 5.0);
+        p.integrator = (ds_integrator)integ;
+        const ds_species one = {400, 5.0, 0.0};
+        ds_mixture mix = {1, &one, NULL, NULL, DS_MASS_AREA};
+        ds_sim *plain = NULL, *mixed = NULL;
+        assert_int_equal(ds_create(&p, &plain), DS_OK);
+        assert_int_equal(ds_create_mixture(&p, &mix, &mixed), DS_OK);
+        ds_run(plain, 1000);
+        ds_run(mixed, 1000);
+        char a[65536], b[65536];
+        size_t la = 0, lb = 0;
+        assert_int_equal(ds_format_frame(plain, 1, a, sizeof a, &la), DS_OK);
+        assert_int_equal(ds_format_frame(mixed, 1, b, sizeof b, &lb), DS_OK);
+        assert_int_equal(la, lb);
+        assert_memory_equal(a, b, la);
+        assert_true(ds_pressure(plain) == ds_pressure(mixed));
+        ds_destroy(plain);
+        ds_destroy(mixed);
+    }
+}
+
+/* Every disk inside the box at its own radius, none overlapping, masses
+ * (r / R)^2, the frames' third column each disk's radius. */
+static void test_a_random_mixture_is_placed_inside_and_apart(void **state)
+{
+    (void)state;
+    for (int b = DS_WALLS; b <= DS_PERIODIC; ++b) {
+        ds_sim *sim = binary(2000, 6.0, 1.4, 0.0, DS_EVENT_DRIVEN, DS_AUTO, (ds_boundary)b, 4);
+        ds_disk all[2000];
+        assert_int_equal(ds_get_all(sim, all), DS_OK);
+        /* Inside and apart: what ds_set_all checks. */
+        assert_int_equal(ds_set_all(sim, all, NULL), DS_OK);
+        assert_true(fabs(ds_mass_of(sim, 1999) - 1.96) < 1e-15);
+        assert_true(ds_mass_of(sim, 0) == 1.0);
+        assert_true(ds_radius_of(sim, 1999) == 6.0 * 1.4 && ds_radius_max(sim) == 6.0 * 1.4);
+        const double eta = 1000.0 * PI * (36.0 + 36.0 * 1.96) / 1e6;
+        assert_true(fabs(ds_area_fraction(sim) - eta) < 1e-12);
+        /* The frame's third column reads back as each disk's radius. */
+        static char text[200000];
+        size_t len = 0;
+        assert_int_equal(ds_format_frame(sim, 0, text, sizeof text, &len), DS_OK);
+        ds_frame frame;
+        assert_int_equal(ds_parse_frame(text, len, &frame, NULL), DS_OK);
+        assert_int_equal(frame.count, 2000);
+        for (size_t i = 0; i < 2000; ++i)
+            assert_true(frame.disks[i].r == ds_radius_of(sim, i));
+        ds_frame_free(&frame);
+        ds_destroy(sim);
+    }
+}
+
+static void test_a_bad_mixture_is_refused_with_its_reason(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(10, 5.0);
+    ds_params_error why;
+    ds_species kinds[2] = {{4, 5.0, 0.0}, {5, 7.0, 0.0}};
+    ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    assert_string_equal(why.field, "mixture");
+    assert_non_null(strstr(why.message, "add up to 9, not n = 10"));
+    kinds[1].count = 6;
+    kinds[1].radius = NAN;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    kinds[1].radius = 600.0;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    assert_non_null(strstr(why.message, "largest radius"));
+    kinds[1].radius = 7.0;
+    kinds[1].mass = -1.0;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    kinds[1].mass = 0.0;
+    mix.mass_rule = (ds_mass_rule)7;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    mix.mass_rule = DS_MASS_AREA;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_OK);
+    const double radii[10] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    mix.radii = radii; /* both forms */
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    ds_mixture per_disk = {0, NULL, radii, NULL, DS_MASS_EQUAL};
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create_mixture(&p, &per_disk, &sim), DS_OK);
+    assert_true(ds_radius_of(sim, 9) == 10.0 && ds_mass_of(sim, 9) == 1.0);
+    ds_destroy(sim);
+    /* Many disks beyond random placement's reach, counted with each
+     * radius. */
+    ds_params many = ds_default_params(4000, 6.0);
+    const ds_species dense[2] = {{2000, 6.0, 0.0}, {2000, 8.4, 0.0}};
+    ds_mixture big = {2, dense, NULL, NULL, DS_MASS_EQUAL};
+    assert_int_equal(ds_diagnose_mixture(&many, &big, NULL, &why), DS_ERR_PLACEMENT);
+    assert_non_null(strstr(why.message, "radii 6 to 8.4"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_unequal_masses_collide_head_on_as_the_elastic_rule_says),
+        cmocka_unit_test(test_unequal_masses_collide_obliquely_along_the_line_of_centres),
+        cmocka_unit_test(test_every_broad_phase_finds_the_pairs_of_brute_force),
+        cmocka_unit_test(test_event_cells_follow_brute_force_in_a_mixture),
+        cmocka_unit_test(test_a_dilute_mixture_has_the_second_virial_coefficient_of_mixtures),
+        cmocka_unit_test(test_energy_is_conserved_over_a_million_collisions_with_unequal_masses),
+        cmocka_unit_test(test_one_kind_is_the_plain_simulation_to_the_bit),
+        cmocka_unit_test(test_a_random_mixture_is_placed_inside_and_apart),
+        cmocka_unit_test(test_a_bad_mixture_is_refused_with_its_reason),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
