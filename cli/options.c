@@ -323,9 +323,10 @@ options parse_args(int argc, char **argv)
         (void)strtod(a, &num_end);
         if (a[0] == '-' && a[1] != '\0' && num_end == a)
             die(EXIT_USAGE, "unknown option '%s' (try --help)", a);
-        if (npos == 2)
+        if (npos < 2)
+            positional[npos++] = a;
+        else
             die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
-        positional[npos++] = a;
     }
     check_combination(&o, npos, system_option, placement_option);
     if (npos == 2) {

@@ -134,9 +134,10 @@ static char *read_input(const char *option, const char *path, size_t *len)
     for (;;) {
         if (got == cap) {
             char *grown = realloc(data, cap *= 2);
-            if (!grown)
+            if (grown)
+                data = grown;
+            else
                 die(EXIT_RUN, "cannot read %s %s: out of memory", option, path);
-            data = grown;
         }
         ssize_t r = read(fd, data + got, cap - got);
         if (r < 0 && errno == EINTR)
