@@ -36,7 +36,7 @@ DISKS := $(OUT)disks
 # core/ (what every part shares: the disk arrays, the grid, the box),
 # timestep/ and event/ (the integrators), init/ (placement), observe/
 # (observables), io/ (text formats), and sim/ (the public API of the
-# simulation, over the parts). The command is cli/disks.c.
+# simulation, over the parts). The command is every file of cli/.
 LIB_DIRS := core timestep event init observe io sim
 LIB_SRC := $(sort $(foreach d,$(LIB_DIRS),$(wildcard src/$(d)/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
@@ -59,7 +59,8 @@ $(BUILD)/%.o: src/%.c $(LIB_HDR) $(FLAGS_STAMP) | $(BUILD)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
-$(BUILD)/cli/%.o: cli/%.c include/disk_sim.h $(FLAGS_STAMP) | $(BUILD)
+CLI_OBJ := $(patsubst cli/%.c,$(BUILD)/cli/%.o,$(sort $(wildcard cli/*.c)))
+$(BUILD)/cli/%.o: cli/%.c include/disk_sim.h $(wildcard cli/*.h) $(FLAGS_STAMP) | $(BUILD)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) -c $< -o $@
 
@@ -67,7 +68,7 @@ $(LIB): $(LIB_OBJ)
 	rm -f $@
 	$(AR) rcs $@ $^
 
-$(DISKS): $(BUILD)/cli/disks.o $(LIB)
+$(DISKS): $(CLI_OBJ) $(LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
 
 # ---------------------------------------------------------------- tests

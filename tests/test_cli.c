@@ -42,8 +42,8 @@
 /* A bad case must fail fast: a run taking this long is a hang. Generous
  * because sanitizers and valgrind slow everything down. */
 #define CASE_TIMEOUT_SECONDS 60
-#define MAX_ARGS 24
-#define MAX_CASES 128
+#define MAX_ARGS 32
+#define MAX_CASES 256
 #define MAX_ENTRIES 512 /* files a case may leave: more is a failure */
 
 typedef struct cli_case {
@@ -170,6 +170,26 @@ static int write_bytes(const char *path, const char *data, size_t len)
 #define UNPRIVILEGED_ID 65534
 #define CANNOT_REACH_AS_NOBODY 123
 
+static int run_disks_in(const char *dir, const char *args, char *err, size_t cap);
+
+/* XORs the byte at offset (from the end if negative) with 0xff, or cuts
+ * the file to offset bytes. */
+static int damage(const char *path, long offset, int cut)
+{
+    FILE *f = fopen(path, "r+b");
+    if (!f || fseek(f, 0, SEEK_END) != 0)
+        return f ? (fclose(f), -1) : -1;
+    long size = ftell(f), at = offset < 0 ? size + offset : offset;
+    int ok = at >= 0 && at < size;
+    if (ok && cut) {
+        fclose(f);
+        return truncate(path, (off_t)at);
+    }
+    int c = ok && fseek(f, at, SEEK_SET) == 0 ? fgetc(f) : EOF;
+    ok = c != EOF && fseek(f, at, SEEK_SET) == 0 && fputc(c ^ 0xff, f) != EOF;
+    return fclose(f) != 0 || !ok ? -1 : 0;
+}
+
 /* Applies the setup steps inside dir; sets *fsize, *drop, out_path and
  * path_env for the child. Returns 0, or -1 on a broken setup. */
 static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *drop, char *out_path,
@@ -218,6 +238,18 @@ static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *dro
             snprintf(path_env, path_cap, "%s", path);
         } else if (strcmp(step, "fsize") == 0) {
             *fsize = atol(arg);
+        } else if (strcmp(step, "disks") == 0) {
+            char err[1024];
+            if (run_disks_in(dir, arg, err, sizeof err) != 0)
+                return -1;
+        } else if (strcmp(step, "flip") == 0 || strcmp(step, "cut") == 0) {
+            char *at = strchr(name, '@');
+            if (!at)
+                return -1;
+            *at = '\0';
+            snprintf(path, sizeof path, "%s/%s", dir, name);
+            if (damage(path, atol(at + 1), strcmp(step, "cut") == 0) != 0)
+                return -1;
         } else {
             return -1;
         }
@@ -299,8 +331,25 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
         char full[PATH_MAX];
         struct stat st;
         snprintf(full, sizeof full, "%s/%s", dir, after[i]);
-        if (lstat(full, &st) == 0 && S_ISDIR(st.st_mode))
-            continue; /* --out directories are created before the failure */
+        if (lstat(full, &st) == 0 && S_ISDIR(st.st_mode)) {
+            /* A failed disks may leave the --out it made, holding frames
+             * (the renderer's promise is only about files). */
+            DIR *d = opendir(full);
+            int entries = 0;
+            for (struct dirent *e; d && (e = readdir(d));)
+                entries += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+            if (d)
+                closedir(d);
+            if (strncmp(c->command, "disks", 5) != 0)
+                continue;
+            if (c->exit_code == 2)
+                snprintf(o->problem, sizeof o->problem, "a usage error made directory '%s'",
+                         after[i]);
+            else if (entries == 0)
+                snprintf(o->problem, sizeof o->problem, "empty directory '%s' left behind",
+                         after[i]);
+            continue;
+        }
         const char *slash = strrchr(after[i], '/');
         const char *base = slash ? slash + 1 : after[i];
         ds_frame frame;
@@ -481,15 +530,201 @@ static void test_one_disk_of_almost_half_the_box_runs(void **state)
     expect_a_good_run("disks 1 499.9 --frames 3 --quiet --out out", 3);
 }
 
-/* Starts disks writing frames and a trajectory as fast as it can, waits
- * for a few frames, interrupts it and checks that only complete frames
- * remain (the trajectory's temporary removed, none renamed into place). Whether the
- * signal lands inside a write is luck, so it is tried several times; the
- * invariant must hold every time. */
-static void interrupt_a_run(int sig)
+/* ------------------------------------------------------------------ */
+/* Runs that survive: checkpoints, restarts, --from, the outputs        */
+/* ------------------------------------------------------------------ */
+
+/* Runs disks with args (separated by spaces) in dir, standard output to
+ * /dev/null and standard error into err; returns the exit status, or
+ * 128 + the signal that ended it. */
+static int run_disks_in(const char *dir, const char *args, char *err, size_t cap)
+{
+    char words[1024];
+    snprintf(words, sizeof words, "%s", args);
+    char *argv[MAX_ARGS + 1], *save = NULL;
+    int argc = 0;
+    argv[argc++] = disks_path;
+    for (char *w = strtok_r(words, " ", &save); w && argc < MAX_ARGS;
+         w = strtok_r(NULL, " ", &save))
+        argv[argc++] = w;
+    argv[argc] = NULL;
+    int pipefd[2];
+    if (pipe(pipefd) != 0)
+        return -1;
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        int devnull = open("/dev/null", O_RDWR);
+        dup2(devnull, STDIN_FILENO);
+        dup2(devnull, STDOUT_FILENO);
+        dup2(pipefd[1], STDERR_FILENO);
+        close(pipefd[0]);
+        if (chdir(dir) != 0)
+            _exit(125);
+        alarm(CASE_TIMEOUT_SECONDS);
+        execv(disks_path, argv);
+        _exit(126);
+    }
+    close(pipefd[1]);
+    size_t got = 0;
+    ssize_t r;
+    while ((r = read(pipefd[0], err + got, cap - 1 - got)) > 0 || (r < 0 && errno == EINTR))
+        got += r > 0 ? (size_t)r : 0;
+    err[got] = '\0';
+    close(pipefd[0]);
+    int ws = 0;
+    while (waitpid(pid, &ws, 0) < 0 && errno == EINTR)
+        ;
+    return WIFEXITED(ws) ? WEXITSTATUS(ws) : 128 + WTERMSIG(ws);
+}
+
+/* A run that must succeed quietly. */
+static void must_run(const char *dir, const char *fmt, ...)
+{
+    char args[1024], err[4096];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(args, sizeof args, fmt, ap);
+    va_end(ap);
+    int status = run_disks_in(dir, args, err, sizeof err);
+    if (status != 0 || err[0])
+        fail_msg("`disks %s` in %s: status %d, stderr: %s", args, dir, status, err);
+}
+
+/* A whole file, NUL-terminated; NULL if it cannot be read. */
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    size_t cap = 1 << 16, n = 0;
+    char *data = malloc(cap);
+    for (size_t r; data && (r = fread(data + n, 1, cap - n - 1, f)) > 0;) {
+        n += r;
+        if (n + 1 == cap) {
+            char *grown = realloc(data, cap *= 2);
+            if (!grown)
+                free(data);
+            data = grown;
+        }
+    }
+    fclose(f);
+    if (data)
+        data[n] = '\0';
+    if (len)
+        *len = n;
+    return data;
+}
+
+static char *slurp_in(const char *dir, const char *name, size_t *len)
+{
+    char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return slurp(path, len);
+}
+
+static int exists_in(const char *dir, const char *name)
+{
+    char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return access(path, F_OK) == 0;
+}
+
+/* Fails unless dir/a and dir/b hold the same bytes. */
+static void assert_same_files(const char *dir, const char *a, const char *b)
+{
+    size_t la = 0, lb = 0;
+    char *x = slurp_in(dir, a, &la), *y = slurp_in(dir, b, &lb);
+    int same = x && y && la == lb && memcmp(x, y, la) == 0;
+    free(x);
+    free(y);
+    if (!same)
+        fail_msg("%s and %s differ (in %s)", a, b, dir);
+}
+
+static void frame_name(char *out, size_t cap, const char *dir, long k)
+{
+    snprintf(out, cap, "%s/frame_%04ld.txt", dir, k);
+}
+
+/* A run stopped after 5 frames and restarted from its checkpoint for 5
+ * more writes what one run of 10 writes, to the byte: the frames, the
+ * --stats rows and the trajectory (the restart's files hold its frames:
+ * the two parts, joined, are the whole run). */
+static void restart_matches_one_run(const char *system)
 {
     char dir[] = "/tmp/ds_test_cli_XXXXXX";
     assert_non_null(mkdtemp(dir));
+    const char *run = "--steps-per-frame 20 --velocities --quiet";
+    must_run(dir, "200 5 %s --frames 10 %s --out one --stats one.csv --trajectory one.xyz", system,
+             run);
+    must_run(dir,
+             "200 5 %s --frames 5 %s --out two --stats a.csv --trajectory a.xyz "
+             "--checkpoint c.ckpt --checkpoint-every 2",
+             system, run);
+    must_run(dir,
+             "--restart c.ckpt --frames 5 %s --out two --stats b.csv --trajectory b.xyz "
+             "--checkpoint c.ckpt",
+             run);
+    for (long k = 0; k < 10; ++k) {
+        char a[64], b[64];
+        frame_name(a, sizeof a, "one", k);
+        frame_name(b, sizeof b, "two", k);
+        assert_same_files(dir, a, b);
+    }
+    assert_false(exists_in(dir, "two/frame_0010.txt"));
+    size_t l1, la, lb;
+    char *one = slurp_in(dir, "one.csv", &l1), *a = slurp_in(dir, "a.csv", &la),
+         *b = slurp_in(dir, "b.csv", &lb);
+    assert_non_null(one);
+    assert_non_null(a);
+    assert_non_null(b);
+    const char *rows = strchr(b, '\n') + 1; /* after the header */
+    assert_int_equal(la + (lb - (size_t)(rows - b)), l1);
+    assert_memory_equal(one, a, la);
+    assert_memory_equal(one + la, rows, lb - (size_t)(rows - b));
+    free(one);
+    free(a);
+    free(b);
+    one = slurp_in(dir, "one.xyz", &l1);
+    a = slurp_in(dir, "a.xyz", &la);
+    b = slurp_in(dir, "b.xyz", &lb);
+    assert_int_equal(la + lb, l1);
+    assert_memory_equal(one, a, la);
+    assert_memory_equal(one + la, b, lb);
+    free(one);
+    free(a);
+    free(b);
+    /* The end checkpoint is frame 9's: a second restart goes on to 10. */
+    must_run(dir, "--restart c.ckpt --frames 1 %s --out two", run);
+    assert_true(exists_in(dir, "two/frame_0010.txt"));
+    remove_tree(dir);
+}
+
+static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **state)
+{
+    (void)state;
+    restart_matches_one_run("");
+    restart_matches_one_run("--periodic");
+    restart_matches_one_run("--integrator event");
+    restart_matches_one_run("--integrator event --periodic");
+}
+
+/* Starts disks in dir with the given arguments and sends sig once
+ * dir/wait_for exists (no timing is asserted: the alarm bounds a stuck
+ * run). Returns the wait status. */
+static int start_and_signal_n(const char *dir, const char *args, const char *wait_for, int sig,
+                              int times)
+{
+    char words[1024];
+    snprintf(words, sizeof words, "%s", args);
+    char *argv[MAX_ARGS + 1], *save = NULL;
+    int argc = 0;
+    argv[argc++] = disks_path;
+    for (char *w = strtok_r(words, " ", &save); w && argc < MAX_ARGS;
+         w = strtok_r(NULL, " ", &save))
+        argv[argc++] = w;
+    argv[argc] = NULL;
     fflush(NULL);
     pid_t pid = fork();
     assert_true(pid >= 0);
@@ -504,50 +739,321 @@ static void interrupt_a_run(int sig)
          * and the run would then not stop. */
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
+        signal(SIGHUP, SIG_DFL);
         alarm(CASE_TIMEOUT_SECONDS);
-        execl(disks_path, disks_path, "3000", "2", "--frames", "10000", "--steps-per-frame", "1",
-              "--quiet", "--out", "out", "--trajectory", "t.xyz", (char *)NULL);
+        execv(disks_path, argv);
         _exit(126);
     }
-    /* Poll (no timing is asserted: the alarm above bounds a stuck run). */
-    char third[PATH_MAX];
-    snprintf(third, sizeof third, "%s/out/frame_0003.txt", dir);
+    char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/%s", dir, wait_for);
     int ws = 0;
     pid_t done = 0;
-    while (access(third, F_OK) != 0 && (done = waitpid(pid, &ws, WNOHANG)) == 0)
+    while (access(path, F_OK) != 0 && (done = waitpid(pid, &ws, WNOHANG)) == 0)
         nanosleep(&(struct timespec){0, 1000000}, NULL);
     if (done == 0) {
-        kill(pid, sig);
+        for (int k = 0; k < times; ++k) {
+            if (k > 0)
+                nanosleep(&(struct timespec){0, 2000000}, NULL);
+            kill(pid, sig);
+        }
         while ((done = waitpid(pid, &ws, 0)) < 0 && errno == EINTR)
             ;
     }
     /* Say what happened when the run did not end by the signal: a disks
-     * error before it (exit status; stderr went to /dev/null, so rerun the
-     * command by hand), or the child lost to waitpid. */
+     * error before it (exit status; rerun the command by hand), or the
+     * child lost to waitpid. */
     if (done != pid)
         fail_msg("signal %d: waitpid returned %d (%s)", sig, (int)done, strerror(errno));
     if (!WIFSIGNALED(ws))
-        fail_msg("signal %d: disks exited with status %d, not by the signal", sig,
+        fail_msg("signal %d: `disks %s` exited with status %d, not by the signal", sig, args,
                  WIFEXITED(ws) ? WEXITSTATUS(ws) : -1);
     assert_int_equal(WTERMSIG(ws), sig);
-
-    cli_case run = {"interrupted", 1, "", "-", "", 0};
-    outcome o;
-    memset(&o, 0, sizeof o);
-    check_leftovers(&run, dir, NULL, 0, &o);
-    remove_tree(dir);
-    if (o.problem[0])
-        fail_msg("after signal %d: %s", sig, o.problem);
-    assert_true(o.frames >= 4);
+    return ws;
 }
 
-static void test_an_interrupted_run_leaves_only_complete_frames(void **state)
+static int start_and_signal(const char *dir, const char *args, const char *wait_for, int sig)
+{
+    return start_and_signal_n(dir, args, wait_for, sig, 1);
+}
+
+/* The frames of out/: 0 .. n-1 with none missing, each complete; no
+ * temporary anywhere in dir. Returns n. */
+static long complete_frames(const char *dir)
+{
+    static char names[MAX_ENTRIES][PATH_MAX];
+    size_t count = 0;
+    list_tree(dir, "", names, &count);
+    long n = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const char *slash = strrchr(names[i], '/');
+        const char *base = slash ? slash + 1 : names[i];
+        if (base[0] == '.')
+            fail_msg("temporary file '%s' left behind", names[i]);
+        if (strncmp(names[i], "out/", 4) == 0)
+            ++n;
+    }
+    for (long k = 0; k < n; ++k) {
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/out/frame_%04ld.txt", dir, k);
+        ds_frame frame;
+        if (ds_read_frame(path, &frame, NULL) != DS_OK)
+            fail_msg("out/frame_%04ld.txt is missing or partial (%ld frames)", k, n);
+        ds_frame_free(&frame);
+    }
+    return n;
+}
+
+/* The trajectory holds exactly the n frames of out/, frame by frame the
+ * same centres. */
+static void assert_trajectory_holds_the_frames(const char *dir, long n)
+{
+    char *xyz = slurp_in(dir, "t.xyz", NULL);
+    if (!xyz)
+        fail_msg("no t.xyz after the interruption");
+    char *save = NULL, *line = strtok_r(xyz, "\n", &save);
+    long frames = 0;
+    while (line) {
+        char name[64];
+        snprintf(name, sizeof name, "out/frame_%04ld.txt", frames);
+        char *text = slurp_in(dir, name, NULL);
+        if (!text)
+            fail_msg("t.xyz holds more frames than out/ (%ld)", n);
+        size_t count = strtoul(line, NULL, 10);
+        line = strtok_r(NULL, "\n", &save); /* the comment line */
+        char *fsave = NULL, *fline = strtok_r(text, "\n", &fsave);
+        for (size_t i = 0; i < count; ++i) {
+            line = strtok_r(NULL, "\n", &save);
+            char xs[32], ys[32], fx[32], fy[32];
+            if (!line || !fline || sscanf(line, "X %31s %31s", xs, ys) != 2 ||
+                sscanf(fline, "%31s %31s", fx, fy) != 2 || strcmp(xs, fx) != 0 ||
+                strcmp(ys, fy) != 0)
+                fail_msg("t.xyz frame %ld disk %zu is not %s's", frames, i, name);
+            fline = strtok_r(NULL, "\n", &fsave);
+        }
+        free(text);
+        ++frames;
+        line = strtok_r(NULL, "\n", &save);
+    }
+    free(xyz);
+    assert_int_equal(frames, n);
+}
+
+/* Interrupts a run writing frames, a trajectory, stats and a checkpoint
+ * as fast as it can. Whatever frames exist are complete, the trajectory
+ * and the stats hold exactly those frames, the checkpoint is the last
+ * one's and restarts: its next frames are an uninterrupted run's. (A
+ * periodic box: with walls the time step leaves a disk past its wall for
+ * a step, which the library's checkpoint loader refuses.) */
+static void interrupt_a_run(int sig)
+{
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *system = "3000 2 --periodic --steps-per-frame 1 --quiet";
+    char args[256];
+    snprintf(args, sizeof args,
+             "%s --frames 10000 --out out --trajectory t.xyz --stats s.csv --checkpoint c.ckpt",
+             system);
+    start_and_signal(dir, args, "out/frame_0003.txt", sig);
+    long n = complete_frames(dir);
+    assert_true(n >= 4);
+    assert_trajectory_holds_the_frames(dir, n);
+    char *stats = slurp_in(dir, "s.csv", NULL);
+    assert_non_null(stats);
+    long rows = 0;
+    for (const char *p = stats; (p = strchr(p, '\n')); ++p)
+        ++rows;
+    free(stats);
+    assert_int_equal(rows, n + 1);
+    /* On from the checkpoint, in the same directory: frames n and n + 1. */
+    must_run(dir, "--restart c.ckpt --frames 2 --steps-per-frame 1 --quiet --out out");
+    must_run(dir, "%s --frames %ld --out whole", system, n + 2);
+    for (long k = 0; k < n + 2; ++k) {
+        char a[64], b[64];
+        frame_name(a, sizeof a, "out", k);
+        frame_name(b, sizeof b, "whole", k);
+        assert_same_files(dir, a, b);
+    }
+    remove_tree(dir);
+}
+
+static void test_an_interrupted_run_keeps_its_trajectory_and_writes_its_checkpoint(void **state)
 {
     (void)state;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < (quick_mode() ? 1 : 2); ++k) {
         interrupt_a_run(SIGINT);
         interrupt_a_run(SIGTERM);
     }
+    interrupt_a_run(SIGHUP);
+}
+
+/* A second Ctrl-C ends the run at once, inside a long frame: the frames
+ * written stay, and the trajectory holds exactly them. (Should the frame
+ * end between the two signals, the first stops the run as above: the same
+ * holds.) */
+static void test_a_second_signal_ends_the_run_at_once_keeping_the_trajectory(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    start_and_signal_n(dir,
+                       "2000 2 --periodic --steps-per-frame 2000 --quiet --frames 10000 --out out "
+                       "--trajectory t.xyz --checkpoint c.ckpt",
+                       "out/frame_0001.txt", SIGINT, 2);
+    long n = complete_frames(dir);
+    assert_true(n >= 2);
+    assert_trajectory_holds_the_frames(dir, n);
+    remove_tree(dir);
+}
+
+/* SIGKILL gives no chance to finish: the checkpoint in place is still a
+ * whole one (the last of --checkpoint-every 3), and restarts. */
+static void test_a_killed_run_leaves_a_checkpoint_that_restarts(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *system = "500 3 --periodic --steps-per-frame 1 --quiet";
+    char args[256];
+    snprintf(args, sizeof args,
+             "%s --frames 10000 --out out --checkpoint c.ckpt --checkpoint-every 3", system);
+    start_and_signal(dir, args, "out/frame_0010.txt", SIGKILL);
+    must_run(dir, "--restart c.ckpt --frames 2 --steps-per-frame 1 --quiet --out again");
+    long first = -1;
+    for (long k = 0; k < 10000 && first < 0; ++k) {
+        char name[64];
+        frame_name(name, sizeof name, "again", k);
+        if (exists_in(dir, name))
+            first = k;
+    }
+    /* Written at frames 3, 6, 9, ...: the restart's first is one after. */
+    assert_true(first >= 10);
+    assert_int_equal((first - 1) % 3, 0);
+    must_run(dir, "%s --frames %ld --out whole", system, first + 2);
+    for (long k = first; k < first + 2; ++k) {
+        char a[64], b[64];
+        frame_name(a, sizeof a, "again", k);
+        frame_name(b, sizeof b, "whole", k);
+        assert_same_files(dir, a, b);
+    }
+    remove_tree(dir);
+}
+
+/* --from takes a frame written with --velocities: the new run's frame 0
+ * is that frame to the byte, at time 0 (a new run, not a continuation). */
+static void test_a_run_starts_from_a_frame_written_with_velocities(void **state)
+{
+    (void)state;
+    const char *systems[] = {"--integrator event", "--integrator event --periodic"};
+    for (size_t s = 0; s < 2; ++s) {
+        char dir[] = "/tmp/ds_test_cli_XXXXXX";
+        assert_non_null(mkdtemp(dir));
+        must_run(dir, "200 5 %s --velocities --frames 3 --quiet --out a", systems[s]);
+        must_run(dir,
+                 "--from a/frame_0002.txt %s --velocities --frames 3 --quiet --out b --stats b.csv",
+                 systems[s]);
+        assert_same_files(dir, "a/frame_0002.txt", "b/frame_0000.txt");
+        assert_true(exists_in(dir, "b/frame_0002.txt"));
+        char *stats = slurp_in(dir, "b.csv", NULL);
+        assert_non_null(stats);
+        assert_non_null(strstr(stats, "\n0,0.000000,"));
+        free(stats);
+        /* N and R may be given: they must be the frame's. */
+        must_run(dir, "200 5 --from a/frame_0002.txt %s --frames 2 --quiet --out c", systems[s]);
+        remove_tree(dir);
+    }
+    /* The first frame of a time-step run: no pair inside 2R yet. */
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "200 5 --velocities --frames 1 --quiet --out a");
+    must_run(dir, "--from a/frame_0000.txt --velocities --frames 3 --quiet --out b");
+    assert_same_files(dir, "a/frame_0000.txt", "b/frame_0000.txt");
+    remove_tree(dir);
+}
+
+/* A checkpoint damaged anywhere, or cut anywhere, is refused with one
+ * line naming the library's reason, exit 1, nothing written. */
+static void test_a_corrupted_checkpoint_is_refused_with_one_line(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "50 5 --frames 3 --quiet --out o --checkpoint c.ckpt");
+    size_t size = 0;
+    char *good = slurp_in(dir, "c.ckpt", &size);
+    assert_non_null(good);
+    assert_true(size > 64);
+    const long places[] = {
+        0, 7, 8, 12, 16, 31, 32, 40, (long)size / 2, (long)size - 9, (long)size - 1};
+    for (size_t k = 0; k < 2 * (sizeof places / sizeof places[0]); ++k) {
+        const long at = places[k / 2];
+        const int cut = k % 2;
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/bad.ckpt", dir);
+        assert_int_equal(write_bytes(path, good, cut ? (size_t)at : size), 0);
+        if (!cut)
+            assert_int_equal(damage(path, at, 0), 0);
+        char err[4096];
+        int status =
+            run_disks_in(dir, "--restart bad.ckpt --frames 2 --quiet --out r", err, sizeof err);
+        const char *nl = strchr(err, '\n');
+        if (status != 1 || strncmp(err, "disks: cannot restart from bad.ckpt: ", 37) != 0 || !nl ||
+            nl[1] != '\0' || exists_in(dir, "r"))
+            fail_msg("checkpoint %s at byte %ld: status %d, stderr: %s", cut ? "cut" : "damaged",
+                     at, status, err);
+    }
+    free(good);
+    remove_tree(dir);
+}
+
+/* --out makes its directory before any output is opened, so an output may
+ * be inside it. */
+static void test_outputs_inside_a_new_out_directory_are_written(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "20 5 --frames 3 --quiet --out new/dir --trajectory new/dir/t.xyz "
+                  "--stats new/s.csv --checkpoint new/dir/c.ckpt");
+    assert_true(exists_in(dir, "new/dir/frame_0002.txt"));
+    assert_true(exists_in(dir, "new/dir/c.ckpt"));
+    char *xyz = slurp_in(dir, "new/dir/t.xyz", NULL), *stats = slurp_in(dir, "new/s.csv", NULL);
+    assert_non_null(xyz);
+    assert_non_null(stats);
+    long frames = 0;
+    for (const char *p = xyz; (p = strstr(p, "\n20\n")); ++p)
+        ++frames;
+    assert_int_equal(frames + (strncmp(xyz, "20\n", 3) == 0), 3);
+    assert_non_null(strstr(stats, "\n2,"));
+    free(xyz);
+    free(stats);
+    remove_tree(dir);
+}
+
+/* Frames an earlier, longer run left are refused, not mixed; --overwrite
+ * removes them; the same command twice just works. */
+static void test_frames_of_another_run_are_refused_unless_overwrite(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "20 5 --frames 5 --quiet --out out");
+    must_run(dir, "20 5 --frames 5 --quiet --out out");
+    char *before = slurp_in(dir, "out/frame_0004.txt", NULL), err[4096];
+    assert_non_null(before);
+    int status = run_disks_in(dir, "20 5 --frames 2 --seed 7 --quiet --out out", err, sizeof err);
+    assert_int_equal(status, 1);
+    assert_string_equal(err, "disks: out/ holds frame_0002.txt ... frame_0004.txt from another "
+                             "run; remove them or pass --overwrite\n");
+    char *after = slurp_in(dir, "out/frame_0004.txt", NULL);
+    assert_non_null(after);
+    assert_string_equal(before, after);
+    free(before);
+    free(after);
+    must_run(dir, "20 5 --frames 2 --seed 7 --quiet --out out --overwrite");
+    assert_true(exists_in(dir, "out/frame_0001.txt"));
+    assert_false(exists_in(dir, "out/frame_0002.txt"));
+    assert_false(exists_in(dir, "out/frame_0004.txt"));
+    remove_tree(dir);
 }
 
 /* The table of docs/cli.md is generated from this list (make bad-input-table):
@@ -676,13 +1182,23 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "--table") == 0)
         return print_table();
 
-    static struct CMUnitTest tests[MAX_CASES + 5];
+    static struct CMUnitTest tests[MAX_CASES + 16];
     size_t n = 0;
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_a_good_run_writes_only_complete_frames);
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_one_disk_of_almost_half_the_box_runs);
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_help_documents_the_exit_statuses);
-    tests[n++] =
-        (struct CMUnitTest)cmocka_unit_test(test_an_interrupted_run_leaves_only_complete_frames);
+    const struct CMUnitTest survive[] = {
+        cmocka_unit_test(test_a_restart_writes_the_frames_of_an_uninterrupted_run),
+        cmocka_unit_test(test_an_interrupted_run_keeps_its_trajectory_and_writes_its_checkpoint),
+        cmocka_unit_test(test_a_second_signal_ends_the_run_at_once_keeping_the_trajectory),
+        cmocka_unit_test(test_a_killed_run_leaves_a_checkpoint_that_restarts),
+        cmocka_unit_test(test_a_run_starts_from_a_frame_written_with_velocities),
+        cmocka_unit_test(test_a_corrupted_checkpoint_is_refused_with_one_line),
+        cmocka_unit_test(test_outputs_inside_a_new_out_directory_are_written),
+        cmocka_unit_test(test_frames_of_another_run_are_refused_unless_overwrite),
+    };
+    for (size_t k = 0; k < sizeof survive / sizeof survive[0]; ++k)
+        tests[n++] = survive[k];
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_the_cli_doc_table_lists_every_case);
     for (size_t i = 0; i < case_count; ++i) {
         struct CMUnitTest t = cmocka_unit_test_prestate(test_bad_input_case, &cases[i]);

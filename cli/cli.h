@@ -1,0 +1,114 @@
+/* SPDX-License-Identifier: MIT */
+/* The disks command's one header: what its files share. options.c reads
+ * the command line; start.c checks where the run starts (a new request,
+ * --restart's checkpoint, --from's frame); outputs.c checks every path
+ * and makes --out; files.c writes files so that no partial one is ever
+ * seen, and decides what a signal does; checkpoint.c writes checkpoints;
+ * report.c says what went wrong; disks.c runs. The command uses the
+ * library only through disk_sim.h, and only it prints. */
+#ifndef DISKS_CLI_H
+#define DISKS_CLI_H
+
+#include <signal.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "disk_sim.h"
+
+enum { EXIT_RUN = 1, EXIT_USAGE = 2 };
+#define MAX_FRAMES 10000 /* frame_NNNN.txt has four digits */
+#define PATH_CAP 4200    /* a path and the suffix of its temporary */
+
+typedef struct options {
+    size_t n; /* N and R: given (have_n), or from --restart's or --from's file */
+    double radius;
+    int have_n;
+    uint64_t seed;
+    long frames;
+    uint64_t steps_per_frame;
+    const char *out_dir;
+    const char *stats_path;
+    const char *trajectory_path;
+    const char *checkpoint_path; /* NULL: none */
+    long checkpoint_every;       /* 0: only at the end */
+    const char *restart_path;    /* --restart FILE, or NULL */
+    const char *from_path;       /* --from FRAME, or NULL */
+    int quiet, velocities, overwrite;
+    ds_broadphase broadphase;
+    ds_integrator integrator;
+    ds_placement placement;
+    ds_boundary boundary;
+    double box_y; /* 0: square */
+} options;
+
+/* gcc and clang check die's format and know it does not return. */
+#if defined(__GNUC__)
+#define DIES __attribute__((noreturn, format(printf, 2, 3)))
+#define DIES_QUIETLY __attribute__((noreturn))
+#else
+#define DIES
+#define DIES_QUIETLY
+#endif
+
+/* report.c: "disks: " and the message on one line of stderr, then exit. */
+void die(int code, const char *fmt, ...) DIES;
+
+/* options.c */
+options parse_args(int argc, char **argv);
+
+/* start.c: the request checked (with --from, as the frame's: from is its
+ * path), a new simulation, or one from a checkpoint or a frame. */
+void check_request(const ds_params *p, const char *from);
+ds_params params_of(const options *o);
+ds_sim *create_fresh(const ds_params *p);
+ds_sim *restart_from(const char *path);
+long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
+void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);
+ds_sim *start_from_frame(options *o); /* sets o->n and o->radius */
+
+/* outputs.c */
+void check_paths(const options *o);
+int frame_number(const char *base); /* k of frame_kkkk.txt, else -1 */
+void make_out_dir(const char *path);
+void check_other_runs(const options *o, long last);
+void remove_other_runs(const options *o, long last);
+
+/* files.c: signals */
+void catch_signals(void);
+void hold_signals(sigset_t *old);
+void release_signals(const sigset_t *old);
+void frames_begin(void);
+int stop_signal(void); /* the signal that asked the run to stop, or 0 */
+void end_by_signal(int sig) DIES_QUIETLY;
+/* files.c: directories made by the run, removed if it fails before a frame */
+void note_created_dir(const char *path);
+void keep_created_dirs(void);
+/* files.c: whole files */
+void split_path(const char *path, char *dir, size_t cap, const char **base);
+/* snprintf for a path: one too long for the buffer ends the command. */
+void path_printf(char *out, size_t cap, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+int write_file_atomic(const char *dir, const char *name, const void *data, size_t len, int durable,
+                      const char **why);
+int probe_dir(const char *dir, const char *name); /* 0, or why a file cannot be made there */
+int is_special_file(const char *path);
+int write_file_in_place(const char *path, const void *data, size_t len, const char **why);
+/* files.c: files that grow frame by frame (--stats, --trajectory) */
+typedef struct output {
+    const char *option, *path;
+    FILE *f;
+    int slot; /* its pending temporary, -1 when written in place */
+} output;
+void output_open(output *out, const char *option, const char *path);
+void output_write(output *out, const void *data, size_t len);
+void output_close(output *out);
+
+/* checkpoint.c */
+void checkpoint_write(const ds_sim *sim, const char *path);
+void checkpoint_probe(const char *path);
+
+#endif

@@ -1,0 +1,338 @@
+/* SPDX-License-Identifier: MIT */
+/* The command line of disks: N, R and the options, each checked as it is
+ * read; anything malformed or out of range ends the command with a usage
+ * error that names it. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+static const char *const usage_text =
+    "usage: disks N R [options]\n"
+    "       disks --restart FILE [options]\n"
+    "       disks [N R] --from FRAME [options]\n"
+    "Simulates N hard disks of radius R in the box [0,1000]^2 and writes\n"
+    "frame_0000.txt, frame_0001.txt, ... with one line \"x y R\" per disk.\n"
+    "\n"
+    "options:\n"
+    "  --seed S             random seed, 0..2^64-1 (default %u)\n"
+    "  --frames F           frames to write, 1..10000 (default 500)\n"
+    "  --steps-per-frame K  steps of dt = 0.001 between frames (default 100)\n"
+    "  --out DIR            directory for the frames, created if missing (default .)\n"
+    "  --overwrite          remove the frames of another run from DIR instead of\n"
+    "                       refusing to mix them with this run's\n"
+    "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
+    "  --stats FILE         write one CSV row of observables per frame to FILE\n"
+    "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
+    "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
+    "                       stopped by a signal (INT, TERM, HUP)\n"
+    "  --checkpoint-every K also every K frames\n"
+    "  --restart FILE       continue the run a checkpoint saved: N, R, the box, the\n"
+    "                       integrator and the frame number come from FILE\n"
+    "  --from FRAME         start at time 0 from the disks of FRAME, a frame written\n"
+    "                       with --velocities (N and R from it)\n"
+    "  --lattice            start on a triangular lattice instead of at random\n"
+    "  --periodic           periodic box (nearest image) instead of walls\n"
+    "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
+    "  --integrator I       step (the fixed time step, default) or event (exact\n"
+    "                       event-driven dynamics)\n"
+    "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
+    "                       or auto (default auto)\n"
+    "  -q, --quiet          print nothing but errors and warnings\n"
+    "  -h, --help           show this help and exit\n"
+    "  --version            show the version and exit\n"
+    "\n"
+    "exit status: 0 success, 1 run-time error (placement, I/O, a file that does not\n"
+    "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n";
+
+/* strtod also reads hexadecimal ("0x10"), "nan" and "infinity": a number
+ * on our command line is decimal, so anything else is refused up front. */
+static int is_decimal_text(const char *s)
+{
+    return *s && strspn(s, "0123456789.eE+-") == strlen(s);
+}
+
+/* A non-negative integer: digits only, or an exact integer in decimal
+ * scientific notation (1e5), no sign, no trailing text. */
+static int parse_count(const char *s, uint64_t max, uint64_t *out)
+{
+    if (!is_decimal_text(s) || *s == '-' || *s == '+')
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (*end == '\0' && end != s) {
+        if (errno == ERANGE || v > max)
+            return -1;
+        *out = v;
+        return 1;
+    }
+    double d = strtod(s, &end);
+    if (*end != '\0' || end == s || !isfinite(d) || d != floor(d) || d < 0.0)
+        return errno == ERANGE ? -1 : 0;
+    /* (double)UINT64_MAX rounds up to 2^64, and converting 2^64 to uint64_t
+     * is undefined: test against 2^64 itself, then compare as integers. */
+    if (!(d < 18446744073709551616.0) || (uint64_t)d > max)
+        return -1;
+    *out = (uint64_t)d;
+    return 1;
+}
+
+static uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_t max)
+{
+    uint64_t v = 0;
+    int ok = parse_count(s, max, &v);
+    if (ok == 0)
+        die(EXIT_USAGE, "%s must be a whole number, got '%s'", name, s);
+    if (ok < 0 || v < min)
+        die(EXIT_USAGE, "%s must be between %llu and %llu, got '%s'", name, (unsigned long long)min,
+            (unsigned long long)max, s);
+    return v;
+}
+
+static double radius_arg(const char *s)
+{
+    char *end;
+    errno = 0;
+    double r = strtod(s, &end);
+    if (end == s || *end != '\0')
+        die(EXIT_USAGE, "R must be a number, got '%s'", s);
+    /* ERANGE on underflow (1e-400) leaves r tiny: the range check below
+     * names it better than "not finite". */
+    if (!isfinite(r) || (errno == ERANGE && fabs(r) > 1.0))
+        die(EXIT_USAGE, "R must be a finite number, got '%s'", s);
+    if (!is_decimal_text(s))
+        die(EXIT_USAGE, "R must be a decimal number, got '%s'", s);
+    if (!(r > 0.0))
+        die(EXIT_USAGE, "R must be a number > 0, got '%s'", s);
+    return r;
+}
+
+static double box_y_arg(const char *s)
+{
+    char *end;
+    double h = strtod(s, &end);
+    if (!is_decimal_text(s) || end == s || *end != '\0' || !isfinite(h) || !(h > 0.0 && h <= 1e9))
+        die(EXIT_USAGE, "--box-y must be a number > 0 and <= 1e9, got '%s'", s);
+    return h;
+}
+
+static ds_broadphase broadphase_arg(const char *s)
+{
+    const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO, DS_CELLS};
+    for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k)
+        if (strcmp(s, ds_broadphase_name(all[k])) == 0)
+            return all[k];
+    die(EXIT_USAGE, "--broadphase must be sap, strips, cells, brute or auto, got '%s'", s);
+    return DS_AUTO;
+}
+
+/* The integrators are the library's, by name: ds_integrator_name says
+ * "unknown" past the last one. */
+static ds_integrator integrator_arg(const char *s)
+{
+    char known[128] = "";
+    for (int k = 0; strcmp(ds_integrator_name((ds_integrator)k), "unknown") != 0; ++k) {
+        const char *name = ds_integrator_name((ds_integrator)k);
+        if (strcmp(s, name) == 0)
+            return (ds_integrator)k;
+        snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", k ? " or " : "",
+                 name);
+    }
+    die(EXIT_USAGE, "--integrator must be %s, got '%s'", known, s);
+    return DS_TIME_STEP;
+}
+
+/* A file name given to an option. */
+static const char *file_arg(const char *option, const char *value)
+{
+    if (!*value)
+        die(EXIT_USAGE, "%s needs a file name", option);
+    return value;
+}
+
+/* The combinations the command refuses: a checkpoint holds the system
+ * (N, R, the box, the integrator and its broad phase, and the state the
+ * seed and placement made), so --restart takes none of them; a frame holds
+ * every position and velocity, so --from takes no seed or placement. */
+static void check_combination(const options *o, int npos, const char *system_option,
+                              const char *placement_option)
+{
+    if (o->restart_path && o->from_path)
+        die(EXIT_USAGE, "--restart and --from are two ways to start a run: give one");
+    if (o->restart_path && npos > 0)
+        die(EXIT_USAGE, "--restart takes N and R from the checkpoint: give no N and R");
+    if (o->restart_path && system_option)
+        die(EXIT_USAGE, "%s cannot be given with --restart: the checkpoint holds the system",
+            system_option);
+    if (o->from_path && placement_option)
+        die(EXIT_USAGE,
+            "%s cannot be given with --from: the frame gives every position and velocity",
+            placement_option);
+    if (o->checkpoint_every && !o->checkpoint_path)
+        die(EXIT_USAGE, "--checkpoint-every needs --checkpoint FILE");
+    if (npos == 1 || (npos == 0 && !o->restart_path && !o->from_path))
+        die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
+            npos == 0 ? "N and R" : "R");
+}
+
+options parse_args(int argc, char **argv)
+{
+    options o;
+    memset(&o, 0, sizeof o);
+    o.seed = DS_DEFAULT_SEED;
+    o.frames = 500;
+    o.steps_per_frame = 100;
+    o.out_dir = ".";
+    o.broadphase = DS_AUTO;
+
+    const char *positional[2];
+    int npos = 0;
+    /* The first option given that describes the system, and the first
+     * that describes the placement (see check_combination). */
+    const char *system_option = NULL, *placement_option = NULL;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            printf(usage_text, (unsigned)DS_DEFAULT_SEED);
+            exit(0);
+        }
+        if (strcmp(a, "--version") == 0) {
+            printf("disks %s\n", ds_version());
+            exit(0);
+        }
+        if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            o.quiet = 1;
+            continue;
+        }
+        if (strcmp(a, "--velocities") == 0) {
+            o.velocities = 1;
+            continue;
+        }
+        if (strcmp(a, "--overwrite") == 0) {
+            o.overwrite = 1;
+            continue;
+        }
+        if (strcmp(a, "--lattice") == 0) {
+            o.placement = DS_LATTICE;
+            if (!placement_option)
+                placement_option = "--lattice";
+            if (!system_option)
+                system_option = "--lattice";
+            continue;
+        }
+        if (strcmp(a, "--periodic") == 0) {
+            o.boundary = DS_PERIODIC;
+            if (!system_option)
+                system_option = "--periodic";
+            continue;
+        }
+        if (a[0] == '-' && a[1] == '-') {
+            /* --name VALUE or --name=VALUE */
+            const char *eq = strchr(a, '=');
+            size_t len = eq ? (size_t)(eq - a) : strlen(a);
+            const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
+            enum {
+                SEED,
+                FRAMES,
+                STEPS,
+                OUT,
+                STATS,
+                BROADPHASE,
+                INTEGRATOR,
+                TRAJECTORY,
+                BOX_Y,
+                CHECKPOINT,
+                CHECKPOINT_EVERY,
+                RESTART,
+                FROM
+            };
+            /* In the order of the enum; SEED .. BOX_Y with a system flag. */
+            static const struct {
+                const char *name;
+                int system;
+            } names[] = {
+                {"--seed", 1},  {"--frames", 0},     {"--steps-per-frame", 0},  {"--out", 0},
+                {"--stats", 0}, {"--broadphase", 1}, {"--integrator", 1},       {"--trajectory", 0},
+                {"--box-y", 1}, {"--checkpoint", 0}, {"--checkpoint-every", 0}, {"--restart", 0},
+                {"--from", 0}};
+            int which = -1;
+            for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
+                if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
+                    which = k;
+            if (which < 0)
+                die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, a);
+            if (!value)
+                die(EXIT_USAGE, "%s needs a value (try --help)", names[which].name);
+            if (!eq)
+                ++i;
+            if (names[which].system && !system_option)
+                system_option = names[which].name;
+            switch (which) {
+            case SEED:
+                o.seed = count_arg("--seed", value, 0, UINT64_MAX);
+                if (!placement_option)
+                    placement_option = "--seed";
+                break;
+            case FRAMES:
+                o.frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
+                break;
+            case STEPS:
+                o.steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
+                break;
+            case OUT:
+                if (!*value)
+                    die(EXIT_USAGE, "--out needs a directory name");
+                o.out_dir = value;
+                break;
+            case STATS:
+                o.stats_path = file_arg("--stats", value);
+                break;
+            case BROADPHASE:
+                o.broadphase = broadphase_arg(value);
+                break;
+            case INTEGRATOR:
+                o.integrator = integrator_arg(value);
+                break;
+            case TRAJECTORY:
+                o.trajectory_path = file_arg("--trajectory", value);
+                break;
+            case BOX_Y:
+                o.box_y = box_y_arg(value);
+                break;
+            case CHECKPOINT:
+                o.checkpoint_path = file_arg("--checkpoint", value);
+                break;
+            case CHECKPOINT_EVERY:
+                o.checkpoint_every = (long)count_arg("--checkpoint-every", value, 1, MAX_FRAMES);
+                break;
+            case RESTART:
+                o.restart_path = file_arg("--restart", value);
+                break;
+            default:
+                o.from_path = file_arg("--from", value);
+            }
+            continue;
+        }
+        /* "-5" and "-inf" are (bad) numbers, reported as such below. */
+        char *num_end;
+        (void)strtod(a, &num_end);
+        if (a[0] == '-' && a[1] != '\0' && num_end == a)
+            die(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+        if (npos < 2)
+            positional[npos++] = a;
+        else
+            die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
+    }
+    check_combination(&o, npos, system_option, placement_option);
+    if (npos == 2) {
+        o.n = (size_t)count_arg("N", positional[0], 1, UINT64_MAX);
+        o.radius = radius_arg(positional[1]);
+        o.have_n = 1;
+    }
+    return o;
+}
