@@ -84,10 +84,14 @@ $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	$(CC) $(WARN) $(CPPFLAGS) $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
+# After the C programs: the Python module's pytest suite (python-test,
+# below), which says in one line what it lacks instead when a Python
+# package is missing.
 test: all $(TEST_BIN)
 	@fail=0; for t in $(TEST_BIN); do \
 	    echo "== $$t"; ./$$t || fail=1; \
 	done; \
+	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
 
@@ -324,3 +328,45 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
 	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
 	    $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null) $(LDLIBS)
+
+# ---------------------------------------------------------------- python
+# The Python module disksim (python/, docs/python.md), a C extension over
+# disk_sim.h that compiles the library's sources itself (python/setup.py).
+# `make python` builds it in place, python/disksim/_disksim*.so, for
+# PYTHONPATH=python; `make test` then runs its pytest suite. Debian's own
+# python3 by default (its python3-numpy, python3-dev, python3-setuptools
+# and python3-pytest), not whichever python3 comes first on PATH; without
+# them the suite is skipped with a one-line note naming the packages.
+PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
+PY_JOBS ?= 2
+PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo "python3 $(1)")
+PY_EXT = $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_config_var("EXT_SUFFIX"))' 2>/dev/null)
+PY_MODULE = python/disksim/_disksim$(PY_EXT)
+PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py
+# Under SANITIZE=1 the module keeps the plain flags: an instrumented
+# extension cannot load into an uninstrumented python3.
+PY_CFLAGS := $(if $(filter 1,$(SANITIZE)),-O2 -g,$(CFLAGS))
+
+.PHONY: python python-test clean-python
+python:
+	@missing=$(call PY_MISSING,build); if [ -n "$$missing" ]; then \
+	    echo "make python: $(PYTHON) lacks $$missing (Debian packages)"; exit 1; fi
+	@$(MAKE) --no-print-directory $(PY_MODULE)
+
+# setuptools recompiles every file when it builds: make decides when.
+$(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP)
+	cd python && CC="$(CC)" CFLAGS="$(PY_CFLAGS)" $(PYTHON) setup.py -q build_ext --inplace \
+	    --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python
+
+# The suite runs the disks of this build (test_frames compares its frames).
+python-test: $(DISKS)
+	@missing=$(call PY_MISSING,test); if [ -n "$$missing" ]; then \
+	    echo "python tests skipped: $(PYTHON) lacks $$missing (Debian packages)"; exit 0; fi; \
+	$(MAKE) --no-print-directory python && echo "== pytest python/tests" && \
+	    PYTHONPATH=python DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
+	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
+
+clean: clean-python
+clean-python:
+	rm -rf python/build python/disksim.egg-info python/disksim/_disksim*.so \
+	    python/disksim/__pycache__ python/tests/__pycache__

@@ -1,0 +1,493 @@
+/* The Sim type: one ds_sim, created from keyword arguments, advanced with
+ * the GIL released, its observables as properties. Its arrays and
+ * set_state are in state.c, frames in frames.c, analysis in analysis.c,
+ * ASE in ase.c. */
+
+#include "disksim_py.h" /* first: Python.h sets the feature macros */
+
+#include <string.h>
+
+/* run() gives the GIL back between chunks of steps, to take Ctrl-C
+ * (KeyboardInterrupt) and signals: chunks double from one step while
+ * they last less than this, so the check costs nothing measurable. */
+#define CHUNK_SECONDS 0.1
+
+ds_sim *dspy_sim_of(dspy_sim *self)
+{
+    if (self->busy) {
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread (a Sim is used by one "
+                                    "thread at a time; give each thread its own)");
+        return NULL;
+    }
+    if (!self->sim) {
+        PyErr_SetString(dspy_Error, "this Sim is closed");
+        return NULL;
+    }
+    return self->sim;
+}
+
+/* ---------------------------------------------------------------- life */
+
+static const char sim_doc[] =
+    DSPY_SIM_SIGNATURE
+    "\n--\n\n"
+    "N hard disks of one radius in a box: elastic billiards, through libdisksim.\n"
+    "\n"
+    "Sim(400, 5.0) is the command's `disks 400 5`: 400 disks of radius 5 placed at\n"
+    "random in the box [0, 1000]^2 with walls, every disk at speed 100 in a random\n"
+    "direction, advanced by the fixed time step dt = 0.001. Lengths are in box\n"
+    "units, time in simulated seconds, masses are 1.\n"
+    "\n"
+    "n           number of disks, >= 1.\n"
+    "radius      disk radius: below half the box's shorter side with walls, below a\n"
+    "            quarter of it in a periodic box.\n"
+    "seed        seed of the placement and of the initial directions, 0 .. 2**64-1;\n"
+    "            the same arguments give the same simulation, to the bit.\n"
+    "integrator  'step': the fixed time step (move by v dt, reflect at the walls,\n"
+    "            swap the normal velocities of overlapping, approaching pairs; fast,\n"
+    "            collisions seen up to one step late). 'event': exact event-driven\n"
+    "            dynamics, every collision at its own time at distance exactly 2R;\n"
+    "            step() still advances by exactly dt.\n"
+    "boundary    'walls' (a centre turns at R from each wall) or 'periodic' (a disk\n"
+    "            leaving at one edge comes back at the other, pairs interact through\n"
+    "            the nearest image, positions stay in [0, box) x [0, box_y)).\n"
+    "placement   'random' (random sequential, up to area fraction 0.54) or\n"
+    "            'lattice' (a triangular lattice, up to close packing 0.9069; in a\n"
+    "            periodic box the total momentum is made zero).\n"
+    "box         width of the box, > 0 and <= 1e9.\n"
+    "box_y       height of the box; None for a square box (box_y = box).\n"
+    "dt          the time step, > 0 and <= 1: the time step() advances.\n"
+    "speed       the initial speed of every disk, > 0 and <= 1e9.\n"
+    "broadphase  how candidate pairs are found, all giving the same pairs: 'auto'\n"
+    "            (the fastest for the integrator), or for 'step' 'sap', 'strips',\n"
+    "            'brute'; for 'event' 'cells', 'brute'.\n"
+    "\n"
+    "Raises ArgumentError (a ValueError) with the library's sentence for a value it\n"
+    "refuses (e.field names the argument), NoMemoryError for more disks than this\n"
+    "machine's memory holds, TypeError for an argument of the wrong type. A request\n"
+    "that runs with degraded physics (a time step so long that head-on pairs can\n"
+    "pass through each other) gives a RuntimeWarning saying so.\n"
+    "\n"
+    "Threads: run() releases the GIL, so threads with one Sim each run in parallel\n"
+    "on as many cores. A Sim is used by one thread at a time: any use of it while\n"
+    "another thread is inside its run() raises Error. The arrays returned are\n"
+    "copies: changing them changes nothing until set_state().\n"
+    "\n"
+    "A Sim is a context manager: `with Sim(...) as s:` frees its memory at the end\n"
+    "of the block, as close() does; afterwards every use raises Error.";
+
+static PyObject *sim_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    (void)args;
+    (void)kwargs;
+    dspy_sim *self = (dspy_sim *)type->tp_alloc(type, 0);
+    if (self) {
+        self->sim = NULL;
+        self->busy = 0;
+        memset(&self->params, 0, sizeof self->params);
+    }
+    return (PyObject *)self;
+}
+
+static int sim_init(dspy_sim *self, PyObject *args, PyObject *kwargs)
+{
+    if (self->busy) {
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        return -1;
+    }
+    ds_params p;
+    char warning[256] = "";
+    if (dspy_params_from_args(args, kwargs, &p, warning) < 0)
+        return -1;
+    size_t bytes = 0;
+    const ds_status need = ds_memory_needed(&p, &bytes);
+    if (need != DS_OK) {
+        dspy_raisef(need, "n", "n = %zu disks: %s", p.n, ds_status_str(need));
+        return -1;
+    }
+    char what[64];
+    PyOS_snprintf(what, sizeof what, "n = %zu disks", p.n);
+    if (dspy_check_memory((double)bytes, what) < 0)
+        return -1;
+    if (warning[0] && PyErr_WarnEx(PyExc_RuntimeWarning, warning, 1) < 0)
+        return -1; /* warnings turned into errors */
+    ds_sim *sim = NULL;
+    ds_status st;
+    self->busy = 1;
+    Py_BEGIN_ALLOW_THREADS
+    st = ds_create(&p, &sim);
+    Py_END_ALLOW_THREADS
+    self->busy = 0;
+    if (st != DS_OK) {
+        if (st == DS_ERR_PLACEMENT)
+            dspy_raisef(st, "n",
+                        "n = %zu disks of radius %g could not be placed: a disk found no free "
+                        "place in 2 million random draws (placement='lattice' fits more)",
+                        p.n, p.radius);
+        else
+            dspy_raisef(st, NULL, "n = %zu disks: %s", p.n, ds_status_str(st));
+        return -1;
+    }
+    ds_destroy(self->sim); /* __init__ called again: the new one replaces it */
+    self->sim = sim;
+    self->params = p;
+    return 0;
+}
+
+static void sim_dealloc(dspy_sim *self)
+{
+    ds_destroy(self->sim);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyObject *sim_close(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    if (self->busy) {
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        return NULL;
+    }
+    ds_destroy(self->sim);
+    self->sim = NULL;
+    Py_RETURN_NONE;
+}
+
+static PyObject *sim_enter(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    if (!dspy_sim_of(self))
+        return NULL;
+    return Py_NewRef((PyObject *)self);
+}
+
+static PyObject *sim_exit(dspy_sim *self, PyObject *args)
+{
+    (void)args;
+    PyObject *r = sim_close(self, NULL);
+    Py_XDECREF(r);
+    if (!r)
+        return NULL;
+    Py_RETURN_FALSE;
+}
+
+static PyObject *sim_repr(dspy_sim *self)
+{
+    PyObject *args = self->sim || self->busy ? dspy_params_repr(&self->params) : NULL;
+    if (!self->sim && !self->busy)
+        return PyUnicode_FromString("<disksim.Sim, closed>");
+    if (!args)
+        return NULL;
+    if (self->busy) {
+        PyObject *r = PyUnicode_FromFormat("<disksim.%U, running>", args);
+        Py_DECREF(args);
+        return r;
+    }
+    char *time = PyOS_double_to_string(ds_time(self->sim), 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+    PyObject *r = time ? PyUnicode_FromFormat("<disksim.%U at t = %s after %llu steps>", args,
+                                              time, (unsigned long long)ds_steps(self->sim))
+                       : PyErr_NoMemory();
+    PyMem_Free(time);
+    Py_DECREF(args);
+    return r;
+}
+
+/* ---------------------------------------------------------------- running */
+
+/* steps whole steps, in chunks with the GIL released, taking signals
+ * between them; on KeyboardInterrupt the steps done stay done. */
+static int advance(dspy_sim *self, ds_sim *sim, uint64_t steps)
+{
+    uint64_t chunk = 1;
+    self->busy = 1;
+    while (steps > 0) {
+        const uint64_t k = chunk < steps ? chunk : steps;
+        double seconds;
+        Py_BEGIN_ALLOW_THREADS
+        const double t0 = ds_now();
+        ds_run(sim, k);
+        seconds = ds_now() - t0;
+        Py_END_ALLOW_THREADS
+        steps -= k;
+        if (steps && PyErr_CheckSignals() < 0) {
+            self->busy = 0;
+            return -1;
+        }
+        if (seconds < CHUNK_SECONDS / 2 && chunk < (UINT64_MAX >> 1))
+            chunk *= 2;
+        else if (seconds > 2 * CHUNK_SECONDS && chunk > 1)
+            chunk /= 2;
+    }
+    self->busy = 0;
+    return 0;
+}
+
+static PyObject *sim_run(dspy_sim *self, PyObject *args, PyObject *kwargs)
+{
+    static char *keywords[] = {"steps", NULL};
+    PyObject *steps_obj;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O:run", keywords, &steps_obj))
+        return NULL;
+    uint64_t steps;
+    if (dspy_uint64_arg(steps_obj, "steps", 0, &steps) < 0)
+        return NULL;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim || advance(self, sim, steps) < 0)
+        return NULL;
+    Py_RETURN_NONE;
+}
+
+static PyObject *sim_step(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim || advance(self, sim, 1) < 0)
+        return NULL;
+    Py_RETURN_NONE;
+}
+
+static PyObject *sim_reset_observables(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    ds_reset_observables(sim);
+    Py_RETURN_NONE;
+}
+
+/* ---------------------------------------------------------------- properties */
+
+/* A property is one row: its getter in the library and its docstring.
+ * The closures hold the library's function behind a struct, as C has no
+ * conversion between function and data pointers. */
+typedef struct real_getter {
+    double (*get)(const ds_sim *);
+} real_getter;
+typedef struct count_getter {
+    uint64_t (*get)(const ds_sim *);
+} count_getter;
+
+static uint64_t count_of(const ds_sim *sim) { return ds_count(sim); }
+
+static const real_getter get_time = {ds_time}, get_radius = {ds_radius}, get_box = {ds_box},
+                         get_box_y = {ds_box_y}, get_dt = {ds_dt},
+                         get_kinetic_energy = {ds_kinetic_energy}, get_pressure = {ds_pressure},
+                         get_virial_pressure = {ds_virial_pressure}, get_psi6 = {ds_psi6},
+                         get_wall_impulse = {ds_wall_impulse},
+                         get_collision_seconds = {ds_collision_seconds};
+static const count_getter get_steps = {ds_steps}, get_n = {count_of},
+                          get_collision_count = {ds_collision_count},
+                          get_wall_count = {ds_wall_count}, get_pairs_tested = {ds_pairs_tested};
+
+static PyObject *real_property(dspy_sim *self, void *closure)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    return sim ? PyFloat_FromDouble(((const real_getter *)closure)->get(sim)) : NULL;
+}
+
+static PyObject *count_property(dspy_sim *self, void *closure)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    return sim ? PyLong_FromUnsignedLongLong(((const count_getter *)closure)->get(sim)) : NULL;
+}
+
+static PyObject *name_property(dspy_sim *self, void *closure)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    const dspy_kind kind = (dspy_kind)(*(const int *)closure);
+    int value = 0;
+    switch (kind) {
+    case DSPY_INTEGRATOR:
+        value = (int)ds_integrator_used(sim);
+        break;
+    case DSPY_BOUNDARY:
+        value = (int)ds_boundary_used(sim);
+        break;
+    case DSPY_BROADPHASE:
+        value = (int)ds_broadphase_used(sim);
+        break;
+    case DSPY_PLACEMENT:
+        value = (int)self->params.placement;
+        break;
+    case DSPY_KINDS:
+        break;
+    }
+    const char *name = dspy_name_of(kind, value);
+    return PyUnicode_FromString(name ? name : "unknown");
+}
+static const int integrator_kind = DSPY_INTEGRATOR, boundary_kind = DSPY_BOUNDARY,
+                 broadphase_kind = DSPY_BROADPHASE, placement_kind = DSPY_PLACEMENT;
+
+static PyObject *momentum_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    double px, py;
+    ds_momentum(sim, &px, &py);
+    return Py_BuildValue("(dd)", px, py);
+}
+
+static PyObject *params_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return dspy_sim_of(self) ? dspy_params_dict(&self->params) : NULL;
+}
+
+static PyObject *closed_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return PyBool_FromLong(!self->sim && !self->busy);
+}
+
+static PyObject *running_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return PyBool_FromLong(self->busy);
+}
+
+#define REAL(name, doc) {#name, (getter)real_property, NULL, doc, (void *)&get_##name}
+#define COUNT(name, doc) {#name, (getter)count_property, NULL, doc, (void *)&get_##name}
+#define NAME(name, doc) {#name, (getter)name_property, NULL, doc, (void *)&name##_kind}
+
+static PyGetSetDef sim_getset[] = {
+    COUNT(n, "Number of disks."),
+    REAL(radius, "Disk radius."),
+    REAL(box, "Width of the box."),
+    REAL(box_y, "Height of the box (box when square)."),
+    REAL(dt, "The time step: the simulated time one step() advances."),
+    NAME(integrator, "The integrator: 'step' or 'event'."),
+    NAME(boundary, "The boundary: 'walls' or 'periodic'."),
+    NAME(placement, "How the disks were placed: 'random' or 'lattice'."),
+    NAME(broadphase, "The broad phase in use, never 'auto' ('sap', 'strips', 'brute', 'cells')."),
+    REAL(time, "Simulated time: steps * dt (a product, so it carries no rounding drift)."),
+    COUNT(steps, "Steps taken since creation."),
+    {"positions", (getter)dspy_positions_property, NULL,
+     "The centres as a new (n, 2) float64 array, row i disk i (generation order):\n"
+     "a copy, made at each read; changing it changes nothing (see set_state).",
+     NULL},
+    {"velocities", (getter)dspy_velocities_property, NULL,
+     "The velocities as a new (n, 2) float64 array, row i disk i: a copy, as\n"
+     "positions.",
+     NULL},
+    REAL(kinetic_energy, "Kinetic energy, the sum of v^2 / 2 (unit masses)."),
+    {"momentum", (getter)momentum_property, NULL,
+     "Total momentum (px, py). Pairs conserve it; walls do not.", NULL},
+    REAL(pressure,
+         "Wall pressure: the wall impulse per unit time per unit length of wall the\n"
+         "centres reach (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the\n"
+         "last reset; 0 before any step. A force per length: the ideal gas has\n"
+         "P A = N <v^2> / 2. A periodic box has no walls: there it is virial_pressure."),
+    REAL(virial_pressure,
+         "Pressure from the collision virial, averaged since the last reset, 0 before\n"
+         "any step: P A = E + (1 / (2 t)) sum over collisions of r_ij . dp_i, with E the\n"
+         "kinetic energy (N kT = E in 2D) and A the area the centres reach, (box - 2R)\n"
+         "(box_y - 2R) with walls, box box_y in a periodic box. The compressibility\n"
+         "factor is Z = virial_pressure * A / kinetic_energy. With the time step the\n"
+         "collisions happen a little inside 2R, which biases it low."),
+    REAL(psi6,
+         "Global bond-orientational order |(1/N) sum_j psi6_j| of the disks now, with\n"
+         "cutoff 1.4 d (d = 2R): near 1 for a crystal of one orientation, O(1/sqrt N)\n"
+         "for a liquid. Computed when read, O(N). NaN for a periodic box narrower than\n"
+         "2.8 d. Per disk: local_psi6()."),
+    COUNT(collision_count, "Disk-disk collisions resolved since creation (reset_observables keeps it)."),
+    COUNT(wall_count, "Wall reflections since the last reset."),
+    REAL(wall_impulse, "Momentum handed to the walls since the last reset: the sum of 2 |v_n|."),
+    COUNT(pairs_tested, "Narrow-phase distance tests since creation."),
+    REAL(collision_seconds,
+         "Wall-clock seconds spent on collisions, summed over all steps: with 'step',\n"
+         "sorting, pruning, testing and resolving pairs; with 'event', processing\n"
+         "events (collisions, wall turns, cell crossings) and their predictions."),
+    {"params", (getter)params_property, NULL,
+     "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
+     "same simulation at time 0.",
+     NULL},
+    {"closed", (getter)closed_property, NULL, "Whether close() has freed this Sim.", NULL},
+    {"running", (getter)running_property, NULL,
+     "Whether a thread is inside this Sim's run() (or step(), set_state(),\n"
+     "write_frame()) now. Never raises.",
+     NULL},
+    {NULL, NULL, NULL, NULL, NULL},
+};
+
+/* ---------------------------------------------------------------- methods */
+
+static PyMethodDef sim_methods[] = {
+    {"step", (PyCFunction)sim_step, METH_NOARGS,
+     "step($self, /)\n--\n\n"
+     "Advance simulated time by exactly dt. 'step': move by v dt, reflect at the\n"
+     "walls, resolve overlapping pairs. 'event': process every collision and wall\n"
+     "event inside the interval in time order, then show every disk at the new time.\n"
+     "Releases the GIL."},
+    {"run", (PyCFunction)(void (*)(void))sim_run, METH_VARARGS | METH_KEYWORDS,
+     "run($self, /, steps)\n--\n\n"
+     "Advance by steps steps (an int >= 0; 0 does nothing): the same, to the bit, as\n"
+     "calling step() that many times. Releases the GIL, so threads with one Sim each\n"
+     "run in parallel; Ctrl-C (KeyboardInterrupt) stops it between steps, keeping\n"
+     "the steps done."},
+    {"reset_observables", (PyCFunction)sim_reset_observables, METH_NOARGS,
+     "reset_observables($self, /)\n--\n\n"
+     "Zero the wall impulse, wall count, collision virial and pressure clock (not\n"
+     "the collision count or time), so that a relaxation period can be discarded\n"
+     "from pressure and virial_pressure."},
+    {"set_state", (PyCFunction)(void (*)(void))dspy_sim_set_state, METH_VARARGS | METH_KEYWORDS,
+     "set_state($self, /, positions, velocities=None)\n--\n\n"
+     "Replace every disk at once: positions and velocities are (n, 2) arrays (or\n"
+     "anything numpy reads as one), row i becoming disk i; velocities=None keeps the\n"
+     "present ones. The whole state is checked before anything changes (ds_set_all):\n"
+     "ArgumentError if a value is not finite, a velocity component exceeds 1e12, a\n"
+     "centre is outside the box ([R, box - R] x [R, box_y - R] with walls,\n"
+     "[0, box) x [0, box_y) periodic) or two disks overlap (status DS_ERR_OVERLAP),\n"
+     "with the library's sentence naming the disks. The integrator then starts\n"
+     "afresh from the new state; time, steps and the observables go on.\n"
+     "The arrays are copied: changing them afterwards changes nothing."},
+    {"write_frame", (PyCFunction)(void (*)(void))dspy_sim_write_frame,
+     METH_VARARGS | METH_KEYWORDS,
+     "write_frame($self, /, path, velocities=False)\n--\n\n"
+     "Write the disks to the text file path as the command's frames are written:\n"
+     "one line 'x y R' per disk in generation order (with velocities=True,\n"
+     "'x y R vx vy'), x, y, vx, vy with 6 decimals, R in the shortest form that\n"
+     "reads back exactly. read_frame() reads it back. FileError if it cannot be\n"
+     "written."},
+    {"pair_histogram", (PyCFunction)(void (*)(void))dspy_sim_pair_histogram,
+     METH_VARARGS | METH_KEYWORDS,
+     "pair_histogram($self, /, dr, bins)\n--\n\n"
+     "disksim.pair_histogram() of this Sim's disks in its box and boundary: the\n"
+     "number of pairs at each distance, in bins of width dr, for g(r)."},
+    {"local_psi6", (PyCFunction)(void (*)(void))dspy_sim_local_psi6,
+     METH_VARARGS | METH_KEYWORDS,
+     "local_psi6($self, /, cutoff=None)\n--\n\n"
+     "disksim.local_psi6() of this Sim's disks in its box and boundary: psi6 of\n"
+     "each disk as a complex array. cutoff=None is psi6's, 1.4 d (d = 2R)."},
+    {"to_ase", (PyCFunction)dspy_sim_to_ase, METH_NOARGS,
+     "to_ase($self, /)\n--\n\n"
+     "The disks as an ase.Atoms, as ASE reads the library's extended XYZ frames:\n"
+     "positions with z = 0, the cell box x box_y x 2R, pbc (True, True, False) in a\n"
+     "periodic box, else all False, arrays 'radius' (n,) and 'velo' (n, 3), info\n"
+     "'Time'; dummy atoms 'X' (atomic number 0, mass 1). ImportError without ASE\n"
+     "(Debian: python3-ase)."},
+    {"close", (PyCFunction)sim_close, METH_NOARGS,
+     "close($self, /)\n--\n\n"
+     "Free the simulation's memory now; afterwards every use raises Error. Calling\n"
+     "it again does nothing."},
+    {"__enter__", (PyCFunction)sim_enter, METH_NOARGS, "__enter__($self, /)\n--\n\nReturn self."},
+    {"__exit__", (PyCFunction)sim_exit, METH_VARARGS,
+     "__exit__($self, *exc_info, /)\n--\n\nclose(), and let any exception through."},
+    {NULL, NULL, 0, NULL},
+};
+
+PyTypeObject dspy_SimType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "disksim.Sim",
+    .tp_basicsize = sizeof(dspy_sim),
+    .tp_dealloc = (destructor)sim_dealloc,
+    .tp_repr = (reprfunc)sim_repr,
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE,
+    .tp_doc = sim_doc,
+    .tp_methods = sim_methods,
+    .tp_getset = sim_getset,
+    .tp_init = (initproc)sim_init,
+    .tp_new = sim_new,
+};
