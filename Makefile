@@ -339,7 +339,7 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 # them the suite is skipped with a one-line note naming the packages.
 PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 PY_JOBS ?= 2
-PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo "python3 $(1)")
+PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo python3)
 PY_EXT = $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_config_var("EXT_SUFFIX"))' 2>/dev/null)
 PY_MODULE = python/disksim/_disksim$(PY_EXT)
 PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py
@@ -347,14 +347,15 @@ PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py
 # extension cannot load into an uninstrumented python3.
 PY_CFLAGS := $(if $(filter 1,$(SANITIZE)),-O2 -g,$(CFLAGS))
 
-.PHONY: python python-test clean-python
-python:
+.PHONY: python python-deps python-test clean-python
+python: $(PY_MODULE)
+
+python-deps:
 	@missing=$(call PY_MISSING,build); if [ -n "$$missing" ]; then \
 	    echo "make python: $(PYTHON) lacks $$missing (Debian packages)"; exit 1; fi
-	@$(MAKE) --no-print-directory $(PY_MODULE)
 
 # setuptools recompiles every file when it builds: make decides when.
-$(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP)
+$(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
 	cd python && CC="$(CC)" CFLAGS="$(PY_CFLAGS)" $(PYTHON) setup.py -q build_ext --inplace \
 	    --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python
 
@@ -362,7 +363,7 @@ $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP)
 python-test: $(DISKS)
 	@missing=$(call PY_MISSING,test); if [ -n "$$missing" ]; then \
 	    echo "python tests skipped: $(PYTHON) lacks $$missing (Debian packages)"; exit 0; fi; \
-	$(MAKE) --no-print-directory python && echo "== pytest python/tests" && \
+	$(MAKE) -s --no-print-directory python && echo "== pytest python/tests" && \
 	    PYTHONPATH=python DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
 	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
 
