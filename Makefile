@@ -357,7 +357,7 @@ python-deps:
 # setuptools recompiles every file when it builds: make decides when.
 $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
 	cd python && CC="$(CC)" CFLAGS="$(PY_CFLAGS)" $(PYTHON) setup.py -q build_ext --inplace \
-	    --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python
+	    --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python/temp
 
 # The suite runs the disks of this build (test_frames compares its frames).
 python-test: $(DISKS)

@@ -32,17 +32,21 @@ def version():
         return re.search(r'#define DS_VERSION_STRING "([^"]+)"', f.read()).group(1)
 
 
-# Absolute paths: setuptools then keeps each object under build/temp.*/<path>
-# instead of climbing out of it through "..".
-lib_sources = sorted(glob.glob(os.path.join(TOP, "src", "*", "*.c")))
-module_sources = sorted(glob.glob(os.path.join(HERE, "src", "*.c")))
-headers = ([HEADER] + glob.glob(os.path.join(TOP, "src", "*", "*.h"))
-           + glob.glob(os.path.join(HERE, "src", "*.h")))
+# Paths relative to this directory, as setuptools requires. The library's
+# sources are ../src/*/*.c, so their objects land one level above the build
+# directory setuptools is given (make python gives it $(BUILD)/python/temp:
+# the objects go to $(BUILD)/python/src/).
+def relative(pattern):
+    return sorted(os.path.relpath(p, HERE) for p in glob.glob(os.path.join(HERE, pattern)))
+
+
+lib_sources = relative("../src/*/*.c")
+module_sources = relative("src/*.c")
+headers = relative("../include/disk_sim.h") + relative("../src/*/*.h") + relative("src/*.h")
 
 extension = Extension(
     "disksim._disksim",
-    sources=[os.path.relpath(p, HERE) if p.startswith(HERE) else p
-             for p in module_sources + lib_sources],
+    sources=module_sources + lib_sources,
     depends=headers,
     include_dirs=[os.path.join(TOP, "include"), os.path.join(TOP, "src"),
                   numpy.get_include()],
