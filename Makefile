@@ -341,11 +341,23 @@ PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 PY_JOBS ?= 2
 PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo python3)
 PY_EXT = $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_config_var("EXT_SUFFIX"))' 2>/dev/null)
-PY_MODULE = python/disksim/_disksim$(PY_EXT)
-PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py
-# Under SANITIZE=1 the module keeps the plain flags: an instrumented
-# extension cannot load into an uninstrumented python3.
-PY_CFLAGS := $(if $(filter 1,$(SANITIZE)),-O2 -g,$(CFLAGS))
+PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py python/disksim/__init__.py
+# SANITIZE=1 builds the module with the sanitizers into $(BUILD)/python/lib
+# (an instrumented module cannot replace the plain one in place) and runs
+# the suite with AddressSanitizer's runtime preloaded into python3, leak
+# checking off (CPython keeps its objects at exit).
+ifeq ($(SANITIZE),1)
+  PY_LIB    := $(BUILD)/python/lib
+  PY_MODULE  = $(PY_LIB)/disksim/_disksim$(PY_EXT)
+  PY_WHERE  := --build-lib ../$(PY_LIB)
+  PY_ASAN    = $(shell $(CC) -print-file-name=libasan.so)
+  PY_RUN     = $(if $(filter /%,$(PY_ASAN)),LD_PRELOAD=$(PY_ASAN) ASAN_OPTIONS=detect_leaks=0)
+else
+  PY_LIB    := python
+  PY_MODULE  = python/disksim/_disksim$(PY_EXT)
+  PY_WHERE  := --inplace
+  PY_RUN    :=
+endif
 
 .PHONY: python python-deps python-test clean-python
 python: $(PY_MODULE)
@@ -356,15 +368,16 @@ python-deps:
 
 # setuptools recompiles every file when it builds: make decides when.
 $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
-	cd python && CC="$(CC)" CFLAGS="$(PY_CFLAGS)" $(PYTHON) setup.py -q build_ext --inplace \
-	    --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python/temp
+	cd python && CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" $(PYTHON) setup.py -q \
+	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python/temp
+	$(if $(filter 1,$(SANITIZE)),cp python/disksim/__init__.py $(PY_LIB)/disksim/)
 
 # The suite runs the disks of this build (test_frames compares its frames).
 python-test: $(DISKS)
 	@missing=$(call PY_MISSING,test); if [ -n "$$missing" ]; then \
 	    echo "python tests skipped: $(PYTHON) lacks $$missing (Debian packages)"; exit 0; fi; \
 	$(MAKE) -s --no-print-directory python && echo "== pytest python/tests" && \
-	    PYTHONPATH=python DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
+	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" $(PY_RUN) \
 	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
 
 clean: clean-python

@@ -275,7 +275,8 @@ def fuzz_call(rng, s, tmp_path):
     return disksim.memory_needed(pick(VALUES), pick(VALUES))
 
 
-def test_two_thousand_random_calls_raise_or_succeed_and_never_crash(tmp_path):
+def test_two_thousand_random_calls_raise_or_succeed_and_never_crash(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # paths such as "a" or b"x" are written here
     rng = random.Random(26)
     s = disksim.Sim(20, 5, integrator="event")
     outcomes = {}
