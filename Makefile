@@ -84,13 +84,16 @@ $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	$(CC) $(WARN) $(CPPFLAGS) $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
-# After the C programs: the Python module's pytest suite (python-test,
-# below), which says in one line what it lacks instead when a Python
-# package is missing.
+# After the C programs: the equation-of-state sweep's scripts on a small
+# sweep (tests/eos_sweep.sh, a second), and the Python module's pytest
+# suite (python-test, below), which says in one line what it lacks instead
+# when a Python package is missing.
 test: all $(TEST_BIN)
 	@fail=0; for t in $(TEST_BIN); do \
 	    echo "== $$t"; ./$$t || fail=1; \
 	done; \
+	echo "== tests/eos_sweep.sh"; \
+	PRESSURE="$(CURDIR)/$(OUT)tools/pressure" sh tests/eos_sweep.sh || fail=1; \
 	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
