@@ -376,11 +376,12 @@ $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
 	$(if $(filter 1,$(SANITIZE)),cp python/disksim/__init__.py $(PY_LIB)/disksim/)
 
 # The suite runs the disks of this build (test_frames compares its frames).
-python-test: $(DISKS)
+python-test: $(DISKS) $(OUT)tools/pressure
 	@missing=$(call PY_MISSING,test); if [ -n "$$missing" ]; then \
 	    echo "python tests skipped: $(PYTHON) lacks $$missing (Debian packages)"; exit 0; fi; \
 	$(MAKE) -s --no-print-directory python && echo "== pytest python/tests" && \
-	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" $(PY_RUN) \
+	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
+	    DISKSIM_PRESSURE="$(CURDIR)/$(OUT)tools/pressure" $(PY_RUN) \
 	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
 
 clean: clean-python
