@@ -7,10 +7,10 @@
 /* The library returns a status only; these are the header's words for
  * what it refuses. */
 #define HISTOGRAM_RULES                                                                            \
-    "dr and the box's sides must be finite and > 0, the centres finite, and in a periodic box "   \
+    "dr and the box's sides must be finite and > 0, the centres finite, and in a periodic box "    \
     "bins * dr at most half the shorter side"
 #define PSI6_RULES                                                                                 \
-    "cutoff and the box's sides must be finite and > 0, the centres finite, and in a periodic "   \
+    "cutoff and the box's sides must be finite and > 0, the centres finite, and in a periodic "    \
     "box the cutoff below half the shorter side"
 
 typedef struct centres {
@@ -104,8 +104,7 @@ static PyObject *histogram(centres *c, const box_args *b, double dr, uint64_t bi
     uint64_t *out = (uint64_t *)PyArray_DATA(counts);
     ds_status st;
     Py_BEGIN_ALLOW_THREADS
-    st = ds_pair_histogram(c->n, c->x, c->y, b->box, b->box_y, b->boundary, dr, (size_t)bins,
-                           out);
+    st = ds_pair_histogram(c->n, c->x, c->y, b->box, b->box_y, b->boundary, dr, (size_t)bins, out);
     Py_END_ALLOW_THREADS
     if (st != DS_OK) {
         Py_DECREF(counts);
@@ -167,8 +166,8 @@ PyObject *dspy_pair_histogram(PyObject *module, PyObject *args, PyObject *kwargs
     (void)module;
     static char *keywords[] = {"positions", "dr", "bins", "box", "box_y", "boundary", NULL};
     PyObject *positions, *dr_obj, *bins_obj, *box = NULL, *box_y = NULL, *boundary = NULL;
-    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "OOO|$OOO:pair_histogram", keywords,
-                                     &positions, &dr_obj, &bins_obj, &box, &box_y, &boundary))
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "OOO|$OOO:pair_histogram", keywords, &positions,
+                                     &dr_obj, &bins_obj, &box, &box_y, &boundary))
         return NULL;
     double dr;
     uint64_t bins;

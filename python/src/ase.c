@@ -66,13 +66,13 @@ PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused)
     PyObject *atoms = NULL;
     if (positions && velo && numbers && radius && cell && pbc) {
         PyObject *atoms_type = PyObject_GetAttrString(ase, "Atoms");
-        PyObject *kwargs = atoms_type ? Py_BuildValue("{sOsOsOsO}", "numbers", numbers,
-                                                      "positions", positions, "cell", cell,
-                                                      "pbc", pbc)
+        PyObject *kwargs = atoms_type ? Py_BuildValue("{sOsOsOsO}", "numbers", numbers, "positions",
+                                                      positions, "cell", cell, "pbc", pbc)
                                       : NULL;
         PyObject *empty = kwargs ? PyTuple_New(0) : NULL;
         atoms = empty ? PyObject_Call(atoms_type, empty, kwargs) : NULL;
-        PyObject *a = atoms ? PyObject_CallMethod(atoms, "set_array", "sO", "radius", radius) : NULL;
+        PyObject *a =
+            atoms ? PyObject_CallMethod(atoms, "set_array", "sO", "radius", radius) : NULL;
         PyObject *b = a ? PyObject_CallMethod(atoms, "set_array", "sO", "velo", velo) : NULL;
         PyObject *info = b ? PyObject_GetAttrString(atoms, "info") : NULL;
         PyObject *key = info ? PyUnicode_FromString("Time") : NULL;

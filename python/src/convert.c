@@ -39,10 +39,9 @@ int dspy_uint64_arg(PyObject *value, const char *field, int is_count, uint64_t *
             PyErr_Clear();
             /* Beyond 2**64 - 1: for a count of things in memory, too many to
              * hold, as the library says of a count beyond what it can hold. */
-            PyObject *message =
-                PyUnicode_FromFormat(is_count ? "%s = %S cannot be held in memory"
-                                              : "%s = %S is beyond 2**64 - 1",
-                                     field, index);
+            PyObject *message = PyUnicode_FromFormat(is_count ? "%s = %S cannot be held in memory"
+                                                              : "%s = %S is beyond 2**64 - 1",
+                                                     field, index);
             const char *text = message ? PyUnicode_AsUTF8(message) : NULL;
             if (text)
                 dspy_raise(is_count ? DS_ERR_NOMEM : DS_ERR_ARG, field, text);
@@ -133,11 +132,12 @@ PyArrayObject *dspy_xy_array(PyObject *value, const char *field, size_t want)
         if (ndim == 1)
             strcat(shape, ",");
         if (want == (size_t)-1)
-            dspy_raisef(DS_ERR_ARG, field, "%s has shape (%s%s): it must be (n, 2)", field,
-                        shape, ndim > 4 ? ", ..." : "");
+            dspy_raisef(DS_ERR_ARG, field, "%s has shape (%s%s): it must be (n, 2)", field, shape,
+                        ndim > 4 ? ", ..." : "");
         else
-            dspy_raisef(DS_ERR_ARG, field, "%s has shape (%s%s): it must be (%zu, 2), one row per disk",
-                        field, shape, ndim > 4 ? ", ..." : "", want);
+            dspy_raisef(DS_ERR_ARG, field,
+                        "%s has shape (%s%s): it must be (%zu, 2), one row per disk", field, shape,
+                        ndim > 4 ? ", ..." : "", want);
         Py_DECREF(a);
         return NULL;
     }

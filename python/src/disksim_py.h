@@ -4,9 +4,10 @@
  * exceptions and how a ds_status becomes one (errors.c), the names of the
  * library's enumerations (names.c), argument conversion (convert.c), the
  * parameters of a simulation from keyword arguments (params.c), the Sim
- * type (sim.c), its state as arrays (state.c), frames (frames.c), the
- * analysis functions (analysis.c) and ASE (ase.c). Only the public header
- * disk_sim.h is used: the module is a thin face over the library.
+ * type (sim.c), its properties (properties.c), its state as arrays
+ * (state.c), frames (frames.c), the analysis functions (analysis.c) and
+ * ASE (ase.c). Only the public header disk_sim.h is used: the module is a
+ * thin face over the library.
  *
  * Internal names start with dspy_; the module is built with
  * -fvisibility=hidden, so none of them (nor the library's ds_*) leaves it.
@@ -111,8 +112,7 @@ int dspy_path_arg(PyObject *value, PyObject **bytes);
 /* ds_params from Sim's arguments (n, radius, and the keyword-only rest),
  * checked by ds_diagnose_params: on failure the library's sentence is
  * raised. warning receives the first warning's sentence ("" if none). */
-int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params,
-                          char warning[256]);
+int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params, char warning[256]);
 /* The keyword arguments that recreate params, as a dict (for repr and
  * Sim.params). */
 PyObject *dspy_params_dict(const ds_params *params);
@@ -129,7 +129,7 @@ PyObject *dspy_params_repr(const ds_params *params);
 typedef struct dspy_sim {
     PyObject_HEAD
     ds_sim *sim;      /* NULL once closed (or before __init__) */
-    ds_params params;          /* as created, for repr and params */
+    ds_params params; /* as created, for repr and params */
     /* Set while a call runs without the GIL (run, step, creation,
      * set_state, writing): any other use of this Sim from another thread
      * then raises Error instead of racing the library. */
@@ -137,6 +137,8 @@ typedef struct dspy_sim {
 } dspy_sim;
 
 extern PyTypeObject dspy_SimType;
+/* properties.c: the table of Sim's properties. */
+extern PyGetSetDef dspy_sim_getset[];
 /* The simulation of self, or NULL with Error raised: closed, or busy in
  * another thread. */
 ds_sim *dspy_sim_of(dspy_sim *self);

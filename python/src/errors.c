@@ -21,8 +21,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-PyObject *dspy_Error, *dspy_ArgumentError, *dspy_FormatError, *dspy_FileError,
-    *dspy_NoMemoryError;
+PyObject *dspy_Error, *dspy_ArgumentError, *dspy_FormatError, *dspy_FileError, *dspy_NoMemoryError;
 
 static const char error_doc[] =
     "Error(message)\n\n"
@@ -65,30 +64,30 @@ static PyObject *new_error(PyObject *module, const char *name, PyObject *bases, 
     return type;
 }
 
+/* Error first: the others derive from it and from a built-in exception. */
+static const struct {
+    const char *name;
+    PyObject **type;
+    PyObject **builtin;
+    const char *doc;
+} errors[] = {
+    {"Error", &dspy_Error, &PyExc_Exception, error_doc},
+    {"ArgumentError", &dspy_ArgumentError, &PyExc_ValueError, argument_error_doc},
+    {"FormatError", &dspy_FormatError, &PyExc_ValueError, format_error_doc},
+    {"FileError", &dspy_FileError, &PyExc_OSError, file_error_doc},
+    {"NoMemoryError", &dspy_NoMemoryError, &PyExc_MemoryError, no_memory_error_doc},
+};
+
 int dspy_add_exceptions(PyObject *module)
 {
-    dspy_Error = new_error(module, "Error", Py_NewRef(PyExc_Exception), error_doc);
-    if (!dspy_Error)
-        return -1;
-    dspy_ArgumentError = new_error(module, "ArgumentError",
-                                   PyTuple_Pack(2, dspy_Error, PyExc_ValueError),
-                                   argument_error_doc);
-    dspy_FormatError = dspy_ArgumentError
-                           ? new_error(module, "FormatError",
-                                       PyTuple_Pack(2, dspy_Error, PyExc_ValueError),
-                                       format_error_doc)
-                           : NULL;
-    dspy_FileError =
-        dspy_FormatError
-            ? new_error(module, "FileError", PyTuple_Pack(2, dspy_Error, PyExc_OSError),
-                        file_error_doc)
-            : NULL;
-    dspy_NoMemoryError =
-        dspy_FileError ? new_error(module, "NoMemoryError",
-                                   PyTuple_Pack(2, dspy_Error, PyExc_MemoryError),
-                                   no_memory_error_doc)
-                       : NULL;
-    return dspy_NoMemoryError ? 0 : -1;
+    for (size_t k = 0; k < sizeof errors / sizeof errors[0]; ++k) {
+        PyObject *bases = k == 0 ? Py_NewRef(*errors[k].builtin)
+                                 : PyTuple_Pack(2, dspy_Error, *errors[k].builtin);
+        *errors[k].type = new_error(module, errors[k].name, bases, errors[k].doc);
+        if (!*errors[k].type)
+            return -1;
+    }
+    return 0;
 }
 
 const char *dspy_status_name(ds_status status)
@@ -134,8 +133,8 @@ static PyObject *type_of(ds_status status)
 PyObject *dspy_raise(ds_status status, const char *field, const char *message)
 {
     PyObject *type = type_of(status);
-    PyObject *exc = PyObject_CallFunction(type, "s", message && *message ? message
-                                                                       : ds_status_str(status));
+    PyObject *exc =
+        PyObject_CallFunction(type, "s", message && *message ? message : ds_status_str(status));
     if (!exc)
         return NULL;
     PyObject *field_obj = field && *field ? PyUnicode_FromString(field) : Py_NewRef(Py_None);

@@ -36,8 +36,15 @@ static const char module_doc[] =
     "through libdisksim's public API (include/disk_sim.h). Use it as `disksim`.";
 
 static struct PyModuleDef module_def = {
-    PyModuleDef_HEAD_INIT, "disksim._disksim", module_doc, -1, module_functions,
-    NULL,                  NULL,               NULL,       NULL,
+    PyModuleDef_HEAD_INIT,
+    "disksim._disksim",
+    module_doc,
+    -1,
+    module_functions,
+    NULL,
+    NULL,
+    NULL,
+    NULL,
 };
 
 static int add_constants(PyObject *m)

@@ -25,7 +25,7 @@ typedef enum arg_kind {
 typedef struct param_arg {
     const char *name; /* the keyword, and the ds_params member */
     arg_kind kind;
-    size_t offset; /* of the member in ds_params */
+    size_t offset;   /* of the member in ds_params */
     double fallback; /* ARG_LENGTH: the default, written out */
     dspy_kind names; /* ARG_NAME: which names */
 } param_arg;
@@ -234,15 +234,17 @@ PyObject *dspy_params_repr(const ds_params *p)
         if (param_args[k].kind == ARG_LENGTH)
             *(double *)member(&defaults, &param_args[k]) = param_args[k].fallback;
     PyObject *mine = dspy_params_dict(p), *plain = dspy_params_dict(&defaults);
-    PyObject *text = mine && plain ? PyUnicode_FromFormat("Sim(%R, %R", PyDict_GetItemString(mine, "n"),
-                                                          PyDict_GetItemString(mine, "radius"))
-                                   : NULL;
+    PyObject *text = mine && plain
+                         ? PyUnicode_FromFormat("Sim(%R, %R", PyDict_GetItemString(mine, "n"),
+                                                PyDict_GetItemString(mine, "radius"))
+                         : NULL;
     for (size_t k = POSITIONAL; text && k < PARAM_ARGS; ++k) {
         PyObject *v = PyDict_GetItemString(mine, param_args[k].name);
         PyObject *d = PyDict_GetItemString(plain, param_args[k].name);
         const int same = v && d ? PyObject_RichCompareBool(v, d, Py_EQ) : -1;
-        PyObject *part = same == 0 ? PyUnicode_FromFormat(", %s=%R", param_args[k].name, v)
-                                   : same == 1 ? PyUnicode_FromString("") : NULL;
+        PyObject *part = same == 0   ? PyUnicode_FromFormat(", %s=%R", param_args[k].name, v)
+                         : same == 1 ? PyUnicode_FromString("")
+                                     : NULL;
         PyObject *joined = part ? PyUnicode_Concat(text, part) : NULL;
         Py_XDECREF(part);
         Py_SETREF(text, joined);

@@ -13,8 +13,8 @@
 ds_disk *dspy_get_all(const ds_sim *sim)
 {
     const size_t n = ds_count(sim);
-    ds_disk *disks = n <= PY_SSIZE_T_MAX / sizeof *disks ? PyMem_RawMalloc(n * sizeof *disks + 1)
-                                                          : NULL;
+    ds_disk *disks =
+        n <= PY_SSIZE_T_MAX / sizeof *disks ? PyMem_RawMalloc(n * sizeof *disks + 1) : NULL;
     if (!disks) {
         PyErr_NoMemory();
         return NULL;
@@ -68,9 +68,9 @@ PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs)
         return NULL;
     const size_t n = ds_count(sim);
     PyArrayObject *positions = dspy_xy_array(positions_obj, "positions", n);
-    PyArrayObject *velocities =
-        positions && velocities_obj != Py_None ? dspy_xy_array(velocities_obj, "velocities", n)
-                                               : NULL;
+    PyArrayObject *velocities = positions && velocities_obj != Py_None
+                                    ? dspy_xy_array(velocities_obj, "velocities", n)
+                                    : NULL;
     ds_disk *disks = NULL;
     PyObject *result = NULL;
     if (!positions || (velocities_obj != Py_None && !velocities))
