@@ -5,7 +5,9 @@ The rule (python/src/convert.c): TypeError for a value of the wrong type;
 disksim.ArgumentError (an Error and a ValueError) for a value refused;
 NoMemoryError (an Error and a MemoryError) for more than the machine can
 hold; FileError (an OSError) and FormatError (a ValueError) for files."""
+import copy
 import math
+import pickle
 import random
 import warnings
 
@@ -175,6 +177,14 @@ def test_a_closed_sim_refuses_everything_and_says_so():
     for call in calls:
         with pytest.raises(Error, match="this Sim is closed"):
             call()
+
+
+@pytest.mark.parametrize("how", [copy.copy, copy.deepcopy, pickle.dumps])
+def test_a_sim_cannot_be_copied_or_pickled_yet(how):
+    # (a copy would share the library's simulation; exact checkpoints will
+    # make both possible)
+    with pytest.raises(TypeError, match="cannot pickle"):
+        how(disksim.Sim(3, 1))
 
 
 def test_a_sim_that_was_never_initialised_refuses_too():

@@ -3,9 +3,11 @@ as one after another, and a Sim used from two threads refuses instead of
 racing. No test here measures a time: `tools/analysis/eos.sh -j` and
 docs/sweeps.md are where speed is measured."""
 import concurrent.futures
+import signal
 import threading
 
 import numpy as np
+import pytest
 
 import disksim
 
@@ -57,3 +59,31 @@ def test_run_lets_other_threads_run_and_a_sim_in_use_refuses_them():
     assert not s.running and s.steps == 70000  # and the Sim is whole afterwards
     s.step()
     assert s.steps == 70001 and s.positions.shape == (4000, 2)
+
+
+class Stop(Exception):
+    pass
+
+
+def test_a_signal_stops_a_long_run_between_steps_and_the_sim_stays_whole():
+    """Ctrl-C is SIGINT's KeyboardInterrupt; any handler that raises works the
+    same way: run() takes signals between its chunks of steps."""
+    if not hasattr(signal, "setitimer"):
+        pytest.skip("no setitimer")
+
+    def stop(signum, frame):
+        raise Stop()
+
+    s = disksim.Sim(4000, 2, integrator="event")
+    previous = signal.signal(signal.SIGALRM, stop)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, 0.05)
+        with pytest.raises(Stop):
+            s.run(10**6)  # seconds of work: the signal comes long before the end
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    done = s.steps
+    assert 0 < done < 10**6 and not s.running
+    s.run(10)  # and it goes on from where it stopped
+    assert s.steps == done + 10
