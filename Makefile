@@ -98,6 +98,19 @@ test: all $(TEST_BIN)
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
 
+# ---------------------------------------------------------------- docs
+# Docs that cannot rot, checked by `make test` (and alone by `make
+# check-docs`): tests/check_docs.sh checks that the links of README.md and
+# docs/ resolve, that every option the programs print in --help is in their
+# man page and docs/ page and no other option is, that example commands use
+# real options, that the README's library example is examples/minimal.c,
+# that the API is named in man/disk_sim.3 and docs/library.md, and that the
+# man pages render without a warning. It prints what is wrong and fails.
+.PHONY: check-docs
+check-docs: all
+	sh tests/check_docs.sh $(DISKS) $(OUT)tools/render $(OUT)tools/gr $(OUT)tools/pressure
+test: check-docs
+
 # ---------------------------------------------------------------- hardening
 .PHONY: fuzz check-symbols bad-input-table
 
@@ -111,7 +124,28 @@ build-fuzz/fuzz_frame: tests/fuzz_frame.c $(LIB_SRC) $(LIB_HDR)
 	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -g -O1 -fsanitize=fuzzer,address,undefined \
 	    -fno-sanitize-recover=all -o $@ tests/fuzz_frame.c $(LIB_SRC) -lm
 
-fuzz: build-fuzz/fuzz_frame
+# The checkpoint loader likewise (tests/fuzz_state.c), seeded with small
+# checkpoints of every integrator, boundary and broad phase that
+# tests/state_seeds.c writes; crashes go to tests/corpus-state/.
+build-fuzz/fuzz_state: tests/fuzz_state.c $(LIB_SRC) $(LIB_HDR)
+	@mkdir -p build-fuzz/state-found
+	$(FUZZ_CC) $(WARN) $(CPPFLAGS) -g -O1 -fsanitize=fuzzer,address,undefined \
+	    -fno-sanitize-recover=all -o $@ tests/fuzz_state.c $(LIB_SRC) -lm
+
+build-fuzz/state_seeds: tests/state_seeds.c $(LIB)
+	@mkdir -p build-fuzz/state-seeds
+	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+fuzz: fuzz-frame fuzz-state
+.PHONY: fuzz-frame fuzz-state
+fuzz-state: build-fuzz/fuzz_state build-fuzz/state_seeds
+	./build-fuzz/state_seeds build-fuzz/state-seeds
+	@mkdir -p tests/corpus-state
+	./build-fuzz/fuzz_state -max_total_time=$(FUZZ_SECONDS) -max_len=8192 -timeout=10 \
+	    -rss_limit_mb=1024 -print_final_stats=1 -artifact_prefix=tests/corpus-state/ \
+	    build-fuzz/state-found build-fuzz/state-seeds tests/corpus-state
+
+fuzz-frame: build-fuzz/fuzz_frame
 	./build-fuzz/fuzz_frame -max_total_time=$(FUZZ_SECONDS) -max_len=2048 -timeout=10 \
 	    -rss_limit_mb=1024 -print_final_stats=1 -artifact_prefix=tests/corpus/ \
 	    -dict=tests/fuzz_frame.dict \
@@ -126,15 +160,15 @@ check-symbols: $(LIB)
 	if [ -n "$$calls" ]; then echo "check-symbols: the library calls" $$calls; exit 1; fi; \
 	echo "check-symbols: $$(nm -g --defined-only $(LIB) | awk 'NF == 3' | wc -l) exported symbols, all ds_*, no printing or exit"
 
-# Regenerates the README "Bad input" table from tests/cli_cases.txt.
+# Regenerates the "Bad input" table of docs/cli.md from tests/cli_cases.txt.
 bad-input-table: all $(BUILD)/tests/test_cli
-	sh tests/bad_input_table.sh $(BUILD)/tests/test_cli README.md
+	sh tests/bad_input_table.sh $(BUILD)/tests/test_cli docs/cli.md
 
 clean:
 	rm -rf build build-san build-fuzz build-werror-gcc build-werror-clang build-plain libdisksim.a disks
 
 # ---------------------------------------------------------------- bench
-# `make bench` prints the performance table of the README (under a minute
+# `make bench` prints the table of docs/performance.md (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
 BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_stats.c
@@ -185,6 +219,12 @@ PKGCONFIGDIR = $(LIBDIR)/pkgconfig
 INSTALL      ?= install
 # The gnuplot scripts, wherever they live in the tree (share/disksim/).
 PLT_FILES     = $(wildcard animate_disk.plt tools/analysis/*.plt)
+# The documentation, where a package puts it (share/doc/disksim/): the
+# front page, changelog and licence, and the manual in docs/ with its
+# pictures, so the pages' relative links work in the installed copy.
+DOCDIR        = $(DATADIR)/doc/disksim
+DOC_FILES     = README.md CHANGELOG.md LICENSE
+DOC_PAGES     = $(wildcard docs/*.md docs/*.png)
 
 .PHONY: examples install uninstall clean-packaging FORCE
 all: $(OUT)libdisksim.so disksim.pc
@@ -230,15 +270,18 @@ $(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
-# disks-render is installed when the renderer has been built (`make render`).
-# The man page names the gnuplot scripts by their path under the default
-# prefix; the installed copy names them where they really are.
+# disks-render and its man page are installed when the renderer has been
+# built (`make render`). The man page of disks names the gnuplot scripts by
+# their path under the default prefix; the installed copy names them where
+# they really are.
 install: all
 	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
-	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim
+	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim \
+	    $(DESTDIR)$(MANDIR)/man3 $(DESTDIR)$(DOCDIR)/docs
 	$(INSTALL) -m 755 $(DISKS) $(DESTDIR)$(BINDIR)/disks
 	if [ -x $(OUT)tools/render ]; then \
-	    $(INSTALL) -m 755 $(OUT)tools/render $(DESTDIR)$(BINDIR)/disks-render; fi
+	    $(INSTALL) -m 755 $(OUT)tools/render $(DESTDIR)$(BINDIR)/disks-render && \
+	    $(INSTALL) -m 644 man/disks-render.1 $(DESTDIR)$(MANDIR)/man1/disks-render.1; fi
 	$(INSTALL) -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libdisksim.a
 	$(INSTALL) -m 755 $(OUT)$(SHLIB) $(DESTDIR)$(LIBDIR)/$(SHLIB)
 	ln -sf $(SHLIB) $(DESTDIR)$(LIBDIR)/$(SONAME)
@@ -248,16 +291,23 @@ install: all
 	sed 's|/usr/local/share/disksim|$(DATADIR)/disksim|g' man/disks.1 \
 	    > $(DESTDIR)$(MANDIR)/man1/disks.1
 	chmod 644 $(DESTDIR)$(MANDIR)/man1/disks.1
+	$(INSTALL) -m 644 man/disk_sim.3 $(DESTDIR)$(MANDIR)/man3/disk_sim.3
 	$(if $(PLT_FILES),$(INSTALL) -m 644 $(PLT_FILES) $(DESTDIR)$(DATADIR)/disksim/)
+	$(INSTALL) -m 644 $(DOC_FILES) $(DESTDIR)$(DOCDIR)/
+	$(if $(DOC_PAGES),$(INSTALL) -m 644 $(DOC_PAGES) $(DESTDIR)$(DOCDIR)/docs/)
 
 uninstall:
 	rm -f $(DESTDIR)$(BINDIR)/disks $(DESTDIR)$(BINDIR)/disks-render \
 	    $(DESTDIR)$(LIBDIR)/libdisksim.a $(DESTDIR)$(LIBDIR)/libdisksim.so \
 	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(SHLIB) \
 	    $(DESTDIR)$(INCLUDEDIR)/disk_sim.h $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc \
-	    $(DESTDIR)$(MANDIR)/man1/disks.1 \
-	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(notdir $(PLT_FILES)))
+	    $(DESTDIR)$(MANDIR)/man1/disks.1 $(DESTDIR)$(MANDIR)/man1/disks-render.1 \
+	    $(DESTDIR)$(MANDIR)/man3/disk_sim.3 \
+	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(notdir $(PLT_FILES))) \
+	    $(addprefix $(DESTDIR)$(DOCDIR)/,$(DOC_FILES)) \
+	    $(addprefix $(DESTDIR)$(DOCDIR)/docs/,$(notdir $(DOC_PAGES)))
 	rmdir $(DESTDIR)$(DATADIR)/disksim 2>/dev/null || true
+	rmdir $(DESTDIR)$(DOCDIR)/docs $(DESTDIR)$(DOCDIR) 2>/dev/null || true
 
 clean-packaging:
 	rm -f libdisksim.so libdisksim.so.* disksim.pc disksim.pc.tmp \

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs into a temporary stage the way a distribution package is built
-# (make install DESTDIR=stage PREFIX=/usr), checks every installed file, then
+# (make install DESTDIR=stage PREFIX=/usr), checks every installed file (the
+# manual pages rendered by man without a warning, the documentation), then
 # builds examples/minimal.c and the README's library example against the
 # staged copy through pkg-config, once with the shared and once with the
 # static library, runs them, and checks that make uninstall removes it all.
@@ -19,8 +20,14 @@ make -s install DESTDIR="$stage" PREFIX=/usr
 
 for f in usr/bin/disks usr/lib/libdisksim.a "usr/lib/libdisksim.so.$version" \
          usr/include/disk_sim.h usr/lib/pkgconfig/disksim.pc \
-         usr/share/man/man1/disks.1 usr/share/disksim/animate_disk.plt; do
+         usr/share/man/man1/disks.1 usr/share/man/man3/disk_sim.3 \
+         usr/share/disksim/animate_disk.plt; do
     [ -f "$stage/$f" ] || fail "missing $f"
+done
+# The documentation where a package puts it, the manual with its pictures.
+doc=usr/share/doc/disksim
+for f in README.md CHANGELOG.md LICENSE docs/*.md docs/*.png; do
+    cmp -s "$f" "$stage/$doc/$f" || fail "$f is not installed as $doc/$f"
 done
 [ "$(readlink "$stage/usr/lib/libdisksim.so.$major")" = "libdisksim.so.$version" ] ||
     fail "libdisksim.so.$major does not point to libdisksim.so.$version"
@@ -30,11 +37,17 @@ readelf -d "$stage/usr/lib/libdisksim.so.$version" | grep -q "SONAME.*\[libdisks
     fail "soname is not libdisksim.so.$major"
 if [ -x tools/render ]; then
     [ -x "$stage/usr/bin/disks-render" ] || fail "tools/render is built but not installed"
+    [ -f "$stage/usr/share/man/man1/disks-render.1" ] || fail "disks-render is installed without its man page"
 fi
 grep -q '^\.I /usr/share/disksim/animate_disk\.plt$' "$stage/usr/share/man/man1/disks.1" ||
     fail "installed disks.1 does not name /usr/share/disksim/animate_disk.plt"
 groff -man -Tutf8 -ww -z "$stage/usr/share/man/man1/disks.1" 2>&1 | { ! grep .; } ||
     fail "installed disks.1 has groff warnings"
+# Each installed manual page as man shows it: no warning from man or groff.
+for page in "$stage"/usr/share/man/man*/*; do
+    out=$(man -l --warnings "$page" 2>&1 >/dev/null) || fail "man -l $page failed: $out"
+    [ -z "$out" ] || fail "man -l ${page#"$stage"/} warns: $out"
+done
 "$stage/usr/bin/disks" --version | grep -qx "disks $version" || fail "installed disks --version"
 
 # The shared library exports exactly the functions of the public header.
@@ -49,6 +62,9 @@ export PKG_CONFIG_SYSROOT_DIR="$stage"
 [ "$(pkg-config --modversion disksim)" = "$version" ] || fail "disksim.pc version"
 grep -qx 'prefix=/usr' "$stage/usr/lib/pkgconfig/disksim.pc" || fail "disksim.pc prefix"
 grep -qx 'Libs.private: -lm' "$stage/usr/lib/pkgconfig/disksim.pc" || fail "disksim.pc Libs.private"
+grep -qx 'License: MIT' "$stage/usr/lib/pkgconfig/disksim.pc" || fail "disksim.pc names no License: MIT"
+pkg-config --validate disksim || fail "pkg-config --validate disksim"
+grep -qx 'MIT License' LICENSE 2>/dev/null || fail "LICENSE is not the MIT licence"
 
 # The library example of the README, as a reader would copy it.
 awk '/^## Use the library/ { on = 1; next } /^## / { on = 0 }

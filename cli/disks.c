@@ -55,8 +55,8 @@ static const char *const usage_text =
     "                       event-driven dynamics)\n"
     "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
     "                       or auto (default auto)\n"
-    "  --quiet              print nothing but errors and warnings\n"
-    "  --help               show this help and exit\n"
+    "  -q, --quiet          print nothing but errors and warnings\n"
+    "  -h, --help           show this help and exit\n"
     "  --version            show the version and exit\n"
     "\n"
     "exit status: 0 success, 1 run-time error (placement, I/O), 2 usage error\n";

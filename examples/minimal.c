@@ -1,5 +1,5 @@
 /* The smallest complete program on libdisksim: create a simulation, run it,
- * print the seed exercise's figure (time spent on disk-disk collisions).
+ * print the classic exercise's figure (time spent on disk-disk collisions).
  *
  *   cc minimal.c $(pkg-config --cflags --libs disksim) -o minimal && ./minimal
  */
@@ -19,7 +19,7 @@ int main(void)
         return 1;
     }
 
-    ds_run(sim, 49900); /* the seed's 499 frames x 100 steps */
+    ds_run(sim, 49900); /* 499 frames x 100 steps, as disks 400 5 */
 
     printf("libdisksim %s: %zu disks, %.1f simulated seconds\n", ds_version(), ds_count(sim),
            ds_time(sim));

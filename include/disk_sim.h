@@ -265,6 +265,44 @@ typedef struct ds_state_error {
  * the time, the step count and the observables' accumulators go on. */
 ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
 
+/* ------------------------------------------------------------------ */
+/* Checkpoints: a simulation saved and loaded to the bit               */
+/* ------------------------------------------------------------------ */
+
+/* A checkpoint holds everything the next step depends on: the parameters,
+ * the time and step count, every disk's position and velocity to the bit
+ * (in the order the broad phase keeps them), the observables'
+ * accumulators (wall impulse and count, virial, collision and test
+ * counts, the collision timer) and the integrator's own state (the time
+ * step's strips; the event-driven records, cells and clock). A loaded
+ * simulation goes on bit for bit as the saved one would have, for both
+ * integrators, both boundaries and every broad phase.
+ *
+ * The format (docs/library.md): the 8 bytes "DSIMSTAT", the format
+ * version (32 bits, DS_STATE_FORMAT_VERSION), a byte order mark
+ * 0x01020304 (32 bits), the library version that wrote it (16 bytes of
+ * text), the length of the payload (64 bits), the payload, and an FNV-1a
+ * 64-bit checksum of all that precedes it. Every integer and double (by
+ * its IEEE 754 bits) is little-endian whatever the machine, so a file
+ * moves between machines. */
+#define DS_STATE_FORMAT_VERSION 1
+
+/* Bytes ds_format_state writes for sim (0 for NULL). */
+size_t ds_state_size(const ds_sim *sim);
+/* The checkpoint into buf (cap bytes); as ds_format_frame, *len receives
+ * the bytes needed either way and a cap too small is DS_ERR_ARG. */
+ds_status ds_format_state(const ds_sim *sim, void *buf, size_t cap, size_t *len);
+/* The checkpoint to out, flushed: DS_ERR_IO if the write fails,
+ * DS_ERR_NOMEM without memory for it, DS_ERR_ARG for NULL. */
+ds_status ds_save_state(const ds_sim *sim, FILE *out);
+/* A simulation from a checkpoint of len bytes: on DS_OK *out owns it.
+ * A truncated, corrupted, foreign or future-version checkpoint is
+ * DS_ERR_FORMAT with the reason in err (if not NULL), never a crash;
+ * DS_ERR_NOMEM without memory for it. */
+ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err);
+/* The same from a file read to its end (DS_ERR_IO if reading fails). */
+ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err);
+
 /* The seed's timing measure, summed over all steps. DS_TIME_STEP: seconds
  * spent sorting, pruning, testing and resolving disk-disk pairs.
  * DS_EVENT_DRIVEN: seconds spent processing events (collisions, wall

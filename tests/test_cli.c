@@ -1,10 +1,10 @@
 /* The commands under bad input: each case of tests/cli_cases.txt runs the
- * real binary in a fresh directory and checks the promise of the README:
+ * real binary in a fresh directory and checks the promise of docs/cli.md:
  * one line on stderr naming the bad value, the documented exit status, no
  * crash or hang, and no temporary or partial file left behind.
  *
  *   test_cli            runs every case as a cmocka test
- *   test_cli --table    runs every case and prints the README table
+ *   test_cli --table    runs every case and prints the table of docs/cli.md
  *
  * Paths: DS_DISKS / DS_RENDER / DS_CLI_CASES in the environment override
  * the paths the Makefile compiled in (relative to the starting directory). */
@@ -31,8 +31,8 @@
 #ifndef DS_TEST_RENDER
 #define DS_TEST_RENDER "tools/render"
 #endif
-#ifndef DS_TEST_README
-#define DS_TEST_README "README.md"
+#ifndef DS_TEST_CLI_DOC
+#define DS_TEST_CLI_DOC "docs/cli.md"
 #endif
 #ifndef DS_TEST_CASES
 #define DS_TEST_CASES "tests/cli_cases.txt"
@@ -549,15 +549,15 @@ static void test_an_interrupted_run_leaves_only_complete_frames(void **state)
     }
 }
 
-/* The README table is generated from this list (make bad-input-table):
+/* The table of docs/cli.md is generated from this list (make bad-input-table):
  * a case added, renamed or removed without regenerating it fails here. */
-static void test_the_readme_table_lists_every_case(void **state)
+static void test_the_cli_doc_table_lists_every_case(void **state)
 {
     (void)state;
-    const char *path = getenv("DS_README");
-    FILE *f = fopen(path && *path ? path : DS_TEST_README, "r");
+    const char *path = getenv("DS_CLI_DOC");
+    FILE *f = fopen(path && *path ? path : DS_TEST_CLI_DOC, "r");
     if (!f) {
-        print_message("skipped: no %s to check\n", DS_TEST_README);
+        print_message("skipped: no %s to check\n", DS_TEST_CLI_DOC);
         skip();
     }
     static char text[1 << 18];
@@ -576,7 +576,8 @@ static void test_the_readme_table_lists_every_case(void **state)
         row_start(&cases[i], row, sizeof row);
         const char *hit = strstr(begin, row);
         if (!hit || hit > end)
-            fail_msg("README.md has no row for cli_cases.txt:%d \"%s\": run make bad-input-table",
+            fail_msg(DS_TEST_CLI_DOC
+                     " has no row for cli_cases.txt:%d \"%s\": run make bad-input-table",
                      cases[i].line, cases[i].name);
     }
     /* Rows = header + one per case: no row for a case that was removed. */
@@ -599,7 +600,7 @@ static void test_help_documents_the_exit_statuses(void **state)
 }
 
 /* ------------------------------------------------------------------ */
-/* README table                                                        */
+/* The table of docs/cli.md                                            */
 /* ------------------------------------------------------------------ */
 
 /* Appends s to out as table cell text: one line, '|' escaped, no '`'. */
@@ -681,7 +682,7 @@ int main(int argc, char **argv)
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_help_documents_the_exit_statuses);
     tests[n++] =
         (struct CMUnitTest)cmocka_unit_test(test_an_interrupted_run_leaves_only_complete_frames);
-    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_the_readme_table_lists_every_case);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_the_cli_doc_table_lists_every_case);
     for (size_t i = 0; i < case_count; ++i) {
         struct CMUnitTest t = cmocka_unit_test_prestate(test_bad_input_case, &cases[i]);
         t.name = cases[i].name;

@@ -10,6 +10,7 @@
 #define DS_CORE_H
 
 #include "core/disk_arrays.h"
+#include "core/state_io.h"
 #include "disk_sim.h"
 
 #define DS_TWO_PI 6.28318530717958647692
@@ -79,7 +80,25 @@ struct ds_integrator_ops {
     /* Replaces the disk in slot k (already checked to be inside the box,
      * finite), or refuses it without changing anything. */
     ds_status (*set)(ds_sim *sim, size_t k, ds_disk d);
+    /* Writes whatever of its state the next step depends on, beyond what
+     * sim/state.c writes (the world, the steps, the tally, the disk
+     * arrays in their slots), so that a run loaded from it goes on to the
+     * bit as if it had never stopped. */
+    void (*save)(const ds_sim *sim, ds_writer *w);
+    /* Reads that back into sim->state, the rest of sim already restored:
+     * DS_OK, or DS_ERR_FORMAT (or DS_ERR_NOMEM) with a reason, leaving
+     * what it made for destroy. It checks what could make the library
+     * misbehave (indices out of range, lists that loop, times that are
+     * not numbers); the checksum catches the rest. */
+    ds_status (*load)(ds_sim *sim, ds_reader *r, ds_state_error *err);
 };
+
+/* Fills err (if not NULL) with a printf-style sentence; returns status. */
+ds_status ds_state_refuse(ds_state_error *err, ds_status status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 
 /* Fills err (if not NULL) with field and a printf-style message; returns
  * status, so a check reads `return ds_refuse(err, DS_ERR_ARG, "n", ...)`. */

@@ -197,7 +197,9 @@ void ds_eq_on_soon(ds_event_queue *q, ds_eq_soon_fn soon, void *ctx, unsigned lo
 /* ------------------------------------------------------------------ */
 
 /* DS_EQ_HEAP keeps each disk's heap position; the calendar's heap is not
- * indexed (an entry found in it is checked against the disk's time). */
+ * indexed (an entry found in it is checked against the disk's time). The
+ * heap orders by time alone; ties are settled by disk in ds_eq_first. */
+
 static inline void heap_place(ds_event_queue *q, size_t pos, heap_node node)
 {
     q->heap[pos] = node;
@@ -519,7 +521,7 @@ void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
         const double old = *time;
         *time = t;
         q->heap[q->where[i]].time = t;
-        if (t < old)
+        if (t < old) /* equal: the same place, the disk ties with itself */
             sift_up(q, q->where[i]);
         else
             sift_down(q, q->where[i]);
@@ -544,17 +546,61 @@ void ds_eq_set(ds_event_queue *q, uint32_t i, double t)
     file_at(q, i, t); /* the heap, the far list, or (in cache) its bucket at once */
 }
 
+/* Equal times come in the order of their disks, whatever the order they
+ * were filed in: the order of events is then a function of the times
+ * alone, not of the queue's history, so a queue built afresh from the
+ * same times (a restarted run) gives the same events in the same order.
+ * The heap orders by time only (a second key in its comparisons cost 5
+ * to 9% per collision); here, the entries tied with the top (current
+ * ones) are looked for and the lowest disk among them
+ * taken. They form a subtree at the top (a parent is never later than
+ * its children), walked depth first; nearly always the top's two
+ * children are later and that is all it costs. The calendar's entry of a
+ * disk taken from inside the heap goes stale when its disk is
+ * rescheduled, and is dropped when it reaches the top. */
+static uint32_t lowest_tied(const ds_event_queue *q)
+{
+    const heap_node *h = q->heap;
+    const size_t count = q->heap_count;
+    const double t = h[0].time;
+    if (!((count > 1 && h[1].time == t) || (count > 2 && h[2].time == t)))
+        return h[0].disk;
+    uint32_t best = h[0].disk;
+    size_t stack[64], depth = 0; /* pending right children: at most the heap's depth */
+    size_t k = 0;
+    for (;;) {
+        if (h[k].disk < best && (q->kind == DS_EQ_HEAP || is_current(q, h[k])))
+            best = h[k].disk;
+        const size_t left = 2 * k + 1, right = left + 1;
+        const int go_left = left < count && h[left].time == t;
+        if (right < count && h[right].time == t) {
+            if (go_left)
+                stack[depth++] = right;
+            else
+                k = right;
+        }
+        if (go_left)
+            k = left;
+        else if (!(right < count && h[right].time == t)) {
+            if (depth == 0)
+                break;
+            k = stack[--depth];
+        }
+    }
+    return best;
+}
+
 uint32_t ds_eq_first(ds_event_queue *q)
 {
     if (q->kind == DS_EQ_HEAP)
-        return q->heap[0].disk;
+        return lowest_tied(q);
     for (;;) {
         while (q->heap_count < q->lookahead && (q->windowed || q->far_count))
             advance(q);
         if (q->heap_count == 0)
             return NONE;
         if (is_current(q, q->heap[0]))
-            return q->heap[0].disk;
+            return lowest_tied(q);
         heap_pop(q);
     }
 }

@@ -46,8 +46,9 @@ void ds_eq_build(ds_event_queue *q, double now);
  * rounding; +infinity allowed), writing t into the caller's memory. */
 void ds_eq_set(ds_event_queue *q, uint32_t i, double t);
 
-/* The disk with the earliest time (ties in any order, but the same order
- * for the same calls). */
+/* The disk with the earliest time; of disks with the same time, the
+ * lowest numbered. The order is a function of the times alone, the same
+ * for the calendar and the heap, whatever the history of the queue. */
 uint32_t ds_eq_first(ds_event_queue *q);
 
 /* Disk i's scheduled time. */

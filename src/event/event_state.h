@@ -80,6 +80,17 @@ static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
     return ds_ed_interior_at(cells, d->column, d->row);
 }
 
+/* The integrator's state for sim's world, its records, cells and
+ * calendar allocated and empty (event_driven.c); ds_ed_start then builds
+ * the calendar from the records' times, at integrator time now. */
+ds_status ds_ed_alloc(ds_sim *sim);
+void ds_ed_start(ds_events *e, double now);
+
+/* A checkpoint of the integrator's state (event_checkpoint.c): the
+ * table's save and load. */
+void ds_ed_save(const ds_sim *sim, ds_writer *w);
+ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err);
+
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):
  * records it in the disk and returns its time. */
 double ds_ed_predict(ds_events *e, uint32_t i);

@@ -50,7 +50,10 @@ static lattice best_lattice(size_t n, double radius, double box_x, double box_y,
     const double height = periodic ? box_y : box_y - 2.0 * radius;
     /* Rows: as many as make sense for a near-square cell, ~2 sqrt(n) at
      * most; the search is O(sqrt n). */
-    const uint64_t most = (uint64_t)(2.0 * sqrt((double)n * height / width)) + 4;
+    const double rows_wanted = 2.0 * sqrt((double)n * height / width) + 4.0;
+    /* A band a rounding error wide makes that huge (or infinite): no more
+     * rows than disks, and no conversion out of range. */
+    const uint64_t most = rows_wanted < (double)n + 1.0 ? (uint64_t)rows_wanted : (uint64_t)n + 1;
     for (uint64_t rows = periodic ? 2 : 1; rows <= most && rows <= n + 1;
          rows += periodic ? 2 : 1) {
         const uint64_t columns = (n + rows - 1) / rows;

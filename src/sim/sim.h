@@ -12,13 +12,6 @@ const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator);
  * maybe DS_AUTO). No checks. */
 ds_world ds_world_of(const ds_params *params);
 
-/* Fills err (if not NULL) with a printf-style sentence; returns status. */
-ds_status ds_state_refuse(ds_state_error *err, ds_status status, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
-
 /* DS_OK, or why disk i cannot be d in world w (not finite, too fast,
  * outside the box): what ds_set and ds_set_all refuse as a value. */
 ds_status ds_check_disk(const ds_world *w, size_t i, ds_disk d, ds_state_error *err);

@@ -1,24 +1,14 @@
-/* A simulation's whole state at once: checking a state to start from and
- * setting every disk (ds_set_all). */
+/* A simulation's whole state at once: checking a state to start from,
+ * setting every disk (ds_set_all), and checkpoints (ds_save_state,
+ * ds_load_state and their in-memory forms). */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/boundary.h"
-#include "core/grid.h"
+#include "core/overlap.h"
 #include "sim/sim.h"
-
-ds_status ds_state_refuse(ds_state_error *err, ds_status status, const char *fmt, ...)
-{
-    if (err) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err->message, sizeof err->message, fmt, ap);
-        va_end(ap);
-    }
-    return status;
-}
 
 ds_status ds_check_disk(const ds_world *w, size_t i, ds_disk d, ds_state_error *err)
 {
@@ -48,14 +38,10 @@ ds_status ds_check_disk(const ds_world *w, size_t i, ds_disk d, ds_state_error *
     return DS_OK;
 }
 
-/* The first pair (in the order of the disks) closer than contact allows,
- * through a cell grid: O(n). */
+/* The first pair closer than contact allows, named. */
 static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, ds_state_error *err)
 {
     const size_t n = w->n;
-    const int periodic = w->boundary == DS_PERIODIC;
-    const double contact = 2.0 * w->radius;
-    const double limit = contact * (1.0 - DS_CONTACT_TOLERANCE);
     double *xy = malloc(2 * n * sizeof *xy);
     if (!xy)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to check %zu disks", n);
@@ -63,37 +49,23 @@ static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, ds_stat
         xy[i] = disks[i].x;
         xy[n + i] = disks[i].y;
     }
-    ds_grid g;
-    ds_grid_init(&g, w->box, w->box_y, contact, 4 * n + 16, periodic);
-    ds_grid_bins bins;
-    ds_status st = ds_grid_bin(&g, n, xy, xy + n, &bins);
-    if (st != DS_OK) {
-        free(xy);
-        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to check %zu disks", n);
-    }
-    for (size_t j = 0; j < n && st == DS_OK; ++j) {
-        size_t around[9];
-        const int count = ds_grid_neighbours(&g, bins.cell[j] % g.nx, bins.cell[j] / g.nx, around);
-        for (int c = 0; c < count && st == DS_OK; ++c)
-            for (size_t s = bins.start[around[c]]; s < bins.start[around[c] + 1]; ++s) {
-                const size_t k = bins.order[s];
-                double dx = xy[k] - xy[j], dy = xy[n + k] - xy[n + j];
-                if (periodic) {
-                    dx = ds_nearest(dx, w->box);
-                    dy = ds_nearest(dy, w->box_y);
-                }
-                if (k > j && dx * dx + dy * dy < limit * limit) {
-                    st = ds_state_refuse(err, DS_ERR_OVERLAP,
-                                         "disks %zu and %zu overlap: their centres are %.17g "
-                                         "apart, closer than 2R = %.17g",
-                                         j, k, sqrt(dx * dx + dy * dy), contact);
-                    break;
-                }
-            }
-    }
-    ds_grid_bins_free(&bins);
+    size_t j = 0, k = 0;
+    const ds_status st = ds_find_overlap(w, xy, xy + n, &j, &k);
     free(xy);
-    return st;
+    if (st == DS_ERR_NOMEM)
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to check %zu disks", n);
+    if (st != DS_OK) {
+        double dx = disks[k].x - disks[j].x, dy = disks[k].y - disks[j].y;
+        if (w->boundary == DS_PERIODIC) {
+            dx = ds_nearest(dx, w->box);
+            dy = ds_nearest(dy, w->box_y);
+        }
+        return ds_state_refuse(err, DS_ERR_OVERLAP,
+                               "disks %zu and %zu overlap: their centres are %.17g apart, closer "
+                               "than 2R = %.17g",
+                               j, k, sqrt(dx * dx + dy * dy), 2.0 * w->radius);
+    }
+    return DS_OK;
 }
 
 ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
@@ -136,4 +108,314 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
     ds_disks_free(&sim->disks);
     *sim = fresh;
     return DS_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Checkpoints                                                          */
+/* ------------------------------------------------------------------ */
+
+#define MAGIC "DSIMSTAT"
+#define FORMAT_VERSION 1u
+#define BYTE_ORDER_MARK 0x01020304u
+#define HEADER_BYTES 40 /* magic, version, byte order, library version, payload length */
+#define CHECKSUM_BYTES 8
+
+/* FNV-1a, 64 bits: a corrupted byte anywhere changes it. */
+static uint64_t checksum(const uint8_t *p, size_t len)
+{
+    uint64_t h = 14695981039346656037ull;
+    for (size_t k = 0; k < len; ++k) {
+        h ^= p[k];
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+static void put_payload(const ds_sim *sim, ds_writer *w)
+{
+    const ds_world *wo = &sim->world;
+    ds_put_u64(w, wo->n);
+    ds_put_f64(w, wo->radius);
+    ds_put_f64(w, wo->box);
+    ds_put_f64(w, wo->box_y);
+    ds_put_f64(w, wo->speed);
+    ds_put_f64(w, wo->dt);
+    ds_put_u32(w, (uint32_t)wo->integrator);
+    ds_put_u32(w, (uint32_t)wo->boundary);
+    ds_put_u32(w, (uint32_t)wo->broadphase);
+    ds_put_u32(w, (uint32_t)wo->placement);
+    ds_put_u64(w, wo->seed);
+    ds_put_u64(w, sim->steps);
+    ds_put_u64(w, sim->observables_since_step);
+    ds_put_u64(w, sim->tally.collisions);
+    ds_put_u64(w, sim->tally.pairs_tested);
+    ds_put_u64(w, sim->tally.wall_count);
+    ds_put_f64(w, sim->tally.wall_impulse);
+    ds_put_f64(w, sim->tally.virial);
+    ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
+    const ds_disks *d = &sim->disks;
+    for (size_t k = 0; k < d->n; ++k) {
+        ds_put_f64(w, d->x[k]);
+        ds_put_f64(w, d->y[k]);
+        ds_put_f64(w, d->vx[k]);
+        ds_put_f64(w, d->vy[k]);
+        ds_put_u32(w, d->id[k]);
+    }
+    sim->integrator->save(sim, w);
+}
+
+/* The whole file into w: header, payload, checksum. */
+static void put_state(const ds_sim *sim, ds_writer *w)
+{
+    ds_writer count = {NULL, 0};
+    put_payload(sim, &count);
+    const size_t start = w->len;
+    if (w->buf)
+        memcpy(w->buf + w->len, MAGIC, 8);
+    w->len += 8;
+    ds_put_u32(w, FORMAT_VERSION);
+    ds_put_u32(w, BYTE_ORDER_MARK);
+    if (w->buf) {
+        memset(w->buf + w->len, 0, 16);
+        memcpy(w->buf + w->len, DS_VERSION_STRING, strlen(DS_VERSION_STRING));
+    }
+    w->len += 16;
+    ds_put_u64(w, count.len);
+    put_payload(sim, w);
+    ds_put_u64(w, w->buf ? checksum(w->buf + start, w->len - start) : 0);
+}
+
+size_t ds_state_size(const ds_sim *sim)
+{
+    if (!sim)
+        return 0;
+    ds_writer count = {NULL, 0};
+    put_state(sim, &count);
+    return count.len;
+}
+
+ds_status ds_format_state(const ds_sim *sim, void *buf, size_t cap, size_t *len)
+{
+    if (len)
+        *len = 0;
+    if (!sim || (!buf && cap))
+        return DS_ERR_ARG;
+    const size_t need = ds_state_size(sim);
+    if (len)
+        *len = need;
+    if (need > cap)
+        return DS_ERR_ARG;
+    ds_writer w = {buf, 0};
+    put_state(sim, &w);
+    return DS_OK;
+}
+
+ds_status ds_save_state(const ds_sim *sim, FILE *out)
+{
+    if (!sim || !out)
+        return DS_ERR_ARG;
+    const size_t need = ds_state_size(sim);
+    void *buf = malloc(need);
+    if (!buf)
+        return DS_ERR_NOMEM;
+    size_t len = 0;
+    ds_status st = ds_format_state(sim, buf, need, &len);
+    /* fwrite into stdio's buffer succeeds even on a full disk: the flush
+     * decides. */
+    if (st == DS_OK && (fwrite(buf, 1, len, out) != len || fflush(out) != 0 || ferror(out)))
+        st = DS_ERR_IO;
+    free(buf);
+    return st;
+}
+
+/* The frame of the file: magic, version, byte order, length, checksum.
+ * On DS_OK, *payload spans the payload. */
+static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, ds_state_error *err)
+{
+    if (len < 8 || memcmp(p, MAGIC, 8) != 0)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "not a disksim state file (no %s at its start)",
+                               MAGIC);
+    if (len < HEADER_BYTES)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "truncated: %zu bytes, not even a header", len);
+    ds_reader r = {p + 8, p + len, 0};
+    const uint32_t version = ds_get_u32(&r), mark = ds_get_u32(&r);
+    char made_by[17] = {0};
+    memcpy(made_by, ds_take(&r, 16), 16);
+    for (int k = 0; k < 16; ++k)
+        made_by[k] = made_by[k] >= ' ' && made_by[k] < 127 ? made_by[k] : made_by[k] ? '?' : 0;
+    const uint64_t bytes = ds_get_u64(&r);
+    if (mark != BYTE_ORDER_MARK)
+        return ds_state_refuse(err, DS_ERR_FORMAT,
+                               "the byte order mark is 0x%08x, not 0x%08x: not a state this "
+                               "library wrote",
+                               (unsigned)mark, BYTE_ORDER_MARK);
+    if (version != FORMAT_VERSION)
+        return ds_state_refuse(err, DS_ERR_FORMAT,
+                               "format version %u (written by disksim %s); this library (%s) "
+                               "reads version %u",
+                               (unsigned)version, made_by, DS_VERSION_STRING, FORMAT_VERSION);
+    if (bytes > len - HEADER_BYTES || len - HEADER_BYTES - bytes < CHECKSUM_BYTES)
+        return ds_state_refuse(err, DS_ERR_FORMAT,
+                               "truncated: %zu bytes, where the header announces %llu", len,
+                               (unsigned long long)(bytes + HEADER_BYTES + CHECKSUM_BYTES));
+    if (len - HEADER_BYTES - bytes > CHECKSUM_BYTES)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "%llu bytes after the end of the state",
+                               (unsigned long long)(len - HEADER_BYTES - bytes - CHECKSUM_BYTES));
+    ds_reader tail = {p + HEADER_BYTES + bytes, p + len, 0};
+    if (ds_get_u64(&tail) != checksum(p, HEADER_BYTES + (size_t)bytes))
+        return ds_state_refuse(err, DS_ERR_FORMAT,
+                               "the checksum does not match: the file is corrupted");
+    payload->at = p + HEADER_BYTES;
+    payload->end = p + HEADER_BYTES + bytes;
+    payload->failed = 0;
+    return DS_OK;
+}
+
+/* The world, checked as ds_create checks parameters. */
+static ds_status read_world(ds_reader *r, ds_world *w, ds_state_error *err)
+{
+    ds_params p;
+    memset(&p, 0, sizeof p);
+    p.n = (size_t)ds_get_u64(r);
+    p.radius = ds_get_f64(r);
+    p.box = ds_get_f64(r);
+    p.box_y = ds_get_f64(r);
+    p.speed = ds_get_f64(r);
+    p.dt = ds_get_f64(r);
+    p.integrator = (ds_integrator)ds_get_u32(r);
+    p.boundary = (ds_boundary)ds_get_u32(r);
+    p.broadphase = (ds_broadphase)ds_get_u32(r);
+    p.placement = (ds_placement)ds_get_u32(r);
+    p.seed = ds_get_u64(r);
+    if (r->failed)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside its parameters");
+    /* Work and memory in proportion to the file: every disk's slot is in
+     * it (36 bytes), so a forged count of disks is refused before the
+     * parameters are checked (a lattice's check searches O(sqrt n) shapes)
+     * or anything is allocated. */
+    if (ds_left(r) / 36 < p.n)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "%zu bytes cannot hold the %zu disks announced",
+                               ds_left(r), p.n);
+    ds_params_error why;
+    const ds_status st = ds_diagnose_params(&p, NULL, &why);
+    if (st != DS_OK || p.broadphase == DS_AUTO)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "its parameters are refused: %s",
+                               st != DS_OK ? why.message : "no broad phase");
+    *w = ds_world_of(&p);
+    return DS_OK;
+}
+
+/* The disks in their slots: finite, inside the box up to the rounding of
+ * a flight (a centre shown at a time a hair past its wall turn), each
+ * generation index once. */
+static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
+{
+    const ds_world *w = &sim->world;
+    ds_disks *d = &sim->disks;
+    const double slack = 1e-9 * fmax(w->box, w->box_y);
+    for (size_t k = 0; k < d->n; ++k) {
+        d->x[k] = ds_get_f64(r);
+        d->y[k] = ds_get_f64(r);
+        d->vx[k] = ds_get_f64(r);
+        d->vy[k] = ds_get_f64(r);
+        d->id[k] = ds_get_u32(r);
+        if (r->failed)
+            return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside slot %zu", k);
+        const double lo = w->boundary == DS_PERIODIC ? 0.0 : w->radius - slack;
+        const double hi_x = w->boundary == DS_PERIODIC ? w->box : w->box - w->radius + slack;
+        const double hi_y = w->boundary == DS_PERIODIC ? w->box_y : w->box_y - w->radius + slack;
+        if (!(d->x[k] >= lo && d->x[k] <= hi_x && d->y[k] >= lo && d->y[k] <= hi_y) ||
+            !isfinite(d->vx[k]) || !isfinite(d->vy[k]) || d->id[k] >= d->n ||
+            d->slot[d->id[k]] != UINT32_MAX)
+            return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
+        d->slot[d->id[k]] = (uint32_t)k; /* seen */
+    }
+    return DS_OK;
+}
+
+ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err)
+{
+    if (err)
+        err->message[0] = '\0';
+    if (!out)
+        return ds_state_refuse(err, DS_ERR_ARG, "nowhere to put the simulation (NULL)");
+    *out = NULL;
+    if (!data && len)
+        return ds_state_refuse(err, DS_ERR_ARG, "no data (NULL)");
+    ds_reader r;
+    ds_status st = check_frame(data, len, &r, err);
+    ds_world w;
+    if (st == DS_OK)
+        st = read_world(&r, &w, err);
+    if (st != DS_OK)
+        return st;
+    ds_sim *sim = calloc(1, sizeof *sim);
+    if (!sim || ds_disks_alloc(&sim->disks, w.n) != DS_OK) {
+        ds_destroy(sim);
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", w.n);
+    }
+    sim->world = w;
+    sim->integrator = ds_integrator_ops_of(w.integrator);
+    sim->steps = ds_get_u64(&r);
+    sim->observables_since_step = ds_get_u64(&r);
+    sim->tally.collisions = ds_get_u64(&r);
+    sim->tally.pairs_tested = ds_get_u64(&r);
+    sim->tally.wall_count = ds_get_u64(&r);
+    sim->tally.wall_impulse = ds_get_f64(&r);
+    sim->tally.virial = ds_get_f64(&r);
+    ds_timer_reset(&sim->collision_timer);
+    sim->collision_timer.total = ds_get_f64(&r);
+    if (r.failed || sim->observables_since_step > sim->steps ||
+        !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.virial) ||
+        !(sim->collision_timer.total >= 0.0) || !((double)sim->steps * w.dt < 1e300))
+        st = ds_state_refuse(err, DS_ERR_FORMAT, "its clock or tally is not a run's");
+    for (size_t k = 0; st == DS_OK && k < w.n; ++k)
+        sim->disks.slot[k] = UINT32_MAX;
+    if (st == DS_OK)
+        st = read_disks(&r, sim, err);
+    if (st == DS_OK)
+        st = sim->integrator->load(sim, &r, err);
+    if (st == DS_OK && ds_left(&r) != 0)
+        st = ds_state_refuse(err, DS_ERR_FORMAT, "%zu bytes of the state were not read",
+                             ds_left(&r));
+    if (st != DS_OK) {
+        ds_destroy(sim);
+        return st;
+    }
+    *out = sim;
+    return DS_OK;
+}
+
+ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err)
+{
+    if (err)
+        err->message[0] = '\0';
+    if (out)
+        *out = NULL;
+    if (!in || !out)
+        return ds_state_refuse(err, DS_ERR_ARG, "no file or nowhere to put the simulation (NULL)");
+    size_t cap = 1 << 16, len = 0;
+    uint8_t *buf = malloc(cap);
+    while (buf) {
+        len += fread(buf + len, 1, cap - len, in);
+        if (len < cap)
+            break;
+        uint8_t *grown = cap <= SIZE_MAX / 2 ? realloc(buf, cap * 2) : NULL;
+        if (!grown) {
+            free(buf);
+            buf = NULL;
+        } else {
+            buf = grown;
+            cap *= 2;
+        }
+    }
+    if (!buf)
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to read the state");
+    if (ferror(in)) {
+        free(buf);
+        return ds_state_refuse(err, DS_ERR_IO, "the state could not be read");
+    }
+    const ds_status st = ds_parse_state(buf, len, out, err);
+    free(buf);
+    return st;
 }

@@ -11,7 +11,7 @@ static int needs_seam(ds_broadphase kind, int periodic)
     return periodic && kind != DS_BRUTE_FORCE;
 }
 
-ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disks *d)
+static void set_up(ds_bp *bp, ds_broadphase kind, const ds_world *w)
 {
     bp->kind = kind;
     bp->scan = ds_bp_widest_scan();
@@ -19,6 +19,11 @@ ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disk
     bp->box = w->box;
     bp->box_y = w->box_y;
     bp->periodic = w->boundary == DS_PERIODIC;
+}
+
+ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disks *d)
+{
+    set_up(bp, kind, w);
     ds_status st = DS_OK;
     switch (kind) {
     case DS_SAP_STRIPS:
@@ -32,6 +37,25 @@ ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disk
     }
     if (st == DS_OK && needs_seam(kind, bp->periodic))
         st = ds_seam_create(bp, d->n);
+    return st;
+}
+
+void ds_bp_save(const ds_bp *bp, ds_writer *w)
+{
+    ds_put_u32(w, (uint32_t)bp->kind);
+    if (bp->strips)
+        ds_strips_save(bp, w);
+}
+
+ds_status ds_bp_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_state_error *err)
+{
+    set_up(bp, w->broadphase, w);
+    if (ds_get_u32(r) != (uint32_t)bp->kind || r->failed)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the broad phase's part is not %s's",
+                               ds_broadphase_name(bp->kind));
+    ds_status st = bp->kind == DS_SAP_STRIPS ? ds_strips_load(bp, w, d, r, err) : DS_OK;
+    if (st == DS_OK && needs_seam(bp->kind, bp->periodic) && ds_seam_create(bp, d->n) != DS_OK)
+        st = ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the seam pass of %zu disks", d->n);
     return st;
 }
 

@@ -49,6 +49,11 @@ typedef void (*ds_pair_fn)(ds_disks *d, size_t a, size_t b, void *ctx);
  * may reorder; slot[] is then stale until ds_disks_rebuild_slots). */
 ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disks *d);
 void ds_bp_destroy(ds_bp *bp);
+/* A checkpoint's part of the broad phase (the strips' slots), and the
+ * broad phase of a loaded state: the slots are as they were saved, so
+ * nothing is sorted or laid out again. */
+void ds_bp_save(const ds_bp *bp, ds_writer *w);
+ds_status ds_bp_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_state_error *err);
 /* Bytes broad phase w->broadphase allocates for world w. */
 size_t ds_bp_bytes(const ds_world *w);
 
@@ -73,6 +78,9 @@ uint64_t ds_brute_force_find_pairs(const ds_bp *bp, ds_disks *d, ds_pair_fn on_p
  * per-strip offset arrays (never more strips than disks). */
 #define DS_STRIPS_BYTES_PER_DISK (DS_DISKS_MOVING_BYTES + 6 * sizeof(uint32_t))
 ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d);
+void ds_strips_save(const ds_bp *bp, ds_writer *w);
+ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r,
+                         ds_state_error *err);
 void ds_strips_destroy(ds_bp *bp);
 uint64_t ds_strips_find_pairs(ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);
 

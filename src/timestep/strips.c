@@ -259,9 +259,9 @@ static void initial_layout(ds_disks *d, const ds_world *world, struct ds_strips 
         ds_bp_insertion_sort(d, st->start[t], st->start[t + 1], scan);
 }
 
-ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d)
+/* The strips' structure for world w, no disk in it yet. */
+static ds_status strips_alloc(ds_bp *bp, const ds_world *w, size_t n)
 {
-    const size_t n = d->n;
     struct ds_strips *st = calloc(1, sizeof *st);
     if (!st)
         return DS_ERR_NOMEM;
@@ -278,9 +278,49 @@ ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d)
         ds_strips_destroy(bp);
         return DS_ERR_NOMEM;
     }
-    initial_layout(d, w, st, bp->scan);
+    return DS_OK;
+}
+
+ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d)
+{
+    const size_t n = d->n;
+    const ds_status st = strips_alloc(bp, w, n);
+    if (st != DS_OK)
+        return st;
+    initial_layout(d, w, bp->strips, bp->scan);
     /* initial_layout used one id array as counters: restore its sentinel. */
-    d->id[n] = st->spare.id[n] = UINT32_MAX;
+    d->id[n] = bp->strips->spare.id[n] = UINT32_MAX;
+    return DS_OK;
+}
+
+/* Which slots each strip holds is history (a disk changes strip only past
+ * a margin): a checkpoint keeps it. */
+void ds_strips_save(const ds_bp *bp, ds_writer *w)
+{
+    const struct ds_strips *st = bp->strips;
+    ds_put_u64(w, st->count);
+    for (size_t t = 0; t <= st->count; ++t)
+        ds_put_u32(w, st->start[t]);
+}
+
+ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r,
+                         ds_state_error *err)
+{
+    ds_status status = strips_alloc(bp, w, d->n);
+    if (status != DS_OK)
+        return ds_state_refuse(err, status, "no memory for the strips of %zu disks", d->n);
+    struct ds_strips *st = bp->strips;
+    const uint64_t count = ds_get_u64(r);
+    if (r->failed || count != st->count)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the strips do not match the box: %llu, not %zu",
+                               (unsigned long long)count, st->count);
+    for (size_t t = 0; t <= st->count; ++t) {
+        st->start[t] = ds_get_u32(r);
+        const int ordered = t == 0 ? st->start[t] == 0 : st->start[t] >= st->start[t - 1];
+        if (r->failed || !ordered || st->start[t] > d->n ||
+            (t == st->count && st->start[t] != d->n))
+            return ds_state_refuse(err, DS_ERR_FORMAT, "strip %zu's slots are out of order", t);
+    }
     return DS_OK;
 }
 

@@ -119,6 +119,17 @@ static void destroy(ds_sim *sim)
     sim->state = NULL;
 }
 
+static void save(const ds_sim *sim, ds_writer *w) { ds_bp_save(sim->state, w); }
+
+static ds_status load(ds_sim *sim, ds_reader *r, ds_state_error *err)
+{
+    ds_bp *bp = calloc(1, sizeof *bp);
+    if (!bp)
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the broad phase");
+    sim->state = bp;
+    return ds_bp_load(bp, &sim->world, &sim->disks, r, err);
+}
+
 static ds_status set(ds_sim *sim, size_t k, ds_disk d)
 {
     /* The time step does not refuse overlaps: its next step resolves them.
@@ -142,4 +153,6 @@ const ds_integrator_ops ds_time_step_ops = {
     .destroy = destroy,
     .run = run,
     .set = set,
+    .save = save,
+    .load = load,
 };

@@ -53,7 +53,7 @@ static const char usage[] =
     "               (needs ffmpeg on PATH; Debian package ffmpeg)\n"
     "  --fps N      movie frames per second, 1..240 (default 25, as the GIF)\n"
     "  --quiet      print nothing but errors\n"
-    "  --help, --version\n";
+    "  -h, --help, --version\n";
 
 typedef struct job {
     char **inputs, **outputs;

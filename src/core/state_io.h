@@ -1,0 +1,91 @@
+/* The bytes of a saved state (sim/state.c writes the frame of the file,
+ * each integrator its own part): little-endian integers and IEEE doubles
+ * by their bits, whatever the machine, so a file moves between machines
+ * and a value reads back to the bit. A writer counts when it has no
+ * buffer (the size of a state, before writing it); a reader never reads
+ * past its end, and once out of bytes keeps failing, so a caller checks
+ * once at the end. Not installed. */
+#ifndef DS_STATE_IO_H
+#define DS_STATE_IO_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+typedef struct ds_writer {
+    uint8_t *buf; /* NULL: only count */
+    size_t len;   /* bytes written (or counted) so far */
+} ds_writer;
+
+static inline void ds_put_u64(ds_writer *w, uint64_t v)
+{
+    if (w->buf)
+        for (int k = 0; k < 8; ++k)
+            w->buf[w->len + (size_t)k] = (uint8_t)(v >> (8 * k));
+    w->len += 8;
+}
+
+static inline void ds_put_u32(ds_writer *w, uint32_t v)
+{
+    if (w->buf)
+        for (int k = 0; k < 4; ++k)
+            w->buf[w->len + (size_t)k] = (uint8_t)(v >> (8 * k));
+    w->len += 4;
+}
+
+static inline void ds_put_f64(ds_writer *w, double v)
+{
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    ds_put_u64(w, bits);
+}
+
+typedef struct ds_reader {
+    const uint8_t *at, *end;
+    int failed; /* ran out of bytes */
+} ds_reader;
+
+static inline const uint8_t *ds_take(ds_reader *r, size_t bytes)
+{
+    if (r->failed || (size_t)(r->end - r->at) < bytes) {
+        r->failed = 1;
+        return NULL;
+    }
+    const uint8_t *p = r->at;
+    r->at += bytes;
+    return p;
+}
+
+static inline uint64_t ds_get_u64(ds_reader *r)
+{
+    const uint8_t *p = ds_take(r, 8);
+    uint64_t v = 0;
+    for (int k = 0; p && k < 8; ++k)
+        v |= (uint64_t)p[k] << (8 * k);
+    return v;
+}
+
+static inline uint32_t ds_get_u32(ds_reader *r)
+{
+    const uint8_t *p = ds_take(r, 4);
+    uint32_t v = 0;
+    for (int k = 0; p && k < 4; ++k)
+        v |= (uint32_t)p[k] << (8 * k);
+    return v;
+}
+
+static inline double ds_get_f64(ds_reader *r)
+{
+    const uint64_t bits = ds_get_u64(r);
+    double v;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+/* Bytes left to read. */
+static inline size_t ds_left(const ds_reader *r)
+{
+    return r->failed ? 0 : (size_t)(r->end - r->at);
+}
+
+#endif

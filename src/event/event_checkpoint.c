@@ -1,0 +1,211 @@
+/* A checkpoint of the event-driven integrator: what its next event
+ * depends on, to the bit. The records (positions at their own times,
+ * velocities, scheduled times and partners, change counts), the cells'
+ * slots and overflow lists in their order (the order candidates are
+ * tested in, which settles a tie between two equal pair times), and the
+ * clock's epoch. The calendar is built again from the records' times: it
+ * gives its events in the order of their times, ties by disk number,
+ * whatever its history (event_queue.h), so that is the order the run
+ * would have taken. What fetching ahead holds only brings memory in, and
+ * starts empty. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/boundary.h"
+#include "core/overlap.h"
+#include "event/event_state.h"
+
+void ds_ed_save(const ds_sim *sim, ds_writer *w)
+{
+    const ds_events *e = sim->state;
+    const size_t n = sim->world.n, cells = (size_t)e->cells.nx * e->cells.ny;
+    ds_put_f64(w, e->epoch);
+    ds_put_f64(w, e->rebase_time);
+    ds_put_u64(w, e->tested);
+    ds_put_u32(w, e->cells.nx);
+    ds_put_u32(w, e->cells.ny);
+    for (size_t k = 0; k < n; ++k) {
+        const ed_disk *d = &e->disk[k];
+        ds_put_f64(w, d->x);
+        ds_put_f64(w, d->y);
+        ds_put_f64(w, d->vx);
+        ds_put_f64(w, d->vy);
+        ds_put_f64(w, d->t);
+        ds_put_f64(w, d->next);
+        ds_put_u32(w, (uint32_t)d->column | (uint32_t)d->row << 16);
+        ds_put_u32(w, d->changes);
+        ds_put_u32(w, d->partner);
+        ds_put_u32(w, d->partner_changes);
+    }
+    for (size_t s = 0; s < cells * DS_CELL_SLOTS; ++s)
+        ds_put_u32(w, e->cells.slot[s]);
+    for (size_t c = 0; c < cells; ++c)
+        ds_put_u32(w, e->cells.more[c]);
+    for (size_t k = 0; k < n; ++k)
+        ds_put_u32(w, e->cells.next[k]);
+}
+
+static int is_event_kind(uint32_t partner)
+{
+    return partner == EV_WALL_X || partner == EV_WALL_Y || partner == EV_CELL_X ||
+           partner == EV_CELL_Y || partner == EV_NONE;
+}
+
+static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, ds_state_error *err)
+{
+    for (size_t k = 0; k < n; ++k) {
+        ed_disk *d = &e->disk[k];
+        d->x = ds_get_f64(r);
+        d->y = ds_get_f64(r);
+        d->vx = ds_get_f64(r);
+        d->vy = ds_get_f64(r);
+        d->t = ds_get_f64(r);
+        d->next = ds_get_f64(r);
+        const uint32_t cell = ds_get_u32(r);
+        d->column = (uint16_t)(cell & 0xffffu);
+        d->row = (uint16_t)(cell >> 16);
+        d->changes = ds_get_u32(r);
+        d->partner = ds_get_u32(r);
+        d->partner_changes = ds_get_u32(r);
+        if (r->failed)
+            return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside disk %zu's record", k);
+        /* Every scheduled time is at or after now (events before it were
+         * handled), or never. */
+        if (!isfinite(d->x) || !isfinite(d->y) || !isfinite(d->vx) || !isfinite(d->vy) ||
+            !isfinite(d->t) || !(d->next >= now))
+            return ds_state_refuse(err, DS_ERR_FORMAT, "disk %zu's record has a bad number", k);
+        /* "Nothing ahead, ever" only at +infinity: handle_event takes any
+         * other kind it meets for a disk or a wall or a cell edge. */
+        if (d->column >= e->cells.nx || d->row >= e->cells.ny ||
+            !(d->partner < n || is_event_kind(d->partner)) ||
+            (d->partner == EV_NONE) != (d->next == INFINITY))
+            return ds_state_refuse(err, DS_ERR_FORMAT,
+                                   "disk %zu's record names a cell or partner out of range", k);
+    }
+    return DS_OK;
+}
+
+/* Reads the cells and checks they hold every disk once, in the cell its
+ * record names, packed from the first slot, with an overflow list only
+ * behind four taken slots: what predicting and fetching rely on. */
+static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_state_error *err)
+{
+    ds_cells *c = &e->cells;
+    const size_t cells = (size_t)c->nx * c->ny;
+    const uint32_t empty = c->empty;
+    for (size_t s = 0; s < cells * DS_CELL_SLOTS; ++s)
+        c->slot[s] = ds_get_u32(r);
+    for (size_t k = 0; k < cells; ++k)
+        c->more[k] = ds_get_u32(r);
+    for (size_t k = 0; k < n; ++k)
+        c->next[k] = ds_get_u32(r);
+    if (r->failed)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside the cells");
+    unsigned char *seen = calloc(n ? n : 1, 1);
+    if (!seen)
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to check the cells");
+    ds_status st = DS_OK;
+    size_t found = 0;
+    for (size_t cell = 0; cell < cells && st == DS_OK; ++cell) {
+        const uint32_t *slot = ds_cells_slots(c, (uint32_t)cell);
+        for (int j = 0; j < DS_CELL_SLOTS && st == DS_OK; ++j) {
+            const uint32_t k = slot[j];
+            if (k == empty) {
+                if (j + 1 < DS_CELL_SLOTS && slot[j + 1] != empty)
+                    st = DS_ERR_FORMAT; /* not packed */
+                continue;
+            }
+            if (k > empty || seen[k] ||
+                ds_cells_index(c, e->disk[k].column, e->disk[k].row) != cell) {
+                st = DS_ERR_FORMAT;
+            } else {
+                seen[k] = 1;
+                ++found;
+            }
+        }
+        if (st == DS_OK && c->more[cell] != empty && slot[DS_CELL_SLOTS - 1] == empty)
+            st = DS_ERR_FORMAT; /* a list behind a free slot */
+        for (uint32_t k = c->more[cell]; st == DS_OK && k != empty; k = c->next[k]) {
+            /* seen[] stops a list that loops: no disk is in two places. */
+            if (k > empty || seen[k] ||
+                ds_cells_index(c, e->disk[k].column, e->disk[k].row) != cell) {
+                st = DS_ERR_FORMAT;
+                break; /* before next[k] is read */
+            }
+            seen[k] = 1;
+            ++found;
+        }
+    }
+    free(seen);
+    if (st == DS_OK && found != n)
+        st = DS_ERR_FORMAT;
+    return st == DS_OK ? DS_OK
+                       : ds_state_refuse(err, st,
+                                         "the cells do not hold each disk once, where its "
+                                         "record says");
+}
+
+/* The records against the disk arrays, which were shown from them when
+ * the state was saved: each record, flown from its time to now, is its
+ * slot's disk to the bit; it lies in the cell it names (up to rounding);
+ * it moves no faster than ds_set allows; and no two disks overlap. A
+ * state that passes is one the integrator could have reached, so a run
+ * from it is a run (a forged record far from its cell would have it
+ * cross cells at one instant for ever). */
+static ds_status check_records(const ds_sim *sim, const ds_events *e, double now,
+                               ds_state_error *err)
+{
+    const ds_disks *a = &sim->disks;
+    const ds_cells *c = &e->cells;
+    const double slack = 1e-9 * fmax(e->box_x, e->box_y);
+    for (size_t k = 0; k < a->n; ++k) {
+        const ed_disk *d = &e->disk[k];
+        const double lag = now - d->t;
+        double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
+        if (e->periodic) {
+            x = ds_wrap(x, e->box_x);
+            y = ds_wrap(y, e->box_y);
+        }
+        const int in_cell = d->x >= (double)d->column * c->wx - slack &&
+                            d->x <= (double)(d->column + 1u) * c->wx + slack &&
+                            d->y >= (double)d->row * c->wy - slack &&
+                            d->y <= (double)(d->row + 1u) * c->wy + slack;
+        if (!(d->t >= 0.0 && d->t <= now) || fabs(d->vx) > 1e12 || fabs(d->vy) > 1e12 || !in_cell ||
+            x != a->x[k] || y != a->y[k] || d->vx != a->vx[k] || d->vy != a->vy[k])
+            return ds_state_refuse(err, DS_ERR_FORMAT,
+                                   "disk %zu's record is not the disk of its slot", k);
+    }
+    size_t i = 0, j = 0;
+    const ds_status st = ds_find_overlap(&sim->world, a->x, a->y, &i, &j);
+    if (st == DS_ERR_OVERLAP)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the disks of slots %zu and %zu overlap", i, j);
+    return st == DS_OK ? DS_OK : ds_state_refuse(err, st, "no memory to check the disks");
+}
+
+ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
+{
+    const size_t n = sim->world.n;
+    if (ds_ed_alloc(sim) != DS_OK)
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the events of %zu disks", n);
+    ds_events *e = sim->state;
+    e->epoch = ds_get_f64(r);
+    const double rebase_time = ds_get_f64(r);
+    e->tested = ds_get_u64(r);
+    const uint32_t nx = ds_get_u32(r), ny = ds_get_u32(r);
+    if (r->failed || nx != e->cells.nx || ny != e->cells.ny)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the event cells do not match the box");
+    /* The clock: the epoch is a step boundary, the present one at most
+     * one rebase time ago. */
+    const double now = (double)sim->steps * sim->world.dt - e->epoch;
+    if (!isfinite(e->epoch) || rebase_time != e->rebase_time || !(now >= 0.0) ||
+        !(now <= 2.0 * rebase_time + sim->world.dt))
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the event clock is not this run's");
+    ds_status st = read_records(e, n, now, r, err);
+    if (st == DS_OK)
+        st = read_cells(e, n, r, err);
+    if (st == DS_OK)
+        st = check_records(sim, e, now, err);
+    if (st == DS_OK)
+        ds_ed_start(e, now);
+    return st;
+}

@@ -1,0 +1,46 @@
+/* Writes small checkpoints of every integrator, boundary and broad phase
+ * into the directory given: the seeds of the checkpoint fuzzer
+ * (tests/fuzz_state.c, make fuzz). */
+#include <stdio.h>
+
+#include "disk_sim.h"
+
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        fprintf(stderr, "usage: %s DIR\n", argv[0]);
+        return 2;
+    }
+    static const struct {
+        ds_integrator integrator;
+        ds_broadphase broadphase;
+    } kinds[] = {{DS_TIME_STEP, DS_SAP},
+                 {DS_TIME_STEP, DS_SAP_STRIPS},
+                 {DS_TIME_STEP, DS_BRUTE_FORCE},
+                 {DS_EVENT_DRIVEN, DS_CELLS},
+                 {DS_EVENT_DRIVEN, DS_BRUTE_FORCE}};
+    int written = 0;
+    for (int k = 0; k < 5; ++k)
+        for (int b = DS_WALLS; b <= DS_PERIODIC; ++b) {
+            ds_params p = ds_default_params(6, 60.0);
+            p.box_y = 600.0;
+            p.integrator = kinds[k].integrator;
+            p.broadphase = kinds[k].broadphase;
+            p.boundary = (ds_boundary)b;
+            ds_sim *sim = NULL;
+            if (ds_create(&p, &sim) != DS_OK)
+                return 1;
+            ds_run(sim, 5);
+            char path[4096];
+            snprintf(path, sizeof path, "%s/seed-%s-%s-%s.state", argv[1],
+                     ds_integrator_name(p.integrator), ds_broadphase_name(p.broadphase),
+                     ds_boundary_name(p.boundary));
+            FILE *f = fopen(path, "wb");
+            if (!f || ds_save_state(sim, f) != DS_OK || fclose(f) != 0)
+                return 1;
+            ds_destroy(sim);
+            ++written;
+        }
+    printf("state_seeds: %d checkpoints in %s\n", written, argv[1]);
+    return 0;
+}

@@ -1,0 +1,277 @@
+/* Checkpoints: a simulation saved and loaded goes on bit for bit as the
+ * one that never stopped, for both integrators, both boundaries and every
+ * broad phase; a truncated, corrupted, foreign or future-version
+ * checkpoint is refused with a reason and never crashes the loader. */
+#include "test_util.h"
+
+typedef struct combination {
+    ds_integrator integrator;
+    ds_broadphase broadphase;
+    ds_boundary boundary;
+} combination;
+
+static const combination ALL[] = {
+    {DS_TIME_STEP, DS_SAP, DS_WALLS},
+    {DS_TIME_STEP, DS_SAP, DS_PERIODIC},
+    {DS_TIME_STEP, DS_SAP_STRIPS, DS_WALLS},
+    {DS_TIME_STEP, DS_SAP_STRIPS, DS_PERIODIC},
+    {DS_TIME_STEP, DS_BRUTE_FORCE, DS_WALLS},
+    {DS_TIME_STEP, DS_BRUTE_FORCE, DS_PERIODIC},
+    {DS_EVENT_DRIVEN, DS_CELLS, DS_WALLS},
+    {DS_EVENT_DRIVEN, DS_CELLS, DS_PERIODIC},
+    {DS_EVENT_DRIVEN, DS_BRUTE_FORCE, DS_WALLS},
+    {DS_EVENT_DRIVEN, DS_BRUTE_FORCE, DS_PERIODIC},
+};
+
+/* 600 disks at area fraction 0.3 in a rectangle: thousands of collisions
+ * in the steps below, strips crossed, seams crossed, walls hit. */
+static ds_sim *make(const combination *c)
+{
+    ds_params p = ds_default_params(600, 9.0);
+    p.box_y = 850.0;
+    p.integrator = c->integrator;
+    p.broadphase = c->broadphase;
+    p.boundary = c->boundary;
+    p.seed = 31;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    return sim;
+}
+
+static uint8_t *saved(const ds_sim *sim, size_t *len)
+{
+    const size_t need = ds_state_size(sim);
+    uint8_t *buf = malloc(need);
+    assert_non_null(buf);
+    assert_int_equal(ds_format_state(sim, buf, need, len), DS_OK);
+    assert_int_equal(*len, need);
+    return buf;
+}
+
+/* Everything a user reads of a simulation, to the bit. */
+static void assert_same_run(const ds_sim *a, const ds_sim *b)
+{
+    const size_t n = ds_count(a);
+    assert_int_equal(ds_count(b), n);
+    ds_disk *da = malloc(n * sizeof *da), *db = malloc(n * sizeof *db);
+    assert_non_null(da);
+    assert_non_null(db);
+    assert_int_equal(ds_get_all(a, da), DS_OK);
+    assert_int_equal(ds_get_all(b, db), DS_OK);
+    assert_memory_equal(da, db, n * sizeof *da);
+    free(da);
+    free(db);
+    assert_int_equal(ds_steps(a), ds_steps(b));
+    assert_true(ds_time(a) == ds_time(b));
+    assert_int_equal(ds_collision_count(a), ds_collision_count(b));
+    assert_int_equal(ds_wall_count(a), ds_wall_count(b));
+    assert_int_equal(ds_pairs_tested(a), ds_pairs_tested(b));
+    const double pa = ds_pressure(a), pb = ds_pressure(b);
+    const double va = ds_virial_pressure(a), vb = ds_virial_pressure(b);
+    assert_memory_equal(&pa, &pb, sizeof pa);
+    assert_memory_equal(&va, &vb, sizeof va);
+}
+
+static void test_a_loaded_run_goes_on_bit_for_bit(void **state)
+{
+    (void)state;
+    for (size_t c = 0; c < sizeof ALL / sizeof ALL[0]; ++c) {
+        ds_sim *a = make(&ALL[c]);
+        ds_run(a, 150);
+        ds_reset_observables(a);
+        ds_run(a, 50); /* observables accumulating when saved */
+        size_t len = 0;
+        uint8_t *buf = saved(a, &len);
+        ds_sim *b = NULL;
+        ds_state_error why;
+        assert_int_equal(ds_parse_state(buf, len, &b, &why), DS_OK);
+        assert_int_equal(ds_integrator_used(b), ALL[c].integrator);
+        assert_int_equal(ds_broadphase_used(b), ALL[c].broadphase);
+        assert_int_equal(ds_boundary_used(b), ALL[c].boundary);
+        assert_same_run(a, b); /* at once */
+        /* ~0.5 collisions per disk per 1000 steps at this density. */
+        const uint64_t before = ds_collision_count(a), steps = quick_mode() ? 400 : 2000;
+        ds_run(a, steps);
+        ds_run(b, steps / 3);
+        ds_run(b, steps - steps / 3);
+        assert_true(ds_collision_count(a) > before + steps / 20); /* not an idle case */
+        assert_same_run(a, b); /* and after many more steps, in other pieces */
+        free(buf);
+        ds_destroy(a);
+        ds_destroy(b);
+    }
+}
+
+/* A checkpoint of a checkpoint is the same run too, through a file. */
+static void test_a_checkpoint_goes_through_a_file(void **state)
+{
+    (void)state;
+    const combination c = {DS_EVENT_DRIVEN, DS_CELLS, DS_PERIODIC};
+    ds_sim *a = make(&c);
+    ds_run(a, 100);
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    assert_int_equal(ds_save_state(a, f), DS_OK);
+    rewind(f);
+    ds_sim *b = NULL;
+    assert_int_equal(ds_load_state(f, &b, NULL), DS_OK);
+    fclose(f);
+    ds_run(a, 100);
+    ds_run(b, 100);
+    assert_same_run(a, b);
+    ds_destroy(a);
+    ds_destroy(b);
+}
+
+/* The run never stops for ds_set_all either: a disk set, then saved. */
+static void test_a_state_set_by_hand_is_saved_exactly(void **state)
+{
+    (void)state;
+    for (int integrator = DS_TIME_STEP; integrator <= DS_EVENT_DRIVEN; ++integrator) {
+        const combination c = {(ds_integrator)integrator, DS_AUTO, DS_WALLS};
+        ds_sim *a = make(&c);
+        ds_run(a, 30);
+        ds_disk d = ds_get(a, 17);
+        d.vx = -d.vx;
+        assert_int_equal(ds_set(a, 17, d), DS_OK);
+        size_t len = 0;
+        uint8_t *buf = saved(a, &len);
+        ds_sim *b = NULL;
+        assert_int_equal(ds_parse_state(buf, len, &b, NULL), DS_OK);
+        ds_run(a, 200);
+        ds_run(b, 200);
+        assert_same_run(a, b);
+        free(buf);
+        ds_destroy(a);
+        ds_destroy(b);
+    }
+}
+
+/* FNV-1a as the file has it, to forge a consistent checkpoint. */
+static uint64_t fnv(const uint8_t *p, size_t len)
+{
+    uint64_t h = 14695981039346656037ull;
+    for (size_t k = 0; k < len; ++k)
+        h = (h ^ p[k]) * 1099511628211ull;
+    return h;
+}
+
+static void fix_checksum(uint8_t *buf, size_t len)
+{
+    const uint64_t h = fnv(buf, len - 8);
+    for (int k = 0; k < 8; ++k)
+        buf[len - 8 + (size_t)k] = (uint8_t)(h >> (8 * k));
+}
+
+static void assert_refused(const uint8_t *buf, size_t len, const char *why_contains)
+{
+    ds_sim *b = (ds_sim *)1;
+    ds_state_error why;
+    assert_int_equal(ds_parse_state(buf, len, &b, &why), DS_ERR_FORMAT);
+    assert_null(b);
+    assert_true(strlen(why.message) > 0);
+    if (why_contains && !strstr(why.message, why_contains))
+        fail_msg("\"%s\" does not say \"%s\"", why.message, why_contains);
+}
+
+static void test_a_bad_checkpoint_is_refused_with_a_reason(void **state)
+{
+    (void)state;
+    const combination c = {DS_EVENT_DRIVEN, DS_CELLS, DS_WALLS};
+    ds_sim *a = make(&c);
+    ds_run(a, 20);
+    size_t len = 0;
+    uint8_t *buf = saved(a, &len);
+    uint8_t *bad = malloc(len + 16);
+    assert_non_null(bad);
+    /* Truncated anywhere. */
+    for (size_t cut = 0; cut < len; cut += cut < 64 ? 1 : 997)
+        assert_refused(buf, cut, cut < 8 ? "not a disksim state" : NULL);
+    assert_refused(buf, len - 1, "truncated");
+    /* One byte changed anywhere: the checksum. */
+    for (size_t at = 40; at < len - 8; at += 1009) {
+        memcpy(bad, buf, len);
+        bad[at] ^= 0x20;
+        assert_refused(bad, len, "checksum");
+    }
+    /* Foreign, future, and bytes beyond the end. */
+    memcpy(bad, buf, len);
+    memcpy(bad, "NOTSTATE", 8);
+    assert_refused(bad, len, "not a disksim state");
+    memcpy(bad, buf, len);
+    bad[8] = 2;
+    fix_checksum(bad, len);
+    assert_refused(bad, len, "format version 2");
+    memcpy(bad, buf, len);
+    memset(bad + len, 0, 16);
+    assert_refused(bad, len + 16, "after the end");
+    free(bad);
+    free(buf);
+    ds_destroy(a);
+}
+
+/* Forged checkpoints (consistent checksums) with random bytes changed in
+ * the payload: the loader refuses what would break the library and never
+ * crashes (the sanitizer and valgrind runs of CI watch this test), and a
+ * checkpoint it accepts runs. */
+static void test_forged_checkpoints_never_crash_the_loader(void **state)
+{
+    (void)state;
+    ds_rng rng;
+    ds_rng_seed(&rng, 99);
+    for (size_t c = 0; c < sizeof ALL / sizeof ALL[0]; c += 3) {
+        ds_sim *a = make(&ALL[c]);
+        ds_run(a, 10);
+        size_t len = 0;
+        uint8_t *buf = saved(a, &len);
+        uint8_t *bad = malloc(len);
+        assert_non_null(bad);
+        const int tries = quick_mode() ? 20 : 200;
+        for (int t = 0; t < tries; ++t) {
+            memcpy(bad, buf, len);
+            const int changes = 1 + (int)(ds_rng_next(&rng) % 4);
+            for (int k = 0; k < changes; ++k) {
+                const size_t at = 40 + (size_t)(ds_rng_next(&rng) % (len - 48));
+                bad[at] = (uint8_t)ds_rng_next(&rng);
+            }
+            fix_checksum(bad, len);
+            ds_sim *b = NULL;
+            const ds_status st = ds_parse_state(bad, len, &b, NULL);
+            assert_true(st == DS_OK || st == DS_ERR_FORMAT);
+            if (st == DS_OK) {
+                ds_run(b, 3);
+                ds_destroy(b);
+            }
+        }
+        free(bad);
+        free(buf);
+        ds_destroy(a);
+    }
+}
+
+static void test_null_arguments_are_refused(void **state)
+{
+    (void)state;
+    ds_sim *b = NULL;
+    assert_int_equal(ds_parse_state(NULL, 10, &b, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_parse_state("x", 1, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_load_state(NULL, &b, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_save_state(NULL, stdout), DS_ERR_ARG);
+    assert_int_equal(ds_state_size(NULL), 0);
+    size_t len = 5;
+    assert_int_equal(ds_format_state(NULL, NULL, 0, &len), DS_ERR_ARG);
+    assert_int_equal(len, 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_a_loaded_run_goes_on_bit_for_bit),
+        cmocka_unit_test(test_a_checkpoint_goes_through_a_file),
+        cmocka_unit_test(test_a_state_set_by_hand_is_saved_exactly),
+        cmocka_unit_test(test_a_bad_checkpoint_is_refused_with_a_reason),
+        cmocka_unit_test(test_forged_checkpoints_never_crash_the_loader),
+        cmocka_unit_test(test_null_arguments_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
