@@ -14,6 +14,8 @@ and frames. Everything runs in the library; the arrays are numpy copies.
 
 Sim           one simulation (help(disksim.Sim) for its arguments)
 read_frame    a frame file as arrays (Frame: positions, radii, velocities)
+load          a Sim from an exact checkpoint written by Sim.save (pickle
+              and copy.copy use the same checkpoint)
 pair_histogram, local_psi6
               g(r) pair counts and psi6 of any (n, 2) array of centres
 memory_needed the bytes a Sim would allocate
@@ -42,6 +44,7 @@ from ._disksim import (
     NoMemoryError,
     Sim,
     library_version,
+    load,
     local_psi6,
     memory_needed,
     pair_histogram,
@@ -53,6 +56,7 @@ __version__ = library_version
 __all__ = [
     "Sim",
     "read_frame",
+    "load",
     "pair_histogram",
     "local_psi6",
     "memory_needed",

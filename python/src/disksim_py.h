@@ -5,9 +5,10 @@
  * library's enumerations (names.c), argument conversion (convert.c), the
  * parameters of a simulation from keyword arguments (params.c), the Sim
  * type (sim.c), its properties (properties.c), its state as arrays
- * (state.c), frames (frames.c), the analysis functions (analysis.c) and
- * ASE (ase.c). Only the public header disk_sim.h is used: the module is a
- * thin face over the library.
+ * (state.c), exact checkpoints and pickles (checkpoint.c), frames
+ * (frames.c), the analysis functions (analysis.c) and ASE (ase.c). Only
+ * the public header disk_sim.h is used: the module is a thin face over
+ * the library.
  *
  * Internal names start with dspy_; the module is built with
  * -fvisibility=hidden, so none of them (nor the library's ds_*) leaves it.
@@ -52,7 +53,7 @@ PyObject *dspy_raise(ds_status status, const char *field, const char *message);
 /* dspy_raise with a printf-formatted message. */
 PyObject *dspy_raisef(ds_status status, const char *field, const char *fmt, ...);
 /* FileError(errnum, message, path) (an OSError with errno, strerror and
- * filename), or FileError(message) when errnum is 0. Returns NULL. */
+ * filename), or FileError("path: message") when errnum is 0. Returns NULL. */
 PyObject *dspy_raise_file(int errnum, const char *message, PyObject *path);
 /* FormatError("path: line N: message") with attributes line and path. */
 PyObject *dspy_raise_format(PyObject *path, size_t line, const char *message);
@@ -114,11 +115,21 @@ int dspy_path_arg(PyObject *value, PyObject **bytes);
  * raised. warning receives the first warning's sentence ("" if none). */
 int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params, char warning[256]);
 /* The keyword arguments that recreate params, as a dict (for repr and
- * Sim.params). */
-PyObject *dspy_params_dict(const ds_params *params);
+ * Sim.params), without the arguments whose bit is set in unknown. */
+PyObject *dspy_params_dict(const ds_params *params, unsigned unknown);
 /* "Sim(400, 5.0, integrator='event')": the arguments that differ from
- * the defaults. */
-PyObject *dspy_params_repr(const ds_params *params);
+ * the defaults (and are known). */
+PyObject *dspy_params_repr(const ds_params *params, unsigned unknown);
+/* The parameters of a simulation read back from the library (a loaded
+ * checkpoint), as far as it tells them; returns the mask of those it
+ * does not (seed, speed, placement). */
+unsigned dspy_params_of_sim(const ds_sim *sim, ds_params *params);
+/* The parameters of a dict of Sim's keyword arguments (a pickle's),
+ * checked as Sim checks them; unknown receives the mask of the arguments
+ * the dict does not have. */
+int dspy_params_from_dict(PyObject *dict, ds_params *params, unsigned *unknown);
+/* Whether the argument name is in the unknown mask. */
+unsigned dspy_param_unknown(unsigned unknown, const char *name);
 /* The text of Sim's signature for its docstring. */
 #define DSPY_SIM_SIGNATURE                                                                         \
     "Sim(n, radius, *, seed=20260101, integrator='step', boundary='walls', "                       \
@@ -130,6 +141,7 @@ typedef struct dspy_sim {
     PyObject_HEAD
     ds_sim *sim;      /* NULL once closed (or before __init__) */
     ds_params params; /* as created, for repr and params */
+    unsigned unknown; /* members of params not known (a loaded checkpoint) */
     /* Set while a call runs without the GIL (run, step, creation,
      * set_state, writing): any other use of this Sim from another thread
      * then raises Error instead of racing the library. */
@@ -160,6 +172,16 @@ PyObject *dspy_pair_histogram(PyObject *module, PyObject *args, PyObject *kwargs
 PyObject *dspy_local_psi6(PyObject *module, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_pair_histogram(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_local_psi6(dspy_sim *self, PyObject *args, PyObject *kwargs);
+
+/* checkpoint.c: exact checkpoints, files and pickles. */
+PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused);
+PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs);
+PyObject *dspy_restore(PyObject *module, PyObject *args);
+extern const char dspy_load_doc[];
+/* Makes self own sim (which it frees on failure), its parameters those of
+ * the library's answer, or params if given. */
+int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown);
 
 /* ase.c */
 PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused);

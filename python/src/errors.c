@@ -161,10 +161,11 @@ PyObject *dspy_raisef(ds_status status, const char *field, const char *fmt, ...)
 PyObject *dspy_raise_file(int errnum, const char *message, PyObject *path)
 {
     PyObject *exc = errnum ? PyObject_CallFunction(dspy_FileError, "isO", errnum, message, path)
-                           : PyObject_CallFunction(dspy_FileError, "s", message);
+                           : PyObject_CallFunction(dspy_FileError, "N",
+                                                   PyUnicode_FromFormat("%S: %s", path, message));
     PyObject *status = PyUnicode_FromString(dspy_status_name(DS_ERR_IO));
-    if (exc && status && PyObject_SetAttrString(exc, "status", status) == 0 &&
-        (errnum || PyObject_SetAttrString(exc, "filename", path) == 0))
+    /* (without an errno, OSError would print a filename as "[Errno None] None") */
+    if (exc && status && PyObject_SetAttrString(exc, "status", status) == 0)
         PyErr_SetObject(dspy_FileError, exc);
     Py_XDECREF(status);
     Py_XDECREF(exc);

@@ -23,6 +23,10 @@ static PyMethodDef module_functions[] = {
      METH_VARARGS | METH_KEYWORDS, dspy_pair_histogram_doc},
     {"local_psi6", (PyCFunction)(void (*)(void))dspy_local_psi6, METH_VARARGS | METH_KEYWORDS,
      dspy_local_psi6_doc},
+    {"load", (PyCFunction)(void (*)(void))dspy_load, METH_VARARGS | METH_KEYWORDS, dspy_load_doc},
+    {"_restore", (PyCFunction)dspy_restore, METH_VARARGS,
+     "_restore(type, checkpoint, params, /)\n--\n\n"
+     "Unpickles a Sim (Sim.__reduce__ names it): not for direct use."},
     {"memory_needed", (PyCFunction)(void (*)(void))memory_needed, METH_VARARGS | METH_KEYWORDS,
      "memory_needed(n, radius, **arguments)\n--\n\n"
      "Bytes Sim(n, radius, **arguments) would allocate (ds_memory_needed), without\n"

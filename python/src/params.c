@@ -193,11 +193,13 @@ int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params, c
     return 0;
 }
 
-PyObject *dspy_params_dict(const ds_params *p)
+PyObject *dspy_params_dict(const ds_params *p, unsigned unknown)
 {
     PyObject *dict = PyDict_New();
     for (size_t k = 0; dict && k < PARAM_ARGS; ++k) {
         const param_arg *a = &param_args[k];
+        if (unknown & (1u << k))
+            continue;
         PyObject *value = NULL;
         double d;
         int e;
@@ -227,18 +229,20 @@ PyObject *dspy_params_dict(const ds_params *p)
     return dict;
 }
 
-PyObject *dspy_params_repr(const ds_params *p)
+PyObject *dspy_params_repr(const ds_params *p, unsigned unknown)
 {
     ds_params defaults = ds_default_params(p->n, p->radius);
     for (size_t k = 0; k < PARAM_ARGS; ++k)
         if (param_args[k].kind == ARG_LENGTH)
             *(double *)member(&defaults, &param_args[k]) = param_args[k].fallback;
-    PyObject *mine = dspy_params_dict(p), *plain = dspy_params_dict(&defaults);
+    PyObject *mine = dspy_params_dict(p, unknown), *plain = dspy_params_dict(&defaults, 0);
     PyObject *text = mine && plain
                          ? PyUnicode_FromFormat("Sim(%R, %R", PyDict_GetItemString(mine, "n"),
                                                 PyDict_GetItemString(mine, "radius"))
                          : NULL;
     for (size_t k = POSITIONAL; text && k < PARAM_ARGS; ++k) {
+        if (unknown & (1u << k))
+            continue;
         PyObject *v = PyDict_GetItemString(mine, param_args[k].name);
         PyObject *d = PyDict_GetItemString(plain, param_args[k].name);
         const int same = v && d ? PyObject_RichCompareBool(v, d, Py_EQ) : -1;
@@ -258,4 +262,44 @@ PyObject *dspy_params_repr(const ds_params *p)
     Py_XDECREF(mine);
     Py_XDECREF(plain);
     return text;
+}
+
+unsigned dspy_params_of_sim(const ds_sim *sim, ds_params *p)
+{
+    *p = ds_default_params(ds_count(sim), ds_radius(sim));
+    p->box = ds_box(sim);
+    p->box_y = ds_box_y(sim) == ds_box(sim) ? 0.0 : ds_box_y(sim);
+    p->dt = ds_dt(sim);
+    p->integrator = ds_integrator_used(sim);
+    p->boundary = ds_boundary_used(sim);
+    p->broadphase = ds_broadphase_used(sim);
+    /* What the library does not tell: the rows of the table it leaves out. */
+    unsigned unknown = 0;
+    for (size_t k = 0; k < PARAM_ARGS; ++k) {
+        const char *name = param_args[k].name;
+        if (strcmp(name, "seed") == 0 || strcmp(name, "speed") == 0 ||
+            strcmp(name, "placement") == 0)
+            unknown |= 1u << k;
+    }
+    return unknown;
+}
+
+unsigned dspy_param_unknown(unsigned unknown, const char *name)
+{
+    for (size_t k = 0; k < PARAM_ARGS; ++k)
+        if (strcmp(name, param_args[k].name) == 0)
+            return unknown & (1u << k);
+    return 0;
+}
+
+int dspy_params_from_dict(PyObject *dict, ds_params *p, unsigned *unknown)
+{
+    PyObject *empty = PyTuple_New(0);
+    const int r = empty ? dspy_params_from_args(empty, dict, p, NULL) : -1;
+    Py_XDECREF(empty);
+    *unknown = 0;
+    for (size_t k = 0; r == 0 && k < PARAM_ARGS; ++k)
+        if (!PyDict_GetItemString(dict, param_args[k].name))
+            *unknown |= 1u << k;
+    return r;
 }

@@ -56,6 +56,8 @@ static PyObject *name_property(dspy_sim *self, void *closure)
         value = (int)ds_broadphase_used(sim);
         break;
     case DSPY_PLACEMENT:
+        if (dspy_param_unknown(self->unknown, "placement"))
+            Py_RETURN_NONE; /* a loaded checkpoint does not say */
         value = (int)self->params.placement;
         break;
     case DSPY_KINDS:
@@ -81,7 +83,7 @@ static PyObject *momentum_property(dspy_sim *self, void *closure)
 static PyObject *params_property(dspy_sim *self, void *closure)
 {
     (void)closure;
-    return dspy_sim_of(self) ? dspy_params_dict(&self->params) : NULL;
+    return dspy_sim_of(self) ? dspy_params_dict(&self->params, self->unknown) : NULL;
 }
 
 static PyObject *closed_property(dspy_sim *self, void *closure)
@@ -117,7 +119,8 @@ PyGetSetDef dspy_sim_getset[] = {
     REAL(dt, "The time step: the simulated time one step() advances."),
     NAME(integrator, "The integrator: 'step' or 'event'."),
     NAME(boundary, "The boundary: 'walls' or 'periodic'."),
-    NAME(placement, "How the disks were placed: 'random' or 'lattice'."),
+    NAME(placement, "How the disks were placed: 'random' or 'lattice' (None for a Sim from\n"
+                    "load(), whose checkpoint does not say)."),
     NAME(broadphase, "The broad phase in use, never 'auto' ('sap', 'strips', 'brute', 'cells')."),
     REAL(time, "Simulated time: steps * dt (a product, so it carries no rounding drift)."),
     COUNT(steps, "Steps taken since creation."),
@@ -158,7 +161,8 @@ PyGetSetDef dspy_sim_getset[] = {
          "events (collisions, wall turns, cell crossings) and their predictions."),
     {"params", (getter)params_property, NULL,
      "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
-     "same simulation at time 0.",
+     "same simulation at time 0. A Sim from load() has those the library tells: no\n"
+     "seed, speed or placement.",
      NULL},
     {"closed", (getter)closed_property, NULL, "Whether close() has freed this Sim.", NULL},
     {"running", (getter)running_property, NULL,

@@ -83,6 +83,7 @@ static PyObject *sim_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
     if (self) {
         self->sim = NULL;
         self->busy = 0;
+        self->unknown = 0;
         memset(&self->params, 0, sizeof self->params);
     }
     return (PyObject *)self;
@@ -127,9 +128,25 @@ static int sim_init(dspy_sim *self, PyObject *args, PyObject *kwargs)
             dspy_raisef(st, NULL, "n = %zu disks: %s", p.n, ds_status_str(st));
         return -1;
     }
+    return dspy_sim_adopt(self, sim, &p, 0);
+}
+
+int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown)
+{
+    if (self->busy) {
+        ds_destroy(sim);
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        return -1;
+    }
+    ds_params p;
+    if (params)
+        p = *params;
+    else
+        unknown = dspy_params_of_sim(sim, &p);
     ds_destroy(self->sim); /* __init__ called again: the new one replaces it */
     self->sim = sim;
     self->params = p;
+    self->unknown = unknown;
     return 0;
 }
 
@@ -171,7 +188,8 @@ static PyObject *sim_exit(dspy_sim *self, PyObject *args)
 
 static PyObject *sim_repr(dspy_sim *self)
 {
-    PyObject *args = self->sim || self->busy ? dspy_params_repr(&self->params) : NULL;
+    PyObject *args =
+        self->sim || self->busy ? dspy_params_repr(&self->params, self->unknown) : NULL;
     if (!self->sim && !self->busy)
         return PyUnicode_FromString("<disksim.Sim, closed>");
     if (!args)
@@ -301,6 +319,18 @@ static PyMethodDef sim_methods[] = {
      "local_psi6($self, /, cutoff=None)\n--\n\n"
      "disksim.local_psi6() of this Sim's disks in its box and boundary: psi6 of\n"
      "each disk as a complex array. cutoff=None is psi6's, 1.4 d (d = 2R)."},
+    {"save", (PyCFunction)(void (*)(void))dspy_sim_save, METH_VARARGS | METH_KEYWORDS,
+     "save($self, /, path)\n--\n\n"
+     "Write an exact checkpoint of the simulation to path (ds_save_state): the\n"
+     "parameters, time and step count, every disk to the bit, the observables'\n"
+     "accumulators and the integrator's own state. disksim.load(path) gives a Sim\n"
+     "that goes on bit for bit as this one would have. The format is the library's,\n"
+     "portable between machines. FileError if it cannot be written. Pickling and\n"
+     "copy.copy() use the same checkpoint, in memory."},
+    {"__reduce__", (PyCFunction)dspy_sim_reduce, METH_NOARGS,
+     "__reduce__($self, /)\n--\n\n"
+     "For pickle and copy: the exact checkpoint (ds_format_state) and the arguments.\n"
+     "The copy is a new, independent simulation that goes on bit for bit as this one."},
     {"to_ase", (PyCFunction)dspy_sim_to_ase, METH_NOARGS,
      "to_ase($self, /)\n--\n\n"
      "The disks as an ase.Atoms, as ASE reads the library's extended XYZ frames:\n"
