@@ -9,6 +9,7 @@
 # their last column, the seconds each point took. Run by make test, from
 # the top directory; PRESSURE names the tools/pressure to run (make passes
 # the one of its build).
+# shellcheck disable=SC2015 # "A && B || fail": fail whenever A or B is false
 set -eu
 top=$(pwd)
 PRESSURE=${PRESSURE:-$top/tools/pressure}

@@ -50,6 +50,7 @@ echo "eos: $count points, N = $n, $jobs at a time" >&2
 # The two runs at other N go first: the one at 4 N is the longest, and
 # started last it would keep one core busy while the others wait.
 status=0
+# shellcheck disable=SC2016 # $1 ... are the inner shell's, not ours
 { echo $((count - 1)); echo $((count - 2)); seq 0 $((count - 3)); } | xargs -P "$jobs" -I '{}' sh -c \
     'sh "$1" "$2" "$3" "$4" "$5" "$6" "$7" || exit 255' sh \
     "$top/tools/analysis/eos_point.sh" '{}' "$dir" "$n" "$relax" "$blocks" "$block" ||

@@ -68,6 +68,7 @@ if [ "$index" -lt 0 ] || [ "$index" -ge "$count" ]; then
     echo "eos_point: INDEX must be 0 to $((count - 1)), got '$1'" >&2
     exit 2
 fi
+# shellcheck disable=SC2046 # the point's five words become $1 .. $5
 set -- $(point "$index" "${3:-16384}" "${4:-50}" "${5:-15}" "${6:-10}")
 what="point $index (N = $1, area fraction $2, relaxation $3, $4 blocks of $5)"
 if [ ! -x "$pressure" ]; then
