@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # disksim: plain make. `make` builds libdisksim.a and disks; `make test`
 # builds and runs the cmocka suite. Honours CC, CFLAGS, CPPFLAGS, LDFLAGS.
 

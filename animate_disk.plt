@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Makes animation.gif from frame_0000.txt, frame_0001.txt, ... in the
 # current directory: `gnuplot animate_disk.plt` or, inside gnuplot,
 # load "animate_disk.plt". Disks are drawn to scale (column 3 is R) in a

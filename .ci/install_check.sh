@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Installs into a temporary stage the way a distribution package is built
 # (make install DESTDIR=stage PREFIX=/usr), checks every installed file (the
 # manual pages rendered by man without a warning, the documentation), then

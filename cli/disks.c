@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* disks: the command-line front end. Parses arguments, runs the simulation,
  * writes frame_NNNN.txt files crash-safe, prints the seed's timing. All
  * printing and exit codes live here, never in the library. */

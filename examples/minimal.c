@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The smallest complete program on libdisksim: create a simulation, run it,
  * print the classic exercise's figure (time spent on disk-disk collisions).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Takes the whole state out in one call (ds_get_all) and prints the speed
  * distribution against the two-dimensional Maxwell-Boltzmann law:
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes every frame of a run to stdout as one stream, for piping into
  * another program instead of filling a directory with frame_NNNN.txt files:
  *

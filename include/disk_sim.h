@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * disksim: hard disks (2D elastic billiards) in a square box.
  *
@@ -104,21 +105,31 @@ typedef enum ds_boundary {
     DS_WALLS = 0, /* hard walls: a centre turns at R from each wall */
     /* Periodic in x and y: a disk leaving at one edge comes back at the
      * opposite one, and pairs interact through their nearest image.
-     * Positions stay in [0, box) x [0, box_y). Needs R < box/4 and
-     * R < box_y/4 (so a pair touches through one image only). */
+     * Positions stay in [0, box) x [0, box_y), however far a step takes a
+     * disk. Needs R < box/4 and R < box_y/4 (so a pair touches through
+     * one image only). */
     DS_PERIODIC
 } ds_boundary;
 
 /* Where the disks start. */
 typedef enum ds_placement {
-    DS_RANDOM = 0, /* random sequential: the seed's, up to area fraction 0.54 */
+    /* Random sequential: the seed's, up to area fraction 0.54. In a
+     * periodic box (with more than one disk) the mean velocity is taken
+     * out and the speeds scaled back to the same kinetic energy,
+     * n speed^2 / 2, so the centre of mass stands still; with walls the
+     * velocities are the seed's. */
+    DS_RANDOM = 0,
     /* A triangular lattice of m rows of c sites (c m >= n, empty sites
      * spread evenly), the (c, m) whose closest sites are farthest apart;
      * it fits without strain, up to close packing (area fraction
      * pi / (2 sqrt 3) = 0.9069), in a periodic box of aspect
      * box_y / box = sqrt(3) m / (2 c). ds_check_params refuses
-     * (DS_ERR_PLACEMENT) a request whose best lattice would overlap. In a
-     * periodic box the total momentum is made zero. */
+     * (DS_ERR_PLACEMENT) a request whose best lattice would overlap, and
+     * for the event-driven integrator one whose closest sites are less than
+     * DS_ROOM_TO_MOVE of a diameter apart beyond contact (at close packing
+     * every disk touches its neighbours, and collisions would cascade
+     * without time ever advancing). In a periodic box (with more than one
+     * disk) the total momentum is made zero, as for DS_RANDOM. */
     DS_LATTICE
 } ds_placement;
 
@@ -132,19 +143,32 @@ typedef enum ds_broadphase {
     DS_CELLS        /* the event-driven integrator's cell grid (event-driven only) */
 } ds_broadphase;
 
+/* The parameters of a simulation. A zeroed struct asks for the defaults
+ * of every field that has one, but its broadphase is DS_SAP (0), which
+ * serves the time step only: start from ds_default_params (DS_AUTO). */
 typedef struct ds_params {
     size_t n;      /* number of disks, >= 1 */
     double radius; /* disk radius: < box/2 and box_y/2 (walls), /4 (periodic) */
     uint64_t seed; /* seed of the placement and direction generator */
-    double box;    /* 0 means 1000 */
-    double speed;  /* 0 means 100  */
-    double dt;     /* 0 means 0.001 */
-    ds_broadphase broadphase;
+    double box;    /* width, in (0, 1e9]; 0 means 1000 */
+    double speed;  /* initial speed, in (0, 1e9]; 0 means 100 */
+    double dt;     /* the step, in (0, 1]; 0 means 0.001 */
+    ds_broadphase broadphase; /* DS_AUTO in ds_default_params; see above */
     ds_integrator integrator; /* DS_TIME_STEP by default */
     ds_boundary boundary;     /* DS_WALLS by default */
     ds_placement placement;   /* DS_RANDOM by default */
-    double box_y;             /* height of the box; 0 means box (square) */
+    double box_y;             /* height of the box, in (0, 1e9]; 0 means box (square) */
 } ds_params;
+
+/* The least room the event-driven integrator takes, as a fraction of a
+ * diameter: between a lattice's closest sites beyond contact, and for a
+ * centre between the walls (box - 2R and box_y - 2R). With less, its
+ * events cascade at one instant (disks in contact on every side) or
+ * follow each other a rounding error apart (a disk in a band a rounding
+ * error wider than itself): a step would not end. ds_check_params refuses
+ * such a request with DS_ERR_PLACEMENT (the lattice) or DS_ERR_ARG (the
+ * radius). */
+#define DS_ROOM_TO_MOVE 1e-6
 
 #define DS_DEFAULT_SEED 20260101u
 
@@ -354,8 +378,9 @@ void ds_reset_observables(ds_sim *sim);
  * lattice's orientation. The box is [0, box_x] x [0, box_y]; with
  * DS_PERIODIC separations are minimum images (centres anywhere, wrapped),
  * which is unique only if cutoff < min(box_x, box_y) / 2. O(n) with a cell
- * grid allocated inside. n = 0 is DS_OK and writes nothing. DS_ERR_ARG if
- * a pointer is NULL, box_x, box_y or cutoff is not finite and positive, a
+ * grid allocated inside. n = 0 is DS_OK and reads and writes nothing (the
+ * pointers may then be NULL). DS_ERR_ARG if, with n > 0, a pointer is
+ * NULL, or if box_x, box_y or cutoff is not finite and positive, a
  * centre is not finite, boundary is unknown, or a periodic cutoff is not
  * below half the shorter side; DS_ERR_NOMEM if the grid cannot be
  * allocated. */

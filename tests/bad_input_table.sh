@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Regenerates the "Bad input" table of docs/cli.md: runs every case of
 # tests/cli_cases.txt through test_cli --table (the same runs the test
 # checks) and replaces the lines between the table markers in docs/cli.md.

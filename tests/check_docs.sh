@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Docs that cannot rot: run by `make test` from the top of the tree.
 #
 #   sh tests/check_docs.sh DISKS [RENDER [GR [PRESSURE]]]
@@ -365,8 +366,28 @@ else
     note "groff is not installed (Debian: groff-base): the manual pages' rendering is not checked"
 fi
 
+# ------------------------------------------------------------ 7. the licence
+
+# Every file of the tree that holds code or a manual says its licence in
+# an SPDX line near its top (after a #! line).
+if command -v git >/dev/null 2>&1 && git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    licensed=0
+    for f in $(git ls-files '*.c' '*.h' '*.sh' '*.plt' '*.py' '*.1' '*.3' Makefile .ci/run \
+               disksim.pc.in); do
+        [ -f "$f" ] || continue
+        if head -n 3 "$f" | grep -q 'SPDX-License-Identifier: MIT'; then
+            licensed=$((licensed + 1))
+        else
+            problem "$f: no 'SPDX-License-Identifier: MIT' line at its top"
+        fi
+    done
+    echo "check_docs: $licensed source files carry the licence's SPDX line"
+else
+    note "not a git checkout: the SPDX lines are not checked"
+fi
+
 if [ "$problems" -ne 0 ]; then
     echo "check_docs: $problems problems" >&2
     exit 1
 fi
-echo "check_docs: links, options, example commands, the README example, the API and the manual pages: OK"
+echo "check_docs: links, options, example commands, the README example, the API, the manual pages and the licence lines: OK"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness for the frame reader: any bytes at all must give either
  * a well-formed frame or DS_ERR_FORMAT with a line number inside the input,
  * never a crash, an out-of-bounds read (ASan) or undefined behaviour (UBSan).

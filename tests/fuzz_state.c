@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness for the checkpoint loader: any bytes must give either
  * a simulation that runs or DS_ERR_FORMAT (or DS_ERR_NOMEM) with a reason,
  * never a crash, an out-of-bounds read (ASan), undefined behaviour

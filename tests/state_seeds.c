@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes small checkpoints of every integrator, boundary and broad phase
  * into the directory given: the seeds of the checkpoint fuzzer
  * (tests/fuzz_state.c, make fuzz). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Broad phases: every one reports exactly the overlapping pairs the
  * all-pairs reference reports, each once, over random configurations
  * (sparse, dense, on the walls, with many equal coordinates), before and

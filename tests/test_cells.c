@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event-driven integrator's cell grid: its shape (cells at least 2R
  * wide, never more than a few per disk), where a coordinate falls, and
  * that every disk added is found in its cell, slots and overflow list

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Checkpoints: a simulation saved and loaded goes on bit for bit as the
  * one that never stopped, for both integrators, both boundaries and every
  * broad phase; a truncated, corrupted, foreign or future-version

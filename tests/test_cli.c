@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The commands under bad input: each case of tests/cli_cases.txt runs the
  * real binary in a fresh directory and checks the promise of docs/cli.md:
  * one line on stderr naming the bad value, the documented exit status, no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Collision response: walls and pairs, against hand-computed results, and
  * the two traps of the exercise's literal rules. */
 #include "test_util.h"

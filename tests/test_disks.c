@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* End to end: the built ./disks command and the gnuplot animation script.
  * Run from the repository root (as `make test` does). */
 #include "test_util.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event-driven integrator, through the public API: exact analytic
  * cases (head-on, oblique, a wall, a corner, Newton's cradle) to the
  * 1e-9 the header promises, no overlap ever in a dense gas, energy and
@@ -387,6 +388,79 @@ static void test_set_refuses_an_overlap_and_keeps_the_state(void **state)
     ds_destroy(sim);
 }
 
+/* The header's tolerance, on both sides: closer than 2R by a relative
+ * DS_CONTACT_TOLERANCE is an overlap, by less it is contact. */
+static void test_set_refuses_overlap_exactly_at_the_documented_tolerance(void **state)
+{
+    (void)state;
+    ds_sim *sim = create(2, 5.0, BIG_BOX, 1, DS_AUTO);
+    place(sim, 0, 400.0, 500.0, 0.0, 0.0);
+    place(sim, 1, 600.0, 500.0, 0.0, 0.0);
+    const ds_disk over = {400.0 + 10.0 * (1.0 - 2.0 * DS_CONTACT_TOLERANCE), 500.0, 1.0, 0.0};
+    const ds_disk contact = {400.0 + 10.0 * (1.0 - 0.5 * DS_CONTACT_TOLERANCE), 500.0, 1.0, 0.0};
+    assert_int_equal(ds_set(sim, 1, over), DS_ERR_OVERLAP);
+    assert_int_equal(ds_set(sim, 1, contact), DS_OK);
+    /* A velocity component beyond 1e12, as the header says. */
+    const ds_disk fast = {700.0, 500.0, 1e13, 0.0};
+    assert_int_equal(ds_set(sim, 1, fast), DS_ERR_ARG);
+    ds_destroy(sim);
+}
+
+/* Found by a client of the library: at exact close packing (100 disks of
+ * R = 50 on the 10 x 10 lattice of a periodic box of aspect sqrt(3)/2)
+ * every disk touches six others and the first step never returned (5
+ * million collisions, the time still 0). Refused now, for the event-driven
+ * integrator only; with DS_ROOM_TO_MOVE to spare a step ends. */
+static void test_a_lattice_at_close_packing_is_refused_and_one_with_room_runs(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(100, 50.0);
+    p.boundary = DS_PERIODIC;
+    p.placement = DS_LATTICE;
+    p.box_y = 1000.0 * sqrt(3.0) / 2.0;
+    p.integrator = DS_EVENT_DRIVEN;
+    ds_params_error why;
+    assert_int_equal(ds_diagnose_params(&p, NULL, &why), DS_ERR_PLACEMENT);
+    assert_non_null(strstr(why.message, "close packing"));
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
+    p.integrator = DS_TIME_STEP; /* a fixed amount of work per step */
+    assert_int_equal(ds_check_params(&p, NULL), DS_OK);
+    /* 1e-4 of a diameter of room: ~v dt / gap = 0.1 / 0.01 = 10 collisions
+     * per disk per step. */
+    p.integrator = DS_EVENT_DRIVEN;
+    p.radius = 50.0 * (1.0 - 1e-4);
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    ds_run(sim, 3);
+    assert_int_equal(ds_steps(sim), 3);
+    assert_true(ds_collision_count(sim) > 100);
+    ds_destroy(sim);
+}
+
+/* Found by a client too: one disk of R = nextafter(500, 0) in the default
+ * box has a band of 2e-13 between the walls, and one step would have
+ * taken ~10^12 wall turns (hours). The event-driven integrator refuses a
+ * band under DS_ROOM_TO_MOVE of a diameter; the time step takes it. */
+static void test_a_band_a_rounding_error_wide_is_refused(void **state)
+{
+    (void)state;
+    ds_params p = ds_default_params(1, nextafter(500.0, 0.0));
+    p.integrator = DS_EVENT_DRIVEN;
+    ds_params_error why;
+    assert_int_equal(ds_diagnose_params(&p, NULL, &why), DS_ERR_ARG);
+    assert_string_equal(why.field, "radius");
+    assert_non_null(strstr(why.message, "band"));
+    p.radius = 500.0 * (1.0 - 2.0 * DS_ROOM_TO_MOVE); /* a band of 2e-3, 1e-3 = room * 2R */
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    ds_run(sim, 2); /* ~100 turns a step */
+    assert_true(ds_wall_count(sim) > 50);
+    ds_destroy(sim);
+    p.radius = nextafter(500.0, 0.0);
+    p.integrator = DS_TIME_STEP;
+    assert_int_equal(ds_check_params(&p, NULL), DS_OK);
+}
+
 static void test_a_pair_a_hair_inside_contact_is_never_stuck(void **state)
 {
     (void)state;
@@ -672,6 +746,9 @@ int main(void)
         cmocka_unit_test(test_wall_pressure_follows_the_virial_series),
         cmocka_unit_test(test_time_step_pressure_approaches_the_exact_one_linearly_in_dt),
         cmocka_unit_test(test_set_refuses_an_overlap_and_keeps_the_state),
+        cmocka_unit_test(test_set_refuses_overlap_exactly_at_the_documented_tolerance),
+        cmocka_unit_test(test_a_lattice_at_close_packing_is_refused_and_one_with_room_runs),
+        cmocka_unit_test(test_a_band_a_rounding_error_wide_is_refused),
         cmocka_unit_test(test_a_pair_a_hair_inside_contact_is_never_stuck),
         cmocka_unit_test(test_set_between_steps_changes_the_course),
         cmocka_unit_test(test_a_run_cut_into_steps_gives_the_same_trajectory),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event calendar against the indexed binary heap it is checked by:
  * the same disk first after the same operations, whatever the times, in
  * workloads shaped like an event-driven run's (reschedule the first disk

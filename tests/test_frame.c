@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Frame files: exact formatting, round trip, and the parser's errors. */
 #include "test_util.h"
 

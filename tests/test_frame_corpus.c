@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays tests/corpus/ (the fuzzer's seeds and every crash it ever found)
  * through the fuzz harness, so the ordinary suite, its sanitizer build and
  * valgrind keep guarding against them without clang or libFuzzer.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Frame I/O under bad input and failing files: every malformed frame is
  * refused with the line that is wrong, every failed write is reported, and
  * the library answers bad arguments with DS_ERR_ARG instead of crashing. */

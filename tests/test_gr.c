@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tools/gr: g(r) of a frame file. A square lattice gives the exact
  * neighbour counts over the ideal-gas ones; a dilute random gas gives 0
  * inside contact and 1 beyond a few diameters; bad input gets one line on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lattice placement (DS_LATTICE): every disk inside the box and none
  * overlapping, at any density a triangular lattice reaches; a request no
  * lattice fits is refused before anything is allocated; the lattice is

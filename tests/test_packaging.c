@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Everyday use: the man page renders cleanly and says what `disks --help`
  * says, --version is the header's version, and the progress line appears on
  * a terminal, is erased at the end, and never reaches a pipe or a file.

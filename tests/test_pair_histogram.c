@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* ds_pair_histogram: the pair counts behind g(r). A periodic square
  * lattice gives exact shell counts; random centres give exactly the counts
  * of testing every pair (walls and periodic, centres wrapped or not); bad

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parameters: ds_diagnose_params gives ds_check_params's answer and says
  * why, naming the field at fault and its value, for every refusal; and it
  * explains a warning. */
@@ -89,6 +90,25 @@ static void test_each_refusal_names_its_field_and_value(void **state)
         assert_explained(&cases[k]);
 }
 
+/* A zeroed ds_params asks for the defaults, but its broad phase is DS_SAP
+ * (0), which serves the time step only (the header says so): with
+ * DS_EVENT_DRIVEN it is refused, and the reason names the broad phase. */
+static void test_a_zeroed_request_for_events_names_its_broad_phase(void **state)
+{
+    (void)state;
+    ds_params p;
+    memset(&p, 0, sizeof p);
+    p.n = 10;
+    p.radius = 5.0;
+    p.integrator = DS_EVENT_DRIVEN;
+    ds_params_error why;
+    assert_int_equal(ds_diagnose_params(&p, NULL, &why), DS_ERR_ARG);
+    assert_string_equal(why.field, "broadphase");
+    assert_non_null(strstr(why.message, "sap"));
+    p.broadphase = DS_AUTO;
+    assert_int_equal(ds_diagnose_params(&p, NULL, &why), DS_OK);
+}
+
 static void test_an_accepted_request_has_no_message(void **state)
 {
     (void)state;
@@ -138,6 +158,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_each_refusal_names_its_field_and_value),
+        cmocka_unit_test(test_a_zeroed_request_for_events_names_its_broad_phase),
         cmocka_unit_test(test_an_accepted_request_has_no_message),
         cmocka_unit_test(test_a_warning_is_explained_with_the_resolved_values),
         cmocka_unit_test(test_null_params_are_refused_with_a_reason),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The physics a user checks statistical mechanics against: what is
  * conserved, what changes only at the walls, relaxation to the 2D
  * Maxwell-Boltzmann (Rayleigh) speed law, the ideal-gas pressure, and that

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Initial state: inside the box, no overlaps, speed 100, fails fast. */
 #include "test_util.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* tools/render, tested from the outside: each backend's binary renders
  * hand-written frames and the PNGs are read back with libpng. Expected
  * pixel positions come from the renderer's own layout (render_layout.c),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The xorshift64* generator: reproducible, in range, uniform. */
 #include "test_util.h"
 

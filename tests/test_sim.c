@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The public API contract: defaults, generation order, ds_set, time,
  * independence of simulations, NULL safety. */
 #include "test_util.h"

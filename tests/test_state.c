@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A whole state at once: ds_set_all takes every disk together where disk
  * by disk fails, refuses an overlapping or outside state naming the disks
  * and changing nothing, and the run goes on from the new state. */

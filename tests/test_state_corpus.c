@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays tests/corpus-state/ (every checkpoint the fuzzer of the loader
  * ever found to crash, hang or exhaust memory) through its harness, so the
  * ordinary suite, its sanitizer build and valgrind keep guarding against

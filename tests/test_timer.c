@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The CLOCK_MONOTONIC timer: never backwards, accumulates intervals. No
  * test asserts an upper bound on a duration: the machine is shared. */
 #include "test_util.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared includes and helpers for the cmocka tests. */
 #ifndef DS_TEST_UTIL_H
 #define DS_TEST_UTIL_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Extended XYZ trajectories: what ds_format_xyz_frame writes reads back as
  * the simulation (parsed here, in C, always), `disks --trajectory` holds
  * exactly the frames it writes as text, and a third-party reader, ASE's

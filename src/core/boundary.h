@@ -1,29 +1,35 @@
+/* SPDX-License-Identifier: MIT */
 /* The periodic box in one place: wrapping a coordinate into the box and
  * the separation to the nearest image. Every part that meets the
  * boundary (the integrators, the broad phases, placement) calls these.
  *
- * Both assume what ds_check_params guarantees: a periodic box is more
- * than two diameters wide along each axis, so two disks within 2R of each
- * other are so along exactly one image, and a coordinate is never more
- * than one box outside [0, box). */
+ * ds_nearest assumes what ds_check_params guarantees: a periodic box is
+ * more than two diameters wide along each axis, so two disks within 2R of
+ * each other are so along exactly one image. */
 #ifndef DS_BOUNDARY_H
 #define DS_BOUNDARY_H
 
 #include <math.h>
 
-/* u moved into [0, box), given -box <= u < 2 box. */
+/* u moved into [0, box): one shift, which is all a step that moves a disk
+ * less than a side needs, else ds_wrap_any (below). */
+static inline double ds_wrap_any(double u, double box);
 static inline double ds_wrap(double u, double box)
 {
     if (u >= box)
         u -= box;
     else if (u < 0.0)
         u += box;
-    /* -tiny + box rounds to box itself: the same point as 0. */
-    return u < box ? u : 0.0;
+    if (u >= 0.0 && u < box)
+        return u;
+    /* A step longer than a side (a fast disk, a long dt, a thin box), or
+     * -tiny + box rounded to box itself (0 then, the same point). */
+    return ds_wrap_any(u, box);
 }
 
 /* u brought into [0, box) from anywhere (a caller's centres need not be
- * wrapped): u - box floor(u / box), exact for u already inside. */
+ * wrapped, a step may jump sides): u - box floor(u / box), exact for u
+ * already inside. */
 static inline double ds_wrap_any(double u, double box)
 {
     u -= box * floor(u / box);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The collision rule, in one place for every integrator: an elastic
  * collision of two equal masses along their line of centres, and what it
  * adds to the virial. Not installed. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What every part of the library shares: the simulation object, what
  * every part reads (the world), what integrators add to (the tally), and
  * the table of operations an integrator fills.
@@ -57,6 +58,10 @@ struct ds_sim {
  * sim/integrators.c by its ds_integrator value. */
 struct ds_integrator_ops {
     const char *name; /* ds_integrator_name */
+    /* The least room between disks it takes, as a fraction of a diameter
+     * (DS_ROOM_TO_MOVE, or 0): sim/params.c refuses lattices and walls
+     * closer than that. */
+    double min_room;
     /* Whether broad phase bp (never DS_AUTO) serves this integrator. */
     int (*fits)(ds_broadphase bp);
     /* The broad phase DS_AUTO means for world w. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The disks' arrays (see disk_arrays.h). */
 #include <math.h>
 #include <stdlib.h>

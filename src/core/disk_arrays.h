@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The disks' state, structure of arrays: the one owner of the per-disk
  * data and of every operation that moves or permutes it.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The cell grid (see grid.h). */
 #include <math.h>
 #include <stdlib.h>

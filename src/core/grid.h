@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One cell grid for the parts that look for neighbours: random placement
  * (init/), psi6 and g(r) (observe/) and the periodic seam pass
  * (timestep/). The box is cut into nx by ny cells at least min_side wide,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Large arrays on huge pages (see large_alloc.h). */
 #define _DEFAULT_SOURCE /* madvise and MADV_HUGEPAGE (glibc, musl) */
 #define _POSIX_C_SOURCE 200112L

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Large arrays that the event-driven integrator reads at random, one
  * cache line here and one there: backed by 2 MB pages where the system
  * offers them, so that each access does not also miss the TLB (with 4 KB

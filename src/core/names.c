@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's names for things: statuses, boundaries, broad phases
  * (the integrators' names are in their tables), and its version. */
 #include "disk_sim.h"

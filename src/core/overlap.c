@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Overlapping disks, found through the cell grid (see overlap.h). */
 #include "core/overlap.h"
 #include "core/boundary.h"

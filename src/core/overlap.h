@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Whether any two disks overlap: a state to start from or to load must
  * have none (disk_sim.h, DS_CONTACT_TOLERANCE). Not installed. */
 #ifndef DS_OVERLAP_H

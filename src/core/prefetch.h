@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A hint to bring the cache line holding *p in: a no-op where the compiler
  * has no way to say it. Never faults, whatever the address.
  *

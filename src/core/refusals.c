@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Refusals with their reasons: a ds_params_error (sim/params.c and each
  * integrator's own check) and a ds_state_error (a state to set or load). */
 #include <stdarg.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* xorshift64* (Vigna, "An experimental exploration of Marsaglia's xorshift
  * generators, scrambled", 2016): 64-bit state, period 2^64-1, passes BigCrush
  * on the high bits, which are the ones ds_rng_uniform uses. */

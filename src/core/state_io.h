@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The bytes of a saved state (sim/state.c writes the frame of the file,
  * each integrator its own part): little-endian integers and IEEE doubles
  * by their bits, whatever the machine, so a file moves between machines

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Monotonic wall-clock timer, the C counterpart of std::chrono::steady_clock. */
 #define _POSIX_C_SOURCE 199309L
 #include <time.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The cell grid of the event-driven integrator (see cells.h). */
 #include <math.h>
 #include <stdlib.h>

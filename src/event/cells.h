@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event-driven integrator's cell grid: the box cut into nx by ny cells
  * at least 2R (a diameter) wide, each holding the disks whose centres it
  * holds. Two disks in contact are then in the same or adjacent cells, so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event-driven integrator (DS_EVENT_DRIVEN): exact dynamics of hard
  * disks, every collision at its own time (event_driven.c and its parts:
  * event_predict.c, event_fetch.c, event_queue.c, cells.c). The rest of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A checkpoint of the event-driven integrator: what its next event
  * depends on, to the bit. The records (positions at their own times,
  * velocities, scheduled times and partners, change counts), the cells'

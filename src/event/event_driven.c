@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_EVENT_DRIVEN: exact dynamics of hard disks.
  *
  * Between events every disk flies in a straight line, so the state is
@@ -454,6 +455,9 @@ static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *e
 
 const ds_integrator_ops ds_event_driven_ops = {
     .name = "event",
+    /* Disks in contact on every side (a lattice at close packing) would
+     * collide for ever at one instant. */
+    .min_room = DS_ROOM_TO_MOVE,
     .fits = fits,
     .choose = choose,
     .check = check,

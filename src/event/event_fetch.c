@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fetching ahead (event-driven integrator).
  *
  * Events come in time order, which is no order in space: in a large

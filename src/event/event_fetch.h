@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Fetching ahead (event_fetch.c): the memory of events a few events
  * before they come up, for systems larger than the caches. Its state is
  * its own (ds_fetch, kept inside the integrator's state so that reaching

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A disk's next event (event-driven integrator): the earliest of its
  * wall turn, its next cell crossing and its collisions with the disks of
  * the 3 x 3 cells around it. This is the integrator's hot loop: each

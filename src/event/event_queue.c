@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event calendar: a calendar queue, and an indexed binary heap to
  * check it against (see event_queue.h).
  *

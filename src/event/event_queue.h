@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event calendar of the event-driven integrator: one scheduled time per
  * disk, and which disk's time is the earliest.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The event-driven integrator's state, shared by its parts:
  * event_driven.c (the events, the run, creation), event_predict.c (a
  * disk's next event) and event_fetch.c (fetching memory ahead of events).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Lattice placement (DS_LATTICE): the disks on a triangular lattice that
  * fills the box as evenly as it can, the way dense states are started.
  *
@@ -88,10 +89,15 @@ static lattice best_lattice(size_t n, double radius, double box_x, double box_y,
  * round a hair below 2R. */
 #define FIT_SLACK 1e-12
 
+double ds_lattice_closest(size_t n, double radius, double box_x, double box_y, int periodic)
+{
+    return best_lattice(n, radius, box_x, box_y, periodic).closest;
+}
+
 int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int periodic)
 {
-    const lattice l = best_lattice(n, radius, box_x, box_y, periodic);
-    return l.closest >= 2.0 * radius * (1.0 - FIT_SLACK);
+    return ds_lattice_closest(n, radius, box_x, box_y, periodic) >=
+           2.0 * radius * (1.0 - FIT_SLACK);
 }
 
 ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
@@ -125,28 +131,12 @@ ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
 
     ds_rng rng;
     ds_rng_seed(&rng, w->seed);
-    double mx = 0.0, my = 0.0;
     for (size_t i = 0; i < n; ++i) {
         const double angle = ds_rng_uniform(&rng, 0.0, DS_TWO_PI);
         d->vx[i] = w->speed * cos(angle);
         d->vy[i] = w->speed * sin(angle);
-        mx += d->vx[i];
-        my += d->vy[i];
     }
-    if (periodic && n > 1) {
-        mx /= (double)n;
-        my /= (double)n;
-        double v2 = 0.0;
-        for (size_t i = 0; i < n; ++i) {
-            d->vx[i] -= mx;
-            d->vy[i] -= my;
-            v2 += d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i];
-        }
-        const double scale = sqrt((double)n * w->speed * w->speed / v2);
-        for (size_t i = 0; i < n; ++i) {
-            d->vx[i] *= scale;
-            d->vy[i] *= scale;
-        }
-    }
+    if (periodic)
+        ds_stop_centre_of_mass(d, w);
     return DS_OK;
 }

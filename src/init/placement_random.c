@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Random sequential placement: disk i is drawn uniformly where a centre
  * may be ([R, box - R] x [R, box_y - R] with walls, [0, box) x [0, box_y)
  * in a periodic box) and redrawn until it overlaps none of disks
@@ -201,6 +202,11 @@ ds_status ds_place_random(ds_disks *d, const ds_world *w)
         d->vx[i] = w->speed * cos(angle);
         d->vy[i] = w->speed * sin(angle);
     }
+    /* With walls the seed's velocities, as they are (the walls take the
+     * momentum); in a periodic box nothing does: the centre of mass would
+     * drift for ever. */
+    if (periodic)
+        ds_stop_centre_of_mass(d, w);
 done:
     free(g.head);
     free(g.node);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Frame files: one line per disk, "x y R" or "x y R vx vy". The numbers
  * are formatted by number_text.c (fixed six decimals by hand, exactly as
  * printf would: fprintf("%.6f") dominated the cost of `disks 400 5`). */

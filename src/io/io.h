@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text output and input: frame files (frame_io.c), extended XYZ
  * trajectories (xyz.c) and the number formatting both use
  * (number_text.c). Not installed. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Numbers as text for the text formats (frames, trajectories): fixed six
  * decimals, formatted by hand because fprintf("%.6f") dominated the cost of
  * `disks 400 5` (the same digits as printf, ties to even, from integer

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Numbers as text, shared by the text formats (frame_io.c, xyz.c) and the
  * radius a simulation prints (sim.c). Internal, not installed. */
 #ifndef DS_NUMBER_TEXT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Trajectories in extended XYZ, the text format ASE, OVITO, VMD and QUIP
  * read: frames one after another, each a count line, a comment line of
  * key=value pairs describing the cell and the columns, then one line per

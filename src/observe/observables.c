@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The observables of a simulation: kinetic energy and momentum from the
  * disks, wall pressure and virial pressure from what the integrators
  * tallied since the last reset. */

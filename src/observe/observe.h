@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Observables (observe/): what a simulation measures of itself, from the
  * disks (observables.c: energy, momentum) and from what the integrators
  * tallied (pressures), and structure (psi6.c). Their public face is

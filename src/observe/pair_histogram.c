@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The histogram of pair separations behind g(r) (ds_pair_histogram): every
  * pair closer than the histogram's range found through the cell grid, the
  * cells at least that range wide, so each centre looks at the 3 x 3 cells

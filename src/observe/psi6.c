@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Order: the bond-orientational order parameter psi6, per disk and for the
  * whole system.
  *
@@ -43,7 +44,8 @@ static void add_bond(double dx, double dy, double r2, double *re, double *im)
 ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x, double box_y,
                         ds_boundary boundary, double cutoff, double *re, double *im)
 {
-    if (!x || !y || !re || !im)
+    /* No disks: nothing to read or write, whatever the pointers. */
+    if (n > 0 && (!x || !y || !re || !im))
         return DS_ERR_ARG;
     if (!(box_x > 0.0) || !isfinite(box_x) || !(box_y > 0.0) || !isfinite(box_y) ||
         !(cutoff > 0.0) || !isfinite(cutoff))

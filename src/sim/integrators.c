@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The integrators, by their ds_integrator value: a new integrator is its
  * folder (or file) with its table, and one line here. */
 #include "sim/sim.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Parameters: the defaults, what a request may ask for and why not, and
  * the memory it needs. Every refusal is made here (or by the integrator's
  * own check, through its table) and explained in one sentence, so the
@@ -111,7 +112,7 @@ static ds_status check_kinds(const ds_params *p, ds_params_error *err)
 /* A disk fits between the walls; in a periodic box two disks in contact
  * must be so through one image only (boundary.h), so each side is more
  * than two diameters. */
-static ds_status check_size(const ds_world *w, ds_params_error *err)
+static ds_status check_size(const ds_world *w, double min_room, ds_params_error *err)
 {
     if (w->n < 1)
         return ds_refuse(err, DS_ERR_ARG, "n", "n = 0: there must be at least one disk");
@@ -126,6 +127,16 @@ static ds_status check_size(const ds_world *w, ds_params_error *err)
                                   : "radius = %g does not fit a box of %g x %g: it must be below "
                                     "half of its shorter side (%g)",
                          w->radius, w->box, w->box_y, most);
+    /* The band a centre moves in between the walls, for an integrator that
+     * needs room: a disk in a band a rounding error wider than itself
+     * would turn at the walls a rounding error apart. */
+    const double band = fmin(w->box, w->box_y) - 2.0 * w->radius;
+    if (!periodic && min_room > 0.0 && !(band >= 2.0 * w->radius * min_room))
+        return ds_refuse(err, DS_ERR_ARG, "radius",
+                         "radius = %.17g leaves its centre a band of %g between the walls: the "
+                         "%s integrator needs %g of a diameter at least (%g)",
+                         w->radius, band, ds_integrator_ops_of(w->integrator)->name, min_room,
+                         2.0 * w->radius * min_room);
     /* Ids are 32-bit; beyond that no machine this runs on has the memory. */
     if (w->n >= UINT32_MAX ||
         w->n > (SIZE_MAX - 64) / (DS_DISKS_BYTES_PER_DISK + DS_PLACEMENT_BYTES_PER_DISK))
@@ -134,7 +145,7 @@ static ds_status check_size(const ds_world *w, ds_params_error *err)
 }
 
 /* The packings refused before trying (see DS_MANY_DISKS in the header). */
-static ds_status check_packing(const ds_world *w, ds_params_error *err)
+static ds_status check_packing(const ds_world *w, double min_room, ds_params_error *err)
 {
     const int periodic = w->boundary == DS_PERIODIC;
     const double fraction =
@@ -145,6 +156,15 @@ static ds_status check_packing(const ds_world *w, ds_params_error *err)
                              "n = %zu disks of radius %g cover %.3f of the box; no triangular "
                              "lattice of them fits without overlap (close packing is 0.9069)",
                              w->n, w->radius, fraction);
+        const double closest = ds_lattice_closest(w->n, w->radius, w->box, w->box_y, periodic);
+        if (min_room > 0.0 && !(closest >= 2.0 * w->radius * (1.0 + min_room)))
+            return ds_refuse(err, DS_ERR_PLACEMENT, "n",
+                             "n = %zu disks of radius %g cover %.7f of the box: their lattice is "
+                             "at close packing, its neighbours %.3g of a diameter apart beyond "
+                             "contact; the %s integrator needs %g at least (a slightly larger "
+                             "box or smaller disks)",
+                             w->n, w->radius, fraction, closest / (2.0 * w->radius) - 1.0,
+                             ds_integrator_ops_of(w->integrator)->name, min_room);
         return DS_OK;
     }
     if (disks_cannot_fit(w))
@@ -171,12 +191,13 @@ ds_status ds_diagnose_params(const ds_params *p, unsigned *warnings, ds_params_e
     if (st == DS_OK)
         st = check_kinds(p, err);
     const ds_world w = ds_world_of(p);
+    const double min_room = st == DS_OK ? ds_integrator_ops_of(w.integrator)->min_room : 0.0;
     if (st == DS_OK)
-        st = check_size(&w, err);
+        st = check_size(&w, min_room, err);
     if (st == DS_OK)
         st = ds_integrator_ops_of(w.integrator)->check(&w, warnings, err);
     if (st == DS_OK)
-        st = check_packing(&w, err);
+        st = check_packing(&w, min_room, err);
     if (st != DS_OK && warnings)
         *warnings = 0;
     if (st != DS_OK && err)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulation: the public API of creation, stepping and the disks,
  * dispatching to the integrator through its table (core.h). It never
  * asks which integrator it has. */

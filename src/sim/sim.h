@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The simulation's public API (sim.c, params.c, state.c) over the parts,
  * and the list of integrators (integrators.c). Not installed. */
 #ifndef DS_SIM_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A simulation's whole state at once: checking a state to start from,
  * setting every disk (ds_set_all), and checkpoints (ds_save_state,
  * ds_load_state and their in-memory forms). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time step's broad phases behind one dispatcher (broad_phase.h):
  * creating and freeing each one's state, its memory, and finding pairs
  * with the seam pass added where a sweep runs in a periodic box. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time step's broad phases: which pairs of disks overlap after a
  * move. Interchangeable behind broad_phase.c's dispatcher, all reporting
  * exactly the same pairs:

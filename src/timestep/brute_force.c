@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_BRUTE_FORCE: every pair tested, O(N^2), in any slot order. The
  * reference the sweeps are checked against; in a periodic box it takes
  * each pair to its nearest image itself, so it needs no seam pass. */

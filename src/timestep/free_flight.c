@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time step's free flight: every disk moves by v dt, then a disk past
  * a wall turns, or in a periodic box wraps to the opposite edge. */
 #include <math.h>

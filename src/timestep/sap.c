@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_SAP, the seed's sweep and prune: the slots are kept sorted by x with
  * insertion sort (nearly linear, since the order barely changes between
  * steps) and a pair is tested only while their x distance is below 2R.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pairs across the seams of a periodic box, for the sweeps.
  *
  * DS_SAP and DS_SAP_STRIPS sweep the box as if it had walls: they find

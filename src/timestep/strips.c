@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_SAP_STRIPS: sweep and prune in horizontal strips.
  *
  * Plain SAP tests every pair closer than 2R in x, wherever they are in y:

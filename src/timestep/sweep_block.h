@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sweeps' inner loops, shared by sap.c and strips.c:
  * a fixed block of four candidates tested without a
  * data-dependent branch, and the bounded window walk for the rest.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* DS_TIME_STEP: the seed's fixed time step. Each step moves every disk by
  * v dt and turns those past a wall, or wraps them in a periodic box
  * (free_flight.c), then the broad phase (broad_phase.c) finds the
@@ -145,6 +146,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk d)
 
 const ds_integrator_ops ds_time_step_ops = {
     .name = "step",
+    .min_room = 0.0, /* a step is a fixed amount of work, in any room */
     .fits = fits,
     .choose = choose,
     .check = check,

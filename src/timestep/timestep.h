@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The time step integrator (DS_TIME_STEP), the seed's: each step moves
  * every disk by v dt, turns those past a wall or wraps them in a periodic
  * box (free_flight.c), then the broad phase (broad_phase.h) finds the

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The hard-disk equation of state through melting: Z = P A / (N kT) from
 # the collision virial against the area fraction, event-driven, in a
 # periodic box of aspect sqrt(3)/2 (1000 x 866.03) that a triangular

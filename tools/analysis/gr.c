@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* gr: the radial distribution function g(r) of one frame file. Public API
  * only (the frame is read with ds_read_frame).
  *

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The hard-disk equation of state: Z against area fraction from
 # tools/analysis/eos.sh (eos.dat: columns eta N integrator dt boundary Z error ...),
 # with the virial series through B10 (Clisby and McCoy 2006) and the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The radial distribution function g(r) written by tools/gr, against r in
 # diameters, with the ideal gas (g = 1) for reference.
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Wall pressure over the ideal-gas value against the area fraction, with the
 # counting error bars, the ideal gas (1) and Henderson's hard-disk equation
 # of state (1 + eta^2/8) / (1 - eta)^2.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The time step's Z over the event-driven Z against dt, one line per area
 # fraction, from the ratio file tools/analysis/pressure_vs_dt.sh writes (columns:
 # area fraction, dt with 0 for event-driven, ratio, error):

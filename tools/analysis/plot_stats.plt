@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Energy and wall pressure against time, from the CSV of `disks --stats`.
 #
 #   gnuplot -e "stats_file='stats.csv'; N=2000; R=3" tools/analysis/plot_stats.plt

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* pressure: the compressibility factor Z = P A / (N kT) of one system, with
  * an error bar from block averages. Public API only. The scripts
  * tools/analysis/pressure_vs_dt.sh and tools/analysis/eos.sh run it over parameter sweeps.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The time step's bias, measured: Z = P A / (N kT) from the collision virial
 # for the event-driven integrator and for the time step at several dt, at
 # several area fractions, in a periodic box (no walls, so no wall term).

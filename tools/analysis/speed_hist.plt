@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Speed histogram of one frame written with `disks --velocities`, against the
 # 2D Maxwell-Boltzmann (Rayleigh) density with the frame's own <v^2>.
 #

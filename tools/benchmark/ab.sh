@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Compares two builds of the event-driven integrator in one process:
 #
 #   tools/benchmark/ab.sh REV_A REV_B [N [ROUNDS [event|step|seed]]]

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Two builds of the library in one process (tools/benchmark/ab.sh): this file is
  * compiled once per build with AB_SIDE set to its symbol prefix (A_ or
  * B_), the prefix tools/benchmark/ab.sh gives every global symbol of that build's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench: how fast the broad phases are, how they scale, what placement and
  * output cost. Uses the public API only; prints a table and asserts
  * nothing (timings depend on the machine and its load).

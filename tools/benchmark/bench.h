@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the sections of tools/bench share (bench_stats.c), and the
  * event-driven section (bench_events.c) that bench.c runs. */
 #ifndef DS_BENCH_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Section 5 of tools/bench: the event-driven integrator. Public API only.
  *
  * 5a. Disk-disk collisions per second at area fraction 0.5 with walls, for

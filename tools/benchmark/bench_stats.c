@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the sections of tools/bench share: medians over rounds, and the
  * peak memory of the process (bench.h). */
 #define _POSIX_C_SOURCE 200809L

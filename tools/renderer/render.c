@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* render: frame files to PNG images or one movie, off-screen, no display
  * or gnuplot.
  *

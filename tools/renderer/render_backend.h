@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The renderer's only contact with a GL implementation: a context that
  * draws into an off-screen W x H RGBA image, made current on the calling
  * thread, and a way to read the pixels back. Everything else (shaders,

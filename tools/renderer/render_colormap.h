@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Colours of the renderer: the perceptual map for speeds, the cyclic map
  * for the bond orientation, and the fixed
  * colours of 3-column frames. GL-free, so the tests link it directly. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #define GL_GLEXT_PROTOTYPES 1
 #include <math.h>
 #include <stdio.h>

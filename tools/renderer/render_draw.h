@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Draws one frame with whatever GL context is current: the same code for
  * every backend. Disks are quads whose fragment shader computes the exact
  * distance to the centre, so edges are antialiased analytically (coverage

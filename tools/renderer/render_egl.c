@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Surfaceless EGL backend: Mesa's EGL_PLATFORM_SURFACELESS_MESA reaches the
  * same llvmpipe rasterizer as OSMesa (or a GPU driver, if one is there)
  * without a window system. The context has no surface at all; it draws

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A 5x7 bitmap font for the legend: digits, '.', '-', '+', 'e' and the
  * letters of "speed" and "psi6". Enough for the labels; no font library needed. */
 #ifndef RENDER_FONT_H

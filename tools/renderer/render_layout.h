@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where things go in the image, in pixels with the origin at the
  * bottom-left corner and y up (GL window coordinates; the PNG writer flips
  * the rows). GL-free, so the tests compute the same positions. */

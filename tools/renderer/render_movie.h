@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A movie from rendered images: raw RGB frames piped to ffmpeg (found on
  * PATH), encoded as H.264 in yuv420p, the combination every browser and
  * phone plays, in an MP4 with its index at the front (+faststart) so it

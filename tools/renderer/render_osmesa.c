@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* OSMesa backend: Mesa renders straight into a buffer we own, so reading
  * the pixels back is only a glFinish. OSMesa was removed from Mesa in 25.1;
  * render_egl.c is the backend for systems that no longer ship it. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Writes an image as an 8-bit RGB PNG, atomically: into a temporary file
  * in the destination's directory, renamed over the destination only once
  * libpng has written and the file has been closed without error. A reader
