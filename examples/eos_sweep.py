@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """The equation of state of hard disks from Python, on every core.
 
 Each point is one disksim.Sim: event-driven, in a periodic box of aspect

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Prints the Debian packages this Python lacks for building the module
 (`build`) or also for running its tests (`test`), space-separated; prints
 nothing when all are there. The Makefile's python targets use it to say in

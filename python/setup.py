@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Builds the extension disksim._disksim from python/src/*.c and the
 library's own sources (../src/*/*.c), so neither a PIC static library nor
 an installed libdisksim is needed. The version is the header's

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The equation-of-state sweep's three ways of running the same points give
 # the same tables, and a failed point fails the sweep loudly:
 #  - tools/analysis/eos.sh -j 2 (two points at a time, xargs -P),

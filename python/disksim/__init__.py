@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """disksim: hard disks (2D elastic billiards) from Python.
 
 A thin face over libdisksim, the C library of this repository: N equal disks

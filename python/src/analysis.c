@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Analysis of any set of centres: pair counts for g(r)
  * (ds_pair_histogram) and psi6 of each disk (ds_local_psi6), as module
  * functions over an (n, 2) array and as Sim methods over its disks. Both

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sim.to_ase: the disks as an ase.Atoms, the same as ASE's reading of the
  * library's extended XYZ frame (src/io/xyz.c): a flat layer of dummy
  * atoms "X" at z = 0 in a cell box x box_y x 2R, pbc along x and y in a

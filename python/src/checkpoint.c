@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Exact checkpoints (ds_save_state, ds_load_state, ds_format_state,
  * ds_parse_state): Sim.save and disksim.load for files, and pickling, so
  * also copy.copy and copy.deepcopy, through the same bytes. A Sim made

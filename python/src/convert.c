@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Arguments from Python values, with the module's rule for what is raised:
  * TypeError for a value of the wrong type, ArgumentError (a ValueError)
  * for a value of the right type that cannot be used, NoMemoryError for a

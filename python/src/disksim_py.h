@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Python module disksim._disksim: what its files share.
  *
  * One concept per file: the module and its constants (module.c), the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The exceptions of disksim and how a ds_status becomes one.
  *
  * Every failure the library reports raises disksim.Error or a subclass,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Frames: Sim.write_frame (ds_write_frame, ds_write_frame_velocities) and
  * disksim.read_frame (ds_read_frame) returning a Frame of arrays. Files
  * are read and written with the GIL released. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The module disksim._disksim: its functions, constants and types. The
  * package disksim (disksim/__init__.py) re-exports all of it. */
 #define DSPY_MODULE_C /* this file defines numpy's API table */

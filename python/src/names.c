@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The names of the library's enumerations, as the command takes them:
  * integrators and boundaries through the library's own name functions,
  * so a new integrator is a name here without an edit; placements from a

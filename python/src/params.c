@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sim's arguments as a ds_params: one table row per argument, so a new
  * member of ds_params (a mixture's radii, growth) is one row here, one
  * line of DSPY_SIM_SIGNATURE and one paragraph of Sim's docstring.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sim's properties: each is one row of the table at the end, its getter
  * in the library and its docstring, so a new observable of the library is
  * one line here. Every getter goes through dspy_sim_of, so a closed Sim or

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The Sim type: one ds_sim, created from keyword arguments, advanced with
  * the GIL released. Its properties are in properties.c, its arrays and
  * set_state in state.c, frames in frames.c, analysis in analysis.c, ASE in

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A Sim's state as arrays: positions and velocities out (ds_get_all, a
  * fresh copy each time), and set_state in (ds_set_all, which checks the
  * whole state before anything changes).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Shared by the suite: the module under test and the disks command.
 
 The module is whichever `import disksim` finds (PYTHONPATH=python after

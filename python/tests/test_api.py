@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The module's face: names, defaults, docstrings, repr, parameters."""
 import inspect
 import pydoc

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Sim.to_ase is what ASE reads from the library's extended XYZ frames."""
 import subprocess
 import sys

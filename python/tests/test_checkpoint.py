@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Exact checkpoints from Python: Sim.save and disksim.load, pickle and copy,
 all through the library's ds_save_state / ds_parse_state. A Sim made from a
 checkpoint goes on bit for bit as the saved one would have."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Bad arguments raise what the docstrings say, with the library's words,
 and nothing crashes the interpreter whatever it is given.
 

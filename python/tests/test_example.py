@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """examples/eos_sweep.py: its rows are tools/pressure's for the same points,
 and it plots when matplotlib is there."""
 import os

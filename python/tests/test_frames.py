@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The module runs the same simulation as the disks command, and reads and
 writes the same frames."""
 import errno

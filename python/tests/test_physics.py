@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The physics through the module: what is conserved, and the pressure of
 hard disks against the equation of state. Every tolerance says where it
 comes from."""

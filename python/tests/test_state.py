@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """The state as arrays: copies out, copies in, checked before anything
 changes."""
 import numpy as np

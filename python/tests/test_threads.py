@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 """Threads: run() releases the GIL, a Sim per thread gives the same results
 as one after another, and a Sim used from two threads refuses instead of
 racing. No test here measures a time: `tools/analysis/eos.sh -j` and

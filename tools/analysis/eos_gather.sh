@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Gathers the points of an equation-of-state sweep (tools/analysis/eos_point.sh,
 # run by tools/analysis/eos.sh or tools/analysis/eos.sbatch) from DIR into
 # eos.dat (points 0 to 14) and eos_size.dat (point 15, the 0.70 row of

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # One point of the equation-of-state sweep (tools/analysis/eos.sh runs
 # them N at a time, tools/analysis/eos.sbatch one per Slurm array task):
 # point INDEX of the sweep for N disks, run with tools/pressure, its row
