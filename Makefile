@@ -86,10 +86,17 @@ $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	$(CC) $(WARN) $(CPPFLAGS) $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
+# After the C programs: the equation-of-state sweep's scripts on a small
+# sweep (tests/eos_sweep.sh, a second), and the Python module's pytest
+# suite (python-test, below), which says in one line what it lacks instead
+# when a Python package is missing.
 test: all $(TEST_BIN)
 	@fail=0; for t in $(TEST_BIN); do \
 	    echo "== $$t"; ./$$t || fail=1; \
 	done; \
+	echo "== tests/eos_sweep.sh"; \
+	PRESSURE="$(CURDIR)/$(OUT)tools/pressure" sh tests/eos_sweep.sh || fail=1; \
+	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
 
@@ -376,3 +383,60 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
 	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
 	    $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null) $(LDLIBS)
+
+# ---------------------------------------------------------------- python
+# The Python module disksim (python/, docs/python.md), a C extension over
+# disk_sim.h that compiles the library's sources itself (python/setup.py).
+# `make python` builds it in place, python/disksim/_disksim*.so, for
+# PYTHONPATH=python; `make test` then runs its pytest suite. Debian's own
+# python3 by default (its python3-numpy, python3-dev, python3-setuptools
+# and python3-pytest), not whichever python3 comes first on PATH; without
+# them the suite is skipped with a one-line note naming the packages.
+PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
+PY_JOBS ?= 2
+PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo python3)
+PY_EXT = $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_config_var("EXT_SUFFIX"))' 2>/dev/null)
+PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py python/disksim/__init__.py
+# SANITIZE=1 builds the module with the sanitizers into $(BUILD)/python/lib
+# (an instrumented module cannot replace the plain one in place) and runs
+# the suite with AddressSanitizer's runtime preloaded into python3, leak
+# checking off (CPython keeps its objects at exit).
+ifeq ($(SANITIZE),1)
+  PY_LIB    := $(BUILD)/python/lib
+  PY_MODULE  = $(PY_LIB)/disksim/_disksim$(PY_EXT)
+  PY_WHERE  := --build-lib ../$(PY_LIB)
+  PY_ASAN    = $(shell $(CC) -print-file-name=libasan.so)
+  PY_RUN     = $(if $(filter /%,$(PY_ASAN)),LD_PRELOAD=$(PY_ASAN) ASAN_OPTIONS=detect_leaks=0)
+else
+  PY_LIB    := python
+  PY_MODULE  = python/disksim/_disksim$(PY_EXT)
+  PY_WHERE  := --inplace
+  PY_RUN    :=
+endif
+
+.PHONY: python python-deps python-test clean-python
+python: $(PY_MODULE)
+
+python-deps:
+	@missing=$(call PY_MISSING,build); if [ -n "$$missing" ]; then \
+	    echo "make python: $(PYTHON) lacks $$missing (Debian packages)"; exit 1; fi
+
+# setuptools recompiles every file when it builds: make decides when.
+$(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
+	cd python && CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" $(PYTHON) setup.py -q \
+	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python/temp
+	$(if $(filter 1,$(SANITIZE)),cp python/disksim/__init__.py $(PY_LIB)/disksim/)
+
+# The suite runs the disks of this build (test_frames compares its frames).
+python-test: $(DISKS) $(OUT)tools/pressure
+	@missing=$(call PY_MISSING,test); if [ -n "$$missing" ]; then \
+	    echo "python tests skipped: $(PYTHON) lacks $$missing (Debian packages)"; exit 0; fi; \
+	$(MAKE) -s --no-print-directory python && echo "== pytest python/tests" && \
+	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
+	    DISKSIM_PRESSURE="$(CURDIR)/$(OUT)tools/pressure" $(PY_RUN) \
+	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
+
+clean: clean-python
+clean-python:
+	rm -rf python/build python/disksim.egg-info python/disksim/_disksim*.so \
+	    python/disksim/__pycache__ python/tests/__pycache__

@@ -3,7 +3,8 @@
 # tools/analysis/eos.sh (eos.dat: columns eta N integrator dt boundary Z error ...),
 # with the virial series through B10 (Clisby and McCoy 2006) and the
 # published points of Li et al. 2022 and Engel et al. 2013.
-#   gnuplot tools/analysis/plot_eos.plt            (after sh tools/analysis/eos.sh; writes eos.png)
+#   gnuplot tools/analysis/plot_eos.plt    (after sh tools/analysis/eos.sh, in its directory;
+#                                           writes eos.png; the N in the legend is the data's)
 set terminal pngcairo size 900,640 font ",11"
 set output "eos.png"
 # Reduced virial coefficients B_k / B_2^(k-1), k = 2..10, in powers of 2 eta.
@@ -17,6 +18,28 @@ $ref << EOD
 0.716 10.073
 0.720 10.069
 EOD
+# The N of the runs, from the data (column 2), for the legend: eos.dat has
+# one N, eos_size.dat three (N/4, N, 4N).
+stats "eos.dat" using 2 nooutput
+n = int(STATS_min)
+stats "eos_size.dat" using 2 nooutput
+n_small = int(STATS_min); n_large = int(STATS_max)
+# The whole range: to Z = 12, or above the highest point if higher.
+stats "eos.dat" using ($6 + $7) nooutput
+z_top = STATS_max + 0.3 > 12 ? STATS_max + 0.3 : 12
+# The inset's range of Z: every point inside its range of area fraction,
+# with its error bar and the published values, and a margin.
+inset_lo = 0.665; inset_hi = 0.755
+in_inset(x) = (x >= inset_lo && x <= inset_hi)
+stats "eos.dat" using (in_inset($1) ? $6 - $7 : NaN) nooutput
+z_lo = STATS_min < 9.362 ? STATS_min : 9.362
+stats "eos.dat" using (in_inset($1) ? $6 + $7 : NaN) nooutput
+z_hi = STATS_max > 10.318 ? STATS_max : 10.318
+stats "eos_size.dat" using (in_inset($1) ? $6 - $7 : NaN) nooutput
+z_lo = STATS_min < z_lo ? STATS_min : z_lo
+stats "eos_size.dat" using (in_inset($1) ? $6 + $7 : NaN) nooutput
+z_hi = STATS_max > z_hi ? STATS_max : z_hi
+margin = 0.08 * (z_hi - z_lo)
 set multiplot
 # The whole range.
 set xlabel "area fraction {/Symbol h}"
@@ -24,11 +47,11 @@ set ylabel "Z = P A / (N kT)"
 set key bottom right
 set grid
 set xrange [0:0.78]
-set yrange [0:12]
+set yrange [0:z_top]
 plot series(x) with lines lw 2 lc rgb "#888888" title "virial series B_2..B_{10}", \
      $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728" title "Li 2022 (0.670, 0.698), Engel 2013 (0.700 to 0.720)", \
-     "eos.dat" using 1:6:7 with yerrorbars pt 7 ps 1 lc rgb "#1f77b4" title "disksim: event-driven, periodic, N = 16384", \
-     "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c" title "disksim at 0.70, N = 4096, 16384, 65536"
+     "eos.dat" using 1:6:7 with yerrorbars pt 7 ps 1 lc rgb "#1f77b4" title sprintf("disksim: event-driven, periodic, N = %d", n), \
+     "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c" title sprintf("disksim at 0.70, N = %d, %d, %d", n_small, n, n_large)
 # The melting region, enlarged: the loop between 0.70 and 0.72.
 set origin 0.09, 0.42
 set size 0.55, 0.52
@@ -36,10 +59,10 @@ set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb "white" 
 unset xlabel
 unset ylabel
 unset key
-set xrange [0.665:0.755]
-set yrange [9.2:11.8]
+set xrange [inset_lo:inset_hi]
+set yrange [z_lo - margin:z_hi + margin]
 set xtics 0.02
-set ytics 0.5
+set ytics autofreq
 plot $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728", \
      "eos.dat" using 1:6:7 with yerrorlines pt 7 ps 1 lc rgb "#1f77b4", \
      "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c"

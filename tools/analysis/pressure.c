@@ -115,9 +115,14 @@ int main(int argc, char **argv)
     }
     p.radius = sqrt(eta * 1000.0 * p.box_y / ((double)n * PI));
     ds_sim *sim = NULL;
-    const ds_status st = ds_create(&p, &sim);
+    ds_params_error why;
+    ds_status st = ds_diagnose_params(&p, NULL, &why);
+    if (st == DS_OK)
+        st = ds_create(&p, &sim);
     if (st != DS_OK) {
-        fprintf(stderr, "pressure: N = %zu at area fraction %g: %s\n", n, eta, ds_status_str(st));
+        /* The library's sentence when it refuses the parameters. */
+        fprintf(stderr, "pressure: N = %zu at area fraction %g: %s\n", n, eta,
+                why.message[0] ? why.message : ds_status_str(st));
         return 1;
     }
     const double dt = ds_dt(sim), t0 = ds_now();

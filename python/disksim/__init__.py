@@ -1,0 +1,79 @@
+# SPDX-License-Identifier: MIT
+"""disksim: hard disks (2D elastic billiards) from Python.
+
+A thin face over libdisksim, the C library of this repository: N equal disks
+of radius R bouncing elastically in a box with walls or periodic edges,
+advanced by a fixed time step or by exact event-driven dynamics, with the
+library's observables (energy, momentum, wall and virial pressure, psi6)
+and frames. Everything runs in the library; the arrays are numpy copies.
+
+    import disksim
+    s = disksim.Sim(400, 5.0)          # the command's `disks 400 5`
+    s.run(100)                         # 100 steps of dt = 0.001, GIL released
+    s.positions.shape                  # (400, 2), a fresh float64 copy
+    s.kinetic_energy, s.momentum, s.pressure
+
+Sim           one simulation (help(disksim.Sim) for its arguments)
+read_frame    a frame file as arrays (Frame: positions, radii, velocities)
+load          a Sim from an exact checkpoint written by Sim.save (pickle
+              and copy.copy use the same checkpoint)
+pair_histogram, local_psi6
+              g(r) pair counts and psi6 of any (n, 2) array of centres
+memory_needed the bytes a Sim would allocate
+Error         every failure the library reports; ArgumentError (also a
+              ValueError), FormatError (ValueError), FileError (OSError),
+              NoMemoryError (MemoryError)
+
+INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES are the names the arguments
+take; DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS the
+library's constants. docs/python.md in the repository is the manual.
+"""
+from ._disksim import (
+    BOUNDARIES,
+    BROADPHASES,
+    CONTACT_TOLERANCE,
+    DEFAULT_SEED,
+    INTEGRATORS,
+    MANY_DISKS,
+    MAX_AREA_FRACTION,
+    PLACEMENTS,
+    ArgumentError,
+    Error,
+    FileError,
+    FormatError,
+    Frame,
+    NoMemoryError,
+    Sim,
+    library_version,
+    load,
+    local_psi6,
+    memory_needed,
+    pair_histogram,
+    read_frame,
+)
+
+__version__ = library_version
+
+__all__ = [
+    "Sim",
+    "read_frame",
+    "load",
+    "pair_histogram",
+    "local_psi6",
+    "memory_needed",
+    "Frame",
+    "Error",
+    "ArgumentError",
+    "FormatError",
+    "FileError",
+    "NoMemoryError",
+    "INTEGRATORS",
+    "BOUNDARIES",
+    "PLACEMENTS",
+    "BROADPHASES",
+    "DEFAULT_SEED",
+    "CONTACT_TOLERANCE",
+    "MAX_AREA_FRACTION",
+    "MANY_DISKS",
+    "library_version",
+]

@@ -1,0 +1,202 @@
+/* SPDX-License-Identifier: MIT */
+/* Exact checkpoints (ds_save_state, ds_load_state, ds_format_state,
+ * ds_parse_state): Sim.save and disksim.load for files, and pickling, so
+ * also copy.copy and copy.deepcopy, through the same bytes. A Sim made
+ * from a checkpoint goes on bit for bit as the saved one would have. The
+ * checkpoint does not tell the seed, the speed or the placement, so a Sim
+ * from load() does not claim them; a pickle carries them beside it. */
+#include "disksim_py.h" /* first: Python.h sets the feature macros */
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+/* A new instance of type (Sim or a subclass) owning sim. */
+static PyObject *new_sim(PyTypeObject *type, ds_sim *sim, const ds_params *params, unsigned unknown)
+{
+    PyObject *empty = PyTuple_New(0);
+    PyObject *obj = empty ? dspy_SimType.tp_new(type, empty, NULL) : NULL;
+    Py_XDECREF(empty);
+    if (!obj || dspy_sim_adopt((dspy_sim *)obj, sim, params, unknown) < 0) {
+        if (!obj)
+            ds_destroy(sim);
+        Py_XDECREF(obj);
+        return NULL;
+    }
+    return obj;
+}
+
+static PyObject *raise_state_error(ds_status st, int errnum, const ds_state_error *err,
+                                   PyObject *path)
+{
+    const char *why = err->message[0] ? err->message : ds_status_str(st);
+    if (st == DS_ERR_IO)
+        return dspy_raise_file(errnum, errnum ? strerror(errnum) : why, path);
+    if (st == DS_ERR_FORMAT)
+        return path ? dspy_raise_format(path, 0, why) : dspy_raise(st, NULL, why);
+    return dspy_raise(st, NULL, why);
+}
+
+PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs)
+{
+    static char *keywords[] = {"path", NULL};
+    PyObject *path_obj, *path;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O:save", keywords, &path_obj) ||
+        dspy_path_arg(path_obj, &path) < 0)
+        return NULL;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim) {
+        Py_DECREF(path);
+        return NULL;
+    }
+    const char *name = PyBytes_AS_STRING(path);
+    ds_status st;
+    int errnum = 0;
+    self->busy = 1;
+    Py_BEGIN_ALLOW_THREADS
+    errno = 0;
+    FILE *f = fopen(name, "wb");
+    if (!f) {
+        st = DS_ERR_IO;
+        errnum = errno;
+    } else {
+        st = ds_save_state(sim, f);
+        errnum = st == DS_ERR_IO ? errno : 0;
+        if (fclose(f) != 0 && st == DS_OK) {
+            st = DS_ERR_IO;
+            errnum = errno;
+        }
+    }
+    Py_END_ALLOW_THREADS
+    self->busy = 0;
+    Py_DECREF(path);
+    if (st != DS_OK) {
+        const ds_state_error none = {"the checkpoint could not be written"};
+        return raise_state_error(st, errnum, &none, path_obj);
+    }
+    Py_RETURN_NONE;
+}
+
+const char dspy_load_doc[] =
+    "load(path)\n--\n\n"
+    "The Sim saved by Sim.save(path): the same simulation, to the bit, at the time\n"
+    "it was saved (positions, velocities, the integrator's state, the observables'\n"
+    "accumulators). A checkpoint does not record the seed, the speed or the\n"
+    "placement: the loaded Sim's params leave them out and its placement is None.\n"
+    "FormatError (a ValueError) for a truncated, corrupted, foreign or newer\n"
+    "checkpoint, with the library's reason; FileError (an OSError) if it cannot be\n"
+    "read or is not a regular file (a device such as /dev/zero would never end).";
+
+PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
+{
+    (void)module;
+    static char *keywords[] = {"path", NULL};
+    PyObject *path_obj, *path;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O:load", keywords, &path_obj) ||
+        dspy_path_arg(path_obj, &path) < 0)
+        return NULL;
+    const char *name = PyBytes_AS_STRING(path);
+    ds_sim *sim = NULL;
+    ds_state_error err = {""};
+    ds_status st;
+    int errnum = 0;
+    Py_BEGIN_ALLOW_THREADS
+    errno = 0;
+    FILE *f = fopen(name, "rb");
+    struct stat info;
+    if (!f) {
+        st = DS_ERR_IO;
+        errnum = errno;
+    } else if (fstat(fileno(f), &info) != 0 || !S_ISREG(info.st_mode)) {
+        /* ds_load_state reads to the end of the file: from a device such as
+         * /dev/zero that is never, so only regular files are read. */
+        st = DS_ERR_IO;
+        snprintf(err.message, sizeof err.message, "not a regular file");
+        fclose(f);
+    } else {
+        st = ds_load_state(f, &sim, &err);
+        errnum = st == DS_ERR_IO ? errno : 0;
+        fclose(f);
+    }
+    Py_END_ALLOW_THREADS
+    Py_DECREF(path);
+    if (st != DS_OK)
+        return raise_state_error(st, errnum, &err, path_obj);
+    return new_sim(&dspy_SimType, sim, NULL, 0);
+}
+
+/* pickle and copy: (disksim._disksim._restore, (type, checkpoint, params),
+ * the instance's __dict__ for a subclass that has one). */
+PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    const size_t size = ds_state_size(sim);
+    PyObject *data = size <= PY_SSIZE_T_MAX ? PyBytes_FromStringAndSize(NULL, (Py_ssize_t)size)
+                                            : PyErr_NoMemory();
+    if (!data)
+        return NULL;
+    size_t len = 0;
+    ds_status st;
+    char *buf = PyBytes_AS_STRING(data);
+    self->busy = 1;
+    Py_BEGIN_ALLOW_THREADS
+    st = ds_format_state(sim, buf, size, &len);
+    Py_END_ALLOW_THREADS
+    self->busy = 0;
+    if (st != DS_OK || len != size) {
+        Py_DECREF(data);
+        return dspy_raise(st != DS_OK ? st : DS_ERR_NOMEM, NULL, ds_status_str(st));
+    }
+    PyObject *params = dspy_params_dict(&self->params, self->unknown);
+    PyObject *module = params ? PyImport_ImportModule("disksim._disksim") : NULL;
+    PyObject *restore = module ? PyObject_GetAttrString(module, "_restore") : NULL;
+    PyObject *dict = restore ? PyObject_GetAttrString((PyObject *)self, "__dict__") : NULL;
+    if (restore && !dict && PyErr_ExceptionMatches(PyExc_AttributeError)) {
+        PyErr_Clear();
+        dict = Py_NewRef(Py_None);
+    }
+    PyObject *result =
+        dict ? Py_BuildValue("O(OOO)O", restore, (PyObject *)Py_TYPE(self), data, params, dict)
+             : NULL;
+    Py_XDECREF(dict);
+    Py_XDECREF(restore);
+    Py_XDECREF(module);
+    Py_XDECREF(params);
+    Py_DECREF(data);
+    return result;
+}
+
+PyObject *dspy_restore(PyObject *module, PyObject *args)
+{
+    (void)module;
+    PyObject *type, *params;
+    Py_buffer data;
+    if (!PyArg_ParseTuple(args, "Oy*O!:_restore", &type, &data, &PyDict_Type, &params))
+        return NULL;
+    PyObject *result = NULL;
+    ds_params p;
+    unsigned unknown = 0;
+    if (!PyType_Check(type) || !PyType_IsSubtype((PyTypeObject *)type, &dspy_SimType)) {
+        PyErr_SetString(PyExc_TypeError, "_restore: the type must be disksim.Sim or a subclass");
+    } else if (dspy_params_from_dict(params, &p, &unknown) == 0) {
+        ds_sim *sim = NULL;
+        ds_state_error err = {""};
+        ds_status st;
+        Py_BEGIN_ALLOW_THREADS
+        st = ds_parse_state(data.buf, (size_t)data.len, &sim, &err);
+        Py_END_ALLOW_THREADS
+        if (st == DS_OK && (ds_count(sim) != p.n || ds_radius(sim) != p.radius)) {
+            ds_destroy(sim);
+            dspy_raise(DS_ERR_ARG, NULL, "_restore: the parameters are not the checkpoint's");
+        } else {
+            result = st == DS_OK ? new_sim((PyTypeObject *)type, sim, &p, unknown)
+                                 : raise_state_error(st, 0, &err, NULL);
+        }
+    }
+    PyBuffer_Release(&data);
+    return result;
+}

@@ -1,0 +1,174 @@
+/* SPDX-License-Identifier: MIT */
+/* Sim's properties: each is one row of the table at the end, its getter
+ * in the library and its docstring, so a new observable of the library is
+ * one line here. Every getter goes through dspy_sim_of, so a closed Sim or
+ * one in use by another thread raises instead of being read. */
+#include "disksim_py.h" /* first: Python.h sets the feature macros */
+
+/* A property is one row: its getter in the library and its docstring.
+ * The closures hold the library's function behind a struct, as C has no
+ * conversion between function and data pointers. */
+typedef struct real_getter {
+    double (*get)(const ds_sim *);
+} real_getter;
+typedef struct count_getter {
+    uint64_t (*get)(const ds_sim *);
+} count_getter;
+
+static uint64_t count_of(const ds_sim *sim) { return ds_count(sim); }
+
+static const real_getter get_time = {ds_time}, get_radius = {ds_radius}, get_box = {ds_box},
+                         get_box_y = {ds_box_y}, get_dt = {ds_dt},
+                         get_kinetic_energy = {ds_kinetic_energy}, get_pressure = {ds_pressure},
+                         get_virial_pressure = {ds_virial_pressure}, get_psi6 = {ds_psi6},
+                         get_wall_impulse = {ds_wall_impulse},
+                         get_collision_seconds = {ds_collision_seconds};
+static const count_getter get_steps = {ds_steps}, get_n = {count_of},
+                          get_collision_count = {ds_collision_count},
+                          get_wall_count = {ds_wall_count}, get_pairs_tested = {ds_pairs_tested};
+
+static PyObject *real_property(dspy_sim *self, void *closure)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    return sim ? PyFloat_FromDouble(((const real_getter *)closure)->get(sim)) : NULL;
+}
+
+static PyObject *count_property(dspy_sim *self, void *closure)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    return sim ? PyLong_FromUnsignedLongLong(((const count_getter *)closure)->get(sim)) : NULL;
+}
+
+static PyObject *name_property(dspy_sim *self, void *closure)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    const dspy_kind kind = (dspy_kind)(*(const int *)closure);
+    int value = 0;
+    switch (kind) {
+    case DSPY_INTEGRATOR:
+        value = (int)ds_integrator_used(sim);
+        break;
+    case DSPY_BOUNDARY:
+        value = (int)ds_boundary_used(sim);
+        break;
+    case DSPY_BROADPHASE:
+        value = (int)ds_broadphase_used(sim);
+        break;
+    case DSPY_PLACEMENT:
+        if (dspy_param_unknown(self->unknown, "placement"))
+            Py_RETURN_NONE; /* a loaded checkpoint does not say */
+        value = (int)self->params.placement;
+        break;
+    case DSPY_KINDS:
+        break;
+    }
+    const char *name = dspy_name_of(kind, value);
+    return PyUnicode_FromString(name ? name : "unknown");
+}
+static const int integrator_kind = DSPY_INTEGRATOR, boundary_kind = DSPY_BOUNDARY,
+                 broadphase_kind = DSPY_BROADPHASE, placement_kind = DSPY_PLACEMENT;
+
+static PyObject *momentum_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    double px, py;
+    ds_momentum(sim, &px, &py);
+    return Py_BuildValue("(dd)", px, py);
+}
+
+static PyObject *params_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return dspy_sim_of(self) ? dspy_params_dict(&self->params, self->unknown) : NULL;
+}
+
+static PyObject *closed_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return PyBool_FromLong(!self->sim && !self->busy);
+}
+
+static PyObject *running_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return PyBool_FromLong(self->busy);
+}
+
+#define REAL(name, doc)                                                                            \
+    {                                                                                              \
+#name, (getter)real_property, NULL, doc, (void *)&get_##name                               \
+    }
+#define COUNT(name, doc)                                                                           \
+    {                                                                                              \
+#name, (getter)count_property, NULL, doc, (void *)&get_##name                              \
+    }
+#define NAME(name, doc)                                                                            \
+    {                                                                                              \
+#name, (getter)name_property, NULL, doc, (void *)&name##_kind                              \
+    }
+
+PyGetSetDef dspy_sim_getset[] = {
+    COUNT(n, "Number of disks."),
+    REAL(radius, "Disk radius."),
+    REAL(box, "Width of the box."),
+    REAL(box_y, "Height of the box (box when square)."),
+    REAL(dt, "The time step: the simulated time one step() advances."),
+    NAME(integrator, "The integrator: 'step' or 'event'."),
+    NAME(boundary, "The boundary: 'walls' or 'periodic'."),
+    NAME(placement, "How the disks were placed: 'random' or 'lattice' (None for a Sim from\n"
+                    "load(), whose checkpoint does not say)."),
+    NAME(broadphase, "The broad phase in use, never 'auto' ('sap', 'strips', 'brute', 'cells')."),
+    REAL(time, "Simulated time: steps * dt (a product, so it carries no rounding drift)."),
+    COUNT(steps, "Steps taken since creation."),
+    {"positions", (getter)dspy_positions_property, NULL,
+     "The centres as a new (n, 2) float64 array, row i disk i (generation order):\n"
+     "a copy, made at each read; changing it changes nothing (see set_state).",
+     NULL},
+    {"velocities", (getter)dspy_velocities_property, NULL,
+     "The velocities as a new (n, 2) float64 array, row i disk i: a copy, as\n"
+     "positions.",
+     NULL},
+    REAL(kinetic_energy, "Kinetic energy, the sum of v^2 / 2 (unit masses)."),
+    {"momentum", (getter)momentum_property, NULL,
+     "Total momentum (px, py). Pairs conserve it; walls do not.", NULL},
+    REAL(pressure, "Wall pressure: the wall impulse per unit time per unit length of wall the\n"
+                   "centres reach (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the\n"
+                   "last reset; 0 before any step. A force per length: the ideal gas has\n"
+                   "P A = N <v^2> / 2. A periodic box has no walls: there it is virial_pressure."),
+    REAL(virial_pressure,
+         "Pressure from the collision virial, averaged since the last reset, 0 before\n"
+         "any step: P A = E + (1 / (2 t)) sum over collisions of r_ij . dp_i, with E the\n"
+         "kinetic energy (N kT = E in 2D) and A the area the centres reach, (box - 2R)\n"
+         "(box_y - 2R) with walls, box box_y in a periodic box. The compressibility\n"
+         "factor is Z = virial_pressure * A / kinetic_energy. With the time step the\n"
+         "collisions happen a little inside 2R, which biases it low."),
+    REAL(psi6, "Global bond-orientational order |(1/N) sum_j psi6_j| of the disks now, with\n"
+               "cutoff 1.4 d (d = 2R): near 1 for a crystal of one orientation, O(1/sqrt N)\n"
+               "for a liquid. Computed when read, O(N). NaN for a periodic box narrower than\n"
+               "2.8 d. Per disk: local_psi6()."),
+    COUNT(collision_count,
+          "Disk-disk collisions resolved since creation (reset_observables keeps it)."),
+    COUNT(wall_count, "Wall reflections since the last reset."),
+    REAL(wall_impulse, "Momentum handed to the walls since the last reset: the sum of 2 |v_n|."),
+    COUNT(pairs_tested, "Narrow-phase distance tests since creation."),
+    REAL(collision_seconds,
+         "Wall-clock seconds spent on collisions, summed over all steps: with 'step',\n"
+         "sorting, pruning, testing and resolving pairs; with 'event', processing\n"
+         "events (collisions, wall turns, cell crossings) and their predictions."),
+    {"params", (getter)params_property, NULL,
+     "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
+     "same simulation at time 0. A Sim from load() has those the library tells: no\n"
+     "seed, speed or placement.",
+     NULL},
+    {"closed", (getter)closed_property, NULL, "Whether close() has freed this Sim.", NULL},
+    {"running", (getter)running_property, NULL,
+     "Whether a thread is inside this Sim's run() (or step(), set_state(),\n"
+     "write_frame()) now. Never raises.",
+     NULL},
+    {NULL, NULL, NULL, NULL, NULL},
+};

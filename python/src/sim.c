@@ -1,0 +1,363 @@
+/* SPDX-License-Identifier: MIT */
+/* The Sim type: one ds_sim, created from keyword arguments, advanced with
+ * the GIL released. Its properties are in properties.c, its arrays and
+ * set_state in state.c, frames in frames.c, analysis in analysis.c, ASE in
+ * ase.c. */
+
+#include "disksim_py.h" /* first: Python.h sets the feature macros */
+
+#include <string.h>
+
+/* run() gives the GIL back between chunks of steps, to take Ctrl-C
+ * (KeyboardInterrupt) and signals: chunks double from one step while
+ * they last less than this, so the check costs nothing measurable. */
+#define CHUNK_SECONDS 0.1
+
+ds_sim *dspy_sim_of(dspy_sim *self)
+{
+    if (self->busy) {
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread (a Sim is used by one "
+                                    "thread at a time; give each thread its own)");
+        return NULL;
+    }
+    if (!self->sim) {
+        PyErr_SetString(dspy_Error, "this Sim is closed");
+        return NULL;
+    }
+    return self->sim;
+}
+
+/* ---------------------------------------------------------------- life */
+
+static const char sim_doc[] = DSPY_SIM_SIGNATURE
+    "\n--\n\n"
+    "N hard disks of one radius in a box: elastic billiards, through libdisksim.\n"
+    "\n"
+    "Sim(400, 5.0) is the command's `disks 400 5`: 400 disks of radius 5 placed at\n"
+    "random in the box [0, 1000]^2 with walls, every disk at speed 100 in a random\n"
+    "direction, advanced by the fixed time step dt = 0.001. Lengths are in box\n"
+    "units, time in simulated seconds, masses are 1.\n"
+    "\n"
+    "n           number of disks, >= 1.\n"
+    "radius      disk radius: below half the box's shorter side with walls, below a\n"
+    "            quarter of it in a periodic box.\n"
+    "seed        seed of the placement and of the initial directions, 0 .. 2**64-1;\n"
+    "            the same arguments give the same simulation, to the bit.\n"
+    "integrator  'step': the fixed time step (move by v dt, reflect at the walls,\n"
+    "            swap the normal velocities of overlapping, approaching pairs; fast,\n"
+    "            collisions seen up to one step late). 'event': exact event-driven\n"
+    "            dynamics, every collision at its own time at distance exactly 2R;\n"
+    "            step() still advances by exactly dt.\n"
+    "boundary    'walls' (a centre turns at R from each wall) or 'periodic' (a disk\n"
+    "            leaving at one edge comes back at the other, pairs interact through\n"
+    "            the nearest image, positions stay in [0, box) x [0, box_y)).\n"
+    "placement   'random' (random sequential, up to area fraction 0.54) or\n"
+    "            'lattice' (a triangular lattice, up to close packing 0.9069; in a\n"
+    "            periodic box the total momentum is made zero).\n"
+    "box         width of the box, > 0 and <= 1e9.\n"
+    "box_y       height of the box; None for a square box (box_y = box).\n"
+    "dt          the time step, > 0 and <= 1: the time step() advances.\n"
+    "speed       the initial speed of every disk, > 0 and <= 1e9.\n"
+    "broadphase  how candidate pairs are found, all giving the same pairs: 'auto'\n"
+    "            (the fastest for the integrator), or for 'step' 'sap', 'strips',\n"
+    "            'brute'; for 'event' 'cells', 'brute'.\n"
+    "\n"
+    "Raises ArgumentError (a ValueError) with the library's sentence for a value it\n"
+    "refuses (e.field names the argument), NoMemoryError for more disks than this\n"
+    "machine's memory holds, TypeError for an argument of the wrong type. A request\n"
+    "that runs with degraded physics (a time step so long that head-on pairs can\n"
+    "pass through each other) gives a RuntimeWarning saying so.\n"
+    "\n"
+    "Threads: run() releases the GIL, so threads with one Sim each run in parallel\n"
+    "on as many cores. A Sim is used by one thread at a time: any use of it while\n"
+    "another thread is inside its run() raises Error. The arrays returned are\n"
+    "copies: changing them changes nothing until set_state().\n"
+    "\n"
+    "A Sim is a context manager: `with Sim(...) as s:` frees its memory at the end\n"
+    "of the block, as close() does; afterwards every use raises Error.";
+
+static PyObject *sim_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    (void)args;
+    (void)kwargs;
+    dspy_sim *self = (dspy_sim *)type->tp_alloc(type, 0);
+    if (self) {
+        self->sim = NULL;
+        self->busy = 0;
+        self->unknown = 0;
+        memset(&self->params, 0, sizeof self->params);
+    }
+    return (PyObject *)self;
+}
+
+static int sim_init(dspy_sim *self, PyObject *args, PyObject *kwargs)
+{
+    if (self->busy) {
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        return -1;
+    }
+    ds_params p;
+    char warning[256] = "";
+    if (dspy_params_from_args(args, kwargs, &p, warning) < 0)
+        return -1;
+    size_t bytes = 0;
+    const ds_status need = ds_memory_needed(&p, &bytes);
+    if (need != DS_OK) {
+        dspy_raisef(need, "n", "n = %zu disks: %s", p.n, ds_status_str(need));
+        return -1;
+    }
+    char what[64];
+    PyOS_snprintf(what, sizeof what, "n = %zu disks", p.n);
+    if (dspy_check_memory((double)bytes, what) < 0)
+        return -1;
+    if (warning[0] && PyErr_WarnEx(PyExc_RuntimeWarning, warning, 1) < 0)
+        return -1; /* warnings turned into errors */
+    ds_sim *sim = NULL;
+    ds_status st;
+    self->busy = 1;
+    Py_BEGIN_ALLOW_THREADS
+    st = ds_create(&p, &sim);
+    Py_END_ALLOW_THREADS
+    self->busy = 0;
+    if (st != DS_OK) {
+        if (st == DS_ERR_PLACEMENT)
+            dspy_raisef(st, "n",
+                        "n = %zu disks of radius %g could not be placed: a disk found no free "
+                        "place in 2 million random draws (placement='lattice' fits more)",
+                        p.n, p.radius);
+        else
+            dspy_raisef(st, NULL, "n = %zu disks: %s", p.n, ds_status_str(st));
+        return -1;
+    }
+    return dspy_sim_adopt(self, sim, &p, 0);
+}
+
+int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown)
+{
+    if (self->busy) {
+        ds_destroy(sim);
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        return -1;
+    }
+    ds_params p;
+    if (params)
+        p = *params;
+    else
+        unknown = dspy_params_of_sim(sim, &p);
+    ds_destroy(self->sim); /* __init__ called again: the new one replaces it */
+    self->sim = sim;
+    self->params = p;
+    self->unknown = unknown;
+    return 0;
+}
+
+static void sim_dealloc(dspy_sim *self)
+{
+    ds_destroy(self->sim);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyObject *sim_close(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    if (self->busy) {
+        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        return NULL;
+    }
+    ds_destroy(self->sim);
+    self->sim = NULL;
+    Py_RETURN_NONE;
+}
+
+static PyObject *sim_enter(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    if (!dspy_sim_of(self))
+        return NULL;
+    return Py_NewRef((PyObject *)self);
+}
+
+static PyObject *sim_exit(dspy_sim *self, PyObject *args)
+{
+    (void)args;
+    PyObject *r = sim_close(self, NULL);
+    Py_XDECREF(r);
+    if (!r)
+        return NULL;
+    Py_RETURN_FALSE;
+}
+
+static PyObject *sim_repr(dspy_sim *self)
+{
+    PyObject *args =
+        self->sim || self->busy ? dspy_params_repr(&self->params, self->unknown) : NULL;
+    if (!self->sim && !self->busy)
+        return PyUnicode_FromString("<disksim.Sim, closed>");
+    if (!args)
+        return NULL;
+    if (self->busy) {
+        PyObject *r = PyUnicode_FromFormat("<disksim.%U, running>", args);
+        Py_DECREF(args);
+        return r;
+    }
+    char *time = PyOS_double_to_string(ds_time(self->sim), 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+    PyObject *r = time ? PyUnicode_FromFormat("<disksim.%U at t = %s after %llu steps>", args, time,
+                                              (unsigned long long)ds_steps(self->sim))
+                       : PyErr_NoMemory();
+    PyMem_Free(time);
+    Py_DECREF(args);
+    return r;
+}
+
+/* ---------------------------------------------------------------- running */
+
+/* steps whole steps, in chunks with the GIL released, taking signals
+ * between them; on KeyboardInterrupt the steps done stay done. */
+static int advance(dspy_sim *self, ds_sim *sim, uint64_t steps)
+{
+    uint64_t chunk = 1;
+    self->busy = 1;
+    while (steps > 0) {
+        const uint64_t k = chunk < steps ? chunk : steps;
+        double seconds;
+        Py_BEGIN_ALLOW_THREADS
+        const double t0 = ds_now();
+        ds_run(sim, k);
+        seconds = ds_now() - t0;
+        Py_END_ALLOW_THREADS
+        steps -= k;
+        if (steps && PyErr_CheckSignals() < 0) {
+            self->busy = 0;
+            return -1;
+        }
+        if (seconds < CHUNK_SECONDS / 2 && chunk < (UINT64_MAX >> 1))
+            chunk *= 2;
+        else if (seconds > 2 * CHUNK_SECONDS && chunk > 1)
+            chunk /= 2;
+    }
+    self->busy = 0;
+    return 0;
+}
+
+static PyObject *sim_run(dspy_sim *self, PyObject *args, PyObject *kwargs)
+{
+    static char *keywords[] = {"steps", NULL};
+    PyObject *steps_obj;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O:run", keywords, &steps_obj))
+        return NULL;
+    uint64_t steps;
+    if (dspy_uint64_arg(steps_obj, "steps", 0, &steps) < 0)
+        return NULL;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim || advance(self, sim, steps) < 0)
+        return NULL;
+    Py_RETURN_NONE;
+}
+
+static PyObject *sim_step(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim || advance(self, sim, 1) < 0)
+        return NULL;
+    Py_RETURN_NONE;
+}
+
+static PyObject *sim_reset_observables(dspy_sim *self, PyObject *unused)
+{
+    (void)unused;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    ds_reset_observables(sim);
+    Py_RETURN_NONE;
+}
+
+/* ---------------------------------------------------------------- methods */
+
+static PyMethodDef sim_methods[] = {
+    {"step", (PyCFunction)sim_step, METH_NOARGS,
+     "step($self, /)\n--\n\n"
+     "Advance simulated time by exactly dt. 'step': move by v dt, reflect at the\n"
+     "walls, resolve overlapping pairs. 'event': process every collision and wall\n"
+     "event inside the interval in time order, then show every disk at the new time.\n"
+     "Releases the GIL."},
+    {"run", (PyCFunction)(void (*)(void))sim_run, METH_VARARGS | METH_KEYWORDS,
+     "run($self, /, steps)\n--\n\n"
+     "Advance by steps steps (an int >= 0; 0 does nothing): the same, to the bit, as\n"
+     "calling step() that many times. Releases the GIL, so threads with one Sim each\n"
+     "run in parallel; Ctrl-C (KeyboardInterrupt) stops it between steps, keeping\n"
+     "the steps done."},
+    {"reset_observables", (PyCFunction)sim_reset_observables, METH_NOARGS,
+     "reset_observables($self, /)\n--\n\n"
+     "Zero the wall impulse, wall count, collision virial and pressure clock (not\n"
+     "the collision count or time), so that a relaxation period can be discarded\n"
+     "from pressure and virial_pressure."},
+    {"set_state", (PyCFunction)(void (*)(void))dspy_sim_set_state, METH_VARARGS | METH_KEYWORDS,
+     "set_state($self, /, positions, velocities=None)\n--\n\n"
+     "Replace every disk at once: positions and velocities are (n, 2) arrays (or\n"
+     "anything numpy reads as one), row i becoming disk i; velocities=None keeps the\n"
+     "present ones. The whole state is checked before anything changes (ds_set_all):\n"
+     "ArgumentError if a value is not finite, a velocity component exceeds 1e12, a\n"
+     "centre is outside the box ([R, box - R] x [R, box_y - R] with walls,\n"
+     "[0, box) x [0, box_y) periodic) or two disks overlap (status DS_ERR_OVERLAP),\n"
+     "with the library's sentence naming the disks. The integrator then starts\n"
+     "afresh from the new state; time, steps and the observables go on.\n"
+     "The arrays are copied: changing them afterwards changes nothing."},
+    {"write_frame", (PyCFunction)(void (*)(void))dspy_sim_write_frame, METH_VARARGS | METH_KEYWORDS,
+     "write_frame($self, /, path, velocities=False)\n--\n\n"
+     "Write the disks to the text file path as the command's frames are written:\n"
+     "one line 'x y R' per disk in generation order (with velocities=True,\n"
+     "'x y R vx vy'), x, y, vx, vy with 6 decimals, R in the shortest form that\n"
+     "reads back exactly. read_frame() reads it back. FileError if it cannot be\n"
+     "written."},
+    {"pair_histogram", (PyCFunction)(void (*)(void))dspy_sim_pair_histogram,
+     METH_VARARGS | METH_KEYWORDS,
+     "pair_histogram($self, /, dr, bins)\n--\n\n"
+     "disksim.pair_histogram() of this Sim's disks in its box and boundary: the\n"
+     "number of pairs at each distance, in bins of width dr, for g(r)."},
+    {"local_psi6", (PyCFunction)(void (*)(void))dspy_sim_local_psi6, METH_VARARGS | METH_KEYWORDS,
+     "local_psi6($self, /, cutoff=None)\n--\n\n"
+     "disksim.local_psi6() of this Sim's disks in its box and boundary: psi6 of\n"
+     "each disk as a complex array. cutoff=None is psi6's, 1.4 d (d = 2R)."},
+    {"save", (PyCFunction)(void (*)(void))dspy_sim_save, METH_VARARGS | METH_KEYWORDS,
+     "save($self, /, path)\n--\n\n"
+     "Write an exact checkpoint of the simulation to path (ds_save_state): the\n"
+     "parameters, time and step count, every disk to the bit, the observables'\n"
+     "accumulators and the integrator's own state. disksim.load(path) gives a Sim\n"
+     "that goes on bit for bit as this one would have. The format is the library's,\n"
+     "portable between machines. FileError if it cannot be written. Pickling and\n"
+     "copy.copy() use the same checkpoint, in memory."},
+    {"__reduce__", (PyCFunction)dspy_sim_reduce, METH_NOARGS,
+     "__reduce__($self, /)\n--\n\n"
+     "For pickle and copy: the exact checkpoint (ds_format_state) and the arguments.\n"
+     "The copy is a new, independent simulation that goes on bit for bit as this one."},
+    {"to_ase", (PyCFunction)dspy_sim_to_ase, METH_NOARGS,
+     "to_ase($self, /)\n--\n\n"
+     "The disks as an ase.Atoms, as ASE reads the library's extended XYZ frames:\n"
+     "positions with z = 0, the cell box x box_y x 2R, pbc (True, True, False) in a\n"
+     "periodic box, else all False, arrays 'radius' (n,) and 'velo' (n, 3), info\n"
+     "'Time'; dummy atoms 'X' (atomic number 0, mass 1). ImportError without ASE\n"
+     "(Debian: python3-ase)."},
+    {"close", (PyCFunction)sim_close, METH_NOARGS,
+     "close($self, /)\n--\n\n"
+     "Free the simulation's memory now; afterwards every use raises Error. Calling\n"
+     "it again does nothing."},
+    {"__enter__", (PyCFunction)sim_enter, METH_NOARGS, "__enter__($self, /)\n--\n\nReturn self."},
+    {"__exit__", (PyCFunction)sim_exit, METH_VARARGS,
+     "__exit__($self, *exc_info, /)\n--\n\nclose(), and let any exception through."},
+    {NULL, NULL, 0, NULL},
+};
+
+PyTypeObject dspy_SimType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "disksim.Sim",
+    .tp_basicsize = sizeof(dspy_sim),
+    .tp_dealloc = (destructor)sim_dealloc,
+    .tp_repr = (reprfunc)sim_repr,
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE,
+    .tp_doc = sim_doc,
+    .tp_methods = sim_methods,
+    .tp_getset = dspy_sim_getset,
+    .tp_init = (initproc)sim_init,
+    .tp_new = sim_new,
+};

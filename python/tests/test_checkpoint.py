@@ -1,0 +1,114 @@
+# SPDX-License-Identifier: MIT
+"""Exact checkpoints from Python: Sim.save and disksim.load, pickle and copy,
+all through the library's ds_save_state / ds_parse_state. A Sim made from a
+checkpoint goes on bit for bit as the saved one would have."""
+import copy
+import os
+import pickle
+
+import numpy as np
+import pytest
+
+import disksim
+
+
+def same(a, b):
+    return (np.array_equal(a.positions, b.positions) and np.array_equal(a.velocities, b.velocities)
+            and a.steps == b.steps and a.collision_count == b.collision_count
+            and a.wall_count == b.wall_count and a.virial_pressure == b.virial_pressure
+            and a.pressure == b.pressure and a.pairs_tested == b.pairs_tested)
+
+
+KINDS = [dict(integrator=i, boundary=b) for i in ("step", "event") for b in ("walls", "periodic")]
+
+
+@pytest.mark.parametrize("kind", KINDS, ids=lambda k: "%(integrator)s-%(boundary)s" % k)
+def test_a_loaded_sim_goes_on_bit_for_bit(tmp_path, kind):
+    s = disksim.Sim(500, 6, seed=11, **kind)
+    s.run(300)
+    s.reset_observables()
+    s.run(200)  # accumulators mid-way, so they are part of the checkpoint
+    s.save(tmp_path / "s.ckpt")
+    t = disksim.load(str(tmp_path / "s.ckpt"))
+    assert same(s, t)
+    s.run(1000)
+    t.run(1000)
+    assert same(s, t)
+
+
+def test_what_a_loaded_sim_knows_of_its_arguments(tmp_path):
+    s = disksim.Sim(100, 4, seed=9, speed=50.0, placement="lattice", box_y=900.0,
+                    integrator="event")
+    s.save(tmp_path / "s.ckpt")
+    t = disksim.load(tmp_path / "s.ckpt")
+    assert t.params == {"n": 100, "radius": 4.0, "integrator": "event", "boundary": "walls",
+                        "box": 1000.0, "box_y": 900.0, "dt": 0.001, "broadphase": s.broadphase}
+    assert t.placement is None and s.placement == "lattice"
+    assert "seed" not in repr(t) and "integrator='event'" in repr(t)
+
+
+@pytest.mark.parametrize("how", [copy.copy, copy.deepcopy,
+                                 lambda s: pickle.loads(pickle.dumps(s))])
+def test_a_copy_or_a_pickle_is_an_independent_sim_that_goes_on_bit_for_bit(how):
+    s = disksim.Sim(300, 6, integrator="event", boundary="periodic", seed=5)
+    s.run(250)
+    c = how(s)
+    assert c is not s and same(s, c) and c.params == s.params
+    c.run(700)
+    assert c.steps == 950 and s.steps == 250  # running one leaves the other
+    s.run(700)
+    assert same(s, c)
+
+
+class Labelled(disksim.Sim):
+    """A subclass with an attribute of its own, defined here so pickle finds it."""
+
+
+def test_a_subclass_pickles_as_itself_with_its_attributes():
+    s = Labelled(50, 3)
+    s.label = "run 7"
+    t = pickle.loads(pickle.dumps(s))
+    assert type(t) is Labelled and t.label == "run 7" and same(s, t)
+
+
+def test_a_damaged_checkpoint_is_a_format_error_never_a_crash(tmp_path):
+    s = disksim.Sim(40, 5, integrator="event")
+    s.run(50)
+    s.save(tmp_path / "s.ckpt")
+    data = (tmp_path / "s.ckpt").read_bytes()
+    restore, (cls, checkpoint, params), _ = s.__reduce__()
+    assert checkpoint == data  # the pickle carries the file's bytes
+    for where in [0, 8, 20, len(data) // 2, len(data) - 1]:
+        damaged = bytearray(data)
+        damaged[where] ^= 0x5A
+        (tmp_path / "bad.ckpt").write_bytes(bytes(damaged))
+        with pytest.raises(disksim.FormatError):
+            disksim.load(tmp_path / "bad.ckpt")
+        with pytest.raises(disksim.FormatError):
+            restore(cls, bytes(damaged), params)
+    for length in [0, 7, 40, len(data) - 1]:
+        (tmp_path / "short.ckpt").write_bytes(data[:length])
+        with pytest.raises(disksim.FormatError) as info:
+            disksim.load(tmp_path / "short.ckpt")
+        assert str(tmp_path / "short.ckpt") in str(info.value)
+    s.write_frame(tmp_path / "frame.txt")
+    with pytest.raises(disksim.FormatError):
+        disksim.load(tmp_path / "frame.txt")  # a frame is no checkpoint
+    with pytest.raises(TypeError):
+        restore(int, data, params)
+    with pytest.raises(disksim.ArgumentError):
+        restore(cls, data, dict(params, n=41))
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full")
+def test_a_checkpoint_that_cannot_be_written_is_a_file_error():
+    with pytest.raises(disksim.FileError):
+        disksim.Sim(10, 1).save("/dev/full")
+
+
+def test_a_checkpoint_is_read_from_a_regular_file_only():
+    # ds_load_state reads to the end of the file, which /dev/zero never has
+    with pytest.raises(disksim.FileError, match="not a regular file"):
+        disksim.load("/dev/zero")
+    with pytest.raises(disksim.FileError, match="not a regular file"):
+        disksim.load("/")

@@ -1,0 +1,90 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# One point of the equation-of-state sweep (tools/analysis/eos.sh runs
+# them N at a time, tools/analysis/eos.sbatch one per Slurm array task):
+# point INDEX of the sweep for N disks, run with tools/pressure, its row
+# written to DIR/point_INDEX.dat (complete or not at all) and printed.
+#
+#   sh tools/analysis/eos_point.sh INDEX DIR [N] [RELAX] [BLOCKS] [BLOCK]
+#   sh tools/analysis/eos_point.sh --count          (prints how many points)
+#   sh tools/analysis/eos_point.sh --list [N] [RELAX] [BLOCKS] [BLOCK]
+#                                                   (prints what each would run)
+#
+# The points (defaults N 16384, RELAX 50, BLOCKS 15, BLOCK 10):
+#    0- 2  area fraction 0.1, 0.3, 0.5: relaxation 10, 20 blocks of 1
+#    3-14  0.60 0.65 0.67 0.68 0.69 0.70 0.705 0.71 0.716 0.72 0.73 0.75:
+#          RELAX, BLOCKS blocks of BLOCK
+#   15     0.70 at N/4: relaxation 2 RELAX, 20 blocks of BLOCK
+#   16     0.70 at 4 N: relaxation RELAX, 8 blocks of BLOCK/2
+# 0-14 make eos.dat; 15, the 0.70 row of eos.dat and 16 make eos_size.dat
+# (tools/analysis/eos_gather.sh). Every point is event-driven, in a
+# periodic box of aspect sqrt(3)/2 started on the lattice that fits it.
+#
+# On failure it says which point failed and why (tools/pressure's words),
+# on stderr, and exits 1; DIR/point_INDEX.dat is then absent.
+set -eu
+top=$(cd "$(dirname "$0")/../.." && pwd)
+pressure=${PRESSURE:-$top/tools/pressure}
+height=866.0254037844386 # 1000 sqrt(3) / 2
+count=17
+high="0.60 0.65 0.67 0.68 0.69 0.70 0.705 0.71 0.716 0.72 0.73 0.75"
+
+if [ "${1:-}" = --count ]; then
+    echo "$count"
+    exit 0
+fi
+
+# The arguments of point $1: "N ETA RELAX BLOCKS BLOCK". Arithmetic in awk,
+# so RELAX and BLOCK may be fractions (half a block of 1 is 0.5, not 0).
+point() { # INDEX N RELAX BLOCKS BLOCK
+    awk -v k="$1" -v n="$2" -v relax="$3" -v blocks="$4" -v block="$5" -v high="$high" 'BEGIN {
+        split("0.1 0.3 0.5", low, " "); split(high, hi, " ")
+        if (k >= 0 && k <= 2) print n, low[k + 1], 10, 20, 1
+        else if (k >= 3 && k <= 14) print n, hi[k - 2], relax, blocks, block
+        else if (k == 15) print int(n / 4), 0.70, 2 * relax, 20, block
+        else if (k == 16) print 4 * n, 0.70, relax, 8, block / 2
+    }'
+}
+
+if [ "${1:-}" = --list ]; then
+    shift
+    k=0
+    while [ "$k" -lt "$count" ]; do
+        echo "$k $(point "$k" "${1:-16384}" "${2:-50}" "${3:-15}" "${4:-10}")"
+        k=$((k + 1))
+    done
+    exit 0
+fi
+
+if [ $# -lt 2 ]; then
+    echo "usage: sh tools/analysis/eos_point.sh INDEX DIR [N] [RELAX] [BLOCKS] [BLOCK]" >&2
+    exit 2
+fi
+index=$1
+dir=$2
+case $index in
+'' | *[!0-9]*) index=-1 ;;
+esac
+if [ "$index" -lt 0 ] || [ "$index" -ge "$count" ]; then
+    echo "eos_point: INDEX must be 0 to $((count - 1)), got '$1'" >&2
+    exit 2
+fi
+# shellcheck disable=SC2046 # the point's five words become $1 .. $5
+set -- $(point "$index" "${3:-16384}" "${4:-50}" "${5:-15}" "${6:-10}")
+what="point $index (N = $1, area fraction $2, relaxation $3, $4 blocks of $5)"
+if [ ! -x "$pressure" ]; then
+    echo "eos_point: $what: $pressure is not built (run make)" >&2
+    exit 1
+fi
+mkdir -p "$dir"
+out="$dir/point_$index.dat"
+rm -f "$out"
+if ! "$pressure" "$1" "$2" --periodic --lattice --box-y "$height" --relax "$3" --blocks "$4" \
+    --block "$5" >"$out.tmp" 2>"$out.err"; then
+    echo "eos_point: $what failed: $(cat "$out.err")" >&2
+    rm -f "$out.tmp"
+    exit 1
+fi
+mv "$out.tmp" "$out"
+rm -f "$out.err"
+cat "$out"
