@@ -304,13 +304,14 @@ double ds_area_fraction(const ds_sim *sim);
  * Past Z = 10^4 the growth slows as 10^4 / Z, so the disks can rearrange
  * near jamming (docs/physics.md). A collision reflects the pair's normal
  * velocity in the frame of their receding surfaces, which adds energy:
- * at the end of each window every velocity is scaled back to the kinetic
- * energy of the call. The masses stay. ds_set_all stops growth; so does a
+ * at the end of each window, and when the growth stops, every velocity is
+ * scaled back to the kinetic energy of the call. The masses stay. ds_set_all stops growth; so does a
  * call with other targets, which starts again from now. DS_ERR_ARG for a
  * rate < 0 or not finite, until_eta not 0 and not between the area
- * fraction of now and 1, until_z not 0 and not in (1, 1e9]. The step in which growth stops at Z is
- * finished without it: near jamming that step has many collisions (about 4 (Z - 1) sqrt(kT / (pi
- * m)) / sigma per disk per unit time). */
+ * fraction of now and 1, until_z not 0 and not in (1, 1e9]. The step in
+ * which growth stops at Z is finished without it: near jamming that step
+ * has many collisions (about 4 (Z - 1) sqrt(kT / (pi m)) / sigma per disk
+ * per unit time). */
 #define DS_JAMMED_Z 1e6
 ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
 
@@ -321,6 +322,10 @@ typedef enum ds_growth_state {
     DS_GROWTH_JAMMED       /* stopped when Z passed until_z */
 } ds_growth_state;
 ds_growth_state ds_growth_state_of(const ds_sim *sim);
+/* The reduced pressure Z growth measured over its last window of 2 n
+ * collisions (when it jammed, the window that stopped it); 0 before its
+ * first window, and for a simulation that never grew. */
+double ds_growth_z(const ds_sim *sim);
 
 /* Every velocity times factor (> 0, finite; DS_ERR_ARG otherwise), at
  * ds_time: a thermostat's step, or a compression taking out its heat. */

@@ -107,8 +107,9 @@ struct ds_integrator_ops {
     ds_status (*set_growth)(ds_sim *sim, double rate, double until_eta, double until_z);
     /* Every velocity times factor (> 0), at the present time. */
     ds_status (*scale_velocities)(ds_sim *sim, double factor);
-    /* Where growth stands (a ds_growth_state), or NULL: DS_GROWTH_NONE. */
-    int (*growth_state)(const ds_sim *sim);
+    /* Where growth stands (a ds_growth_state) and the Z of its last
+     * window, or NULL: DS_GROWTH_NONE. */
+    int (*growth_state)(const ds_sim *sim, double *z);
 };
 
 /* Fills err (if not NULL) with a printf-style sentence; returns status. */

@@ -64,6 +64,7 @@ void ds_ed_save(const ds_sim *sim, ds_writer *w)
     ds_put_f64(w, g->window_start);
     ds_put_f64(w, g->window_virial);
     ds_put_u32(w, (uint32_t)g->stopped);
+    ds_put_f64(w, g->last_z);
     for (size_t k = 0; k < n; ++k)
         ds_put_f64(w, g->base[k]);
 }
@@ -94,6 +95,7 @@ static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r
     g->window_start = ds_get_f64(r);
     g->window_virial = ds_get_f64(r);
     g->stopped = (int)ds_get_u32(r);
+    g->last_z = ds_get_f64(r);
     if (r->failed || !(g->rate >= 0.0 && g->rate < 1e300) ||
         !(g->asked >= g->rate && g->asked < 1e300) || !(g->scale >= 1.0 && g->scale < 1e300) ||
         !(g->until_eta >= 0.0 && g->until_eta < 1.0) || !(g->from <= now) || !isfinite(g->from) ||
@@ -101,6 +103,7 @@ static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r
         !(g->kinetic_target > 0.0 && isfinite(g->kinetic_target)) ||
         !isfinite(g->momentum_energy) || !isfinite(g->window_start) ||
         !isfinite(g->window_virial) || g->stopped < 0 || g->stopped > 2 ||
+        !(g->last_z == 0.0 || (g->last_z >= 1.0 && isfinite(g->last_z))) ||
         !(1.0 + g->rate * (now - g->from) > 0.0))
         return ds_state_refuse(err, DS_ERR_FORMAT, "the growth's clock or targets are not a run's");
     if (!(g->base = malloc(n * sizeof *g->base)))

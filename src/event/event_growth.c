@@ -120,17 +120,34 @@ static double window_z(const ds_sim *sim, const ds_growth *g, double t)
                : 1.0;
 }
 
+/* The heat growth added, out: every velocity scaled at once back to the
+ * kinetic energy growth started with (which keeps a zero momentum zero);
+ * the caller predicts every disk again. */
+static void heat_out(ds_events *e, size_t n, ds_growth *g, double t)
+{
+    const double factor = g->kinetic > 0.0 ? sqrt(g->kinetic_target / g->kinetic) : 1.0;
+    for (size_t k = 0; k < n; ++k) {
+        ds_ed_advance(&e->disk[k], t);
+        e->disk[k].vx *= factor;
+        e->disk[k].vy *= factor;
+    }
+    g->kinetic *= factor * factor;
+    g->momentum_energy *= factor * factor;
+}
+
 int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
 {
     ds_growth *g = &e->growth;
     const size_t n = sim->world.n;
     if (t >= g->stop_time) { /* the target area fraction, at its own time */
         g->stopped = 1;
+        heat_out(e, n, g, g->stop_time);
         ds_ed_restart_at(e, n, g->stop_time, 0.0);
         return 1;
     }
     if (g->window >= 2 * n) {
         const double z = window_z(sim, g, t);
+        g->last_z = z;
         const int jammed = z >= g->until_z;
         g->stopped = jammed ? 2 : 0;
         /* Slower as the pressure rises, rate ~ 1 / Z past Z = 10^4: a
@@ -143,16 +160,7 @@ int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
          * disks (past 10^3: the same in 195 s; past 100: 8 minutes). Donev,
          * Torquato and Stillinger 2005 slow down likewise. */
         const double rate = z > GROWTH_SLOWS_AT_Z ? g->asked * GROWTH_SLOWS_AT_Z / z : g->asked;
-        /* The window's heat out: every velocity scaled at once (which
-         * keeps a zero momentum zero), every disk predicted again. */
-        const double factor = g->kinetic > 0.0 ? sqrt(g->kinetic_target / g->kinetic) : 1.0;
-        for (size_t k = 0; k < n; ++k) {
-            ds_ed_advance(&e->disk[k], t);
-            e->disk[k].vx *= factor;
-            e->disk[k].vy *= factor;
-        }
-        g->kinetic *= factor * factor;
-        g->momentum_energy *= factor * factor;
+        heat_out(e, n, g, t);
         g->window = 0;
         g->window_start = t;
         g->window_virial = sim->tally.virial;
@@ -203,6 +211,7 @@ static ds_status install(ds_sim *sim, ds_events *e, double now, double asked, do
     g->until_eta = until_eta;
     g->until_z = until_z;
     g->stopped = 0;
+    g->last_z = 0.0;
     measure(e, n, g);
     g->kinetic_target = g->kinetic;
     g->window = 0;
@@ -254,9 +263,10 @@ ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next)
     return st;
 }
 
-int ds_ed_growth_state(const ds_sim *sim)
+int ds_ed_growth_state(const ds_sim *sim, double *z)
 {
     const ds_growth *g = &((const ds_events *)sim->state)->growth;
+    *z = g->last_z;
     return g->rate > 0.0     ? DS_GROWING
            : g->stopped == 1 ? DS_GROWTH_REACHED_ETA
            : g->stopped == 2 ? DS_GROWTH_JAMMED

@@ -64,7 +64,8 @@ typedef struct ds_growth {
     double kinetic, momentum_energy, kinetic_target;
     uint64_t window;
     double window_start, window_virial;
-    int stopped; /* why it stopped: 0 still growing or never, 1 eta, 2 Z */
+    int stopped;   /* why it stopped: 0 still growing or never, 1 eta, 2 Z */
+    double last_z; /* Z of the last window watched, 0 before the first */
 } ds_growth;
 
 struct ds_events {
@@ -147,7 +148,7 @@ ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next);
 void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t);
 ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
 ds_status ds_ed_scale_velocities(ds_sim *sim, double factor);
-int ds_ed_growth_state(const ds_sim *sim);
+int ds_ed_growth_state(const ds_sim *sim, double *z);
 
 /* A checkpoint of the integrator's state (event_checkpoint.c): the
  * table's save and load. */

@@ -190,9 +190,18 @@ ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until
 
 ds_growth_state ds_growth_state_of(const ds_sim *sim)
 {
+    double z = 0.0;
     return sim && sim->integrator->growth_state
-               ? (ds_growth_state)sim->integrator->growth_state(sim)
+               ? (ds_growth_state)sim->integrator->growth_state(sim, &z)
                : DS_GROWTH_NONE;
+}
+
+double ds_growth_z(const ds_sim *sim)
+{
+    double z = 0.0;
+    if (sim && sim->integrator->growth_state)
+        (void)sim->integrator->growth_state(sim, &z);
+    return z;
 }
 
 ds_status ds_scale_velocities(ds_sim *sim, double factor)
