@@ -40,6 +40,13 @@ typedef struct options {
     ds_placement placement;
     ds_boundary boundary;
     double box_y; /* 0: square */
+    /* --mixture RATIO:FRACTION: a FRACTION of the disks of radius RATIO R
+     * (mix_fraction 0: one kind); --mass area|equal */
+    double mix_ratio, mix_fraction;
+    const char *mixture_text;
+    ds_mass_rule mass_rule;
+    /* --grow RATE, --until-eta, --until-z (0: not given) */
+    double grow_rate, until_eta, until_z;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */
@@ -59,9 +66,16 @@ options parse_args(int argc, char **argv);
 
 /* start.c: the request checked (with --from, as the frame's: from is its
  * path), a new simulation, or one from a checkpoint or a frame. */
-void check_request(const ds_params *p, const char *from);
+void check_request(const ds_params *p, const ds_mixture *mixture, const char *from);
 ds_params params_of(const options *o);
-ds_sim *create_fresh(const ds_params *p);
+/* --mixture's two kinds into kinds and mix; NULL for one kind. */
+const ds_mixture *mixture_of(const options *o, ds_species kinds[2], ds_mixture *mix);
+ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture);
+/* --grow's target checked against a new request's area fraction; then
+ * --grow started, once the simulation exists (a new one, a checkpoint's
+ * or a frame's). */
+void check_growth_request(const options *o, const ds_params *p, const ds_mixture *mixture);
+void start_growth(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
 void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);

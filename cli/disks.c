@@ -50,23 +50,26 @@ typedef struct run {
     size_t frame_cap, xyz_cap;
     output stats, trajectory;
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
+    long jammed_frame;     /* the frame in which growth jammed, -1 */
     progress pr;
     double sim_seconds, out_seconds;
 } run;
 
 static const char stats_header[] =
-    "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,virial_pressure,psi6\n";
+    "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,virial_pressure,psi6,"
+    "area_fraction\n";
 
 static void stats_row(output *out, long frame, const ds_sim *sim)
 {
-    char row[320];
+    char row[360];
     double px, py;
     ds_momentum(sim, &px, &py);
-    int l = snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g\n",
-                     frame, ds_time(sim), ds_kinetic_energy(sim), px, py,
+    int l = snprintf(row, sizeof row,
+                     "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g,%.17g\n", frame,
+                     ds_time(sim), ds_kinetic_energy(sim), px, py,
                      (unsigned long long)ds_collision_count(sim),
                      (unsigned long long)ds_wall_count(sim), ds_pressure(sim),
-                     ds_virial_pressure(sim), ds_psi6(sim));
+                     ds_virial_pressure(sim), ds_psi6(sim), ds_area_fraction(sim));
     output_write(out, row, (size_t)l);
 }
 
@@ -183,9 +186,23 @@ static void print_start(const run *r)
            frames, (unsigned long long)o->steps_per_frame, o->out_dir);
 }
 
-static void print_report(const run *r)
+static void print_report(const run *r, long asked)
 {
     const ds_sim *sim = r->sim;
+    const int grew = ds_growth_z(sim) > 0.0 || ds_growth_state_of(sim) != DS_GROWTH_NONE;
+    if (grew || ds_radius_max(sim) != ds_radius(sim)) {
+        printf("area fraction %.6f", ds_area_fraction(sim));
+        if (r->jammed_frame >= 0)
+            printf(", jammed at Z = %.4g in frame %ld (%ld of %ld frames written)",
+                   ds_growth_z(sim), r->jammed_frame, r->jammed_frame - r->first + 1, asked);
+        else if (ds_growth_state_of(sim) == DS_GROWING)
+            printf(", still growing (Z = %.4g)", ds_growth_z(sim));
+        else if (ds_growth_state_of(sim) == DS_GROWTH_REACHED_ETA)
+            printf(", reached by growth");
+        else if (ds_growth_state_of(sim) == DS_GROWTH_JAMMED)
+            printf(", the packing of a growth that jammed at Z = %.4g", ds_growth_z(sim));
+        printf("\n");
+    }
     printf("collision processing time: %.6f s (%s over %llu steps)\n", ds_collision_seconds(sim),
            ds_integrator_used(sim) == DS_EVENT_DRIVEN
                ? "predicting and processing collisions, wall turns and cell crossings"
@@ -196,6 +213,22 @@ static void print_report(const run *r)
     printf("simulation %.3f s, output %.3f s\n", r->sim_seconds, r->out_seconds);
 }
 
+/* One frame of steps. A growing run goes step by step, to see the growth
+ * jam (Z past --until-z) in the step it does: that frame's steps are
+ * finished at the packing's radii (what the library does within the
+ * step), its frame is the run's last. Returns whether it jammed. */
+static int advance_frame(ds_sim *sim, uint64_t steps)
+{
+    uint64_t k = 0;
+    while (k < steps && ds_growth_state_of(sim) == DS_GROWING) {
+        ds_step(sim);
+        ++k;
+    }
+    if (k < steps)
+        ds_run(sim, steps - k);
+    return k > 0 && ds_growth_state_of(sim) == DS_GROWTH_JAMMED;
+}
+
 static void run_frames(run *r)
 {
     const options *o = r->o;
@@ -203,9 +236,10 @@ static void run_frames(run *r)
     for (long k = 0; k < o->frames; ++k) {
         const long frame = r->first + k;
         /* Frame 0 is the start; a restart's first frame is one frame on. */
+        int jammed = 0;
         if (frame > 0 && (k > 0 || o->restart_path)) {
             double t0 = ds_now();
-            ds_run(r->sim, o->steps_per_frame);
+            jammed = advance_frame(r->sim, o->steps_per_frame);
             r->sim_seconds += ds_now() - t0;
         }
         double t0 = ds_now();
@@ -218,6 +252,11 @@ static void run_frames(run *r)
         int sig = stop_signal();
         if (sig)
             stop_by_signal(r, sig, frame);
+        if (jammed) { /* the packing is the run's last frame */
+            r->jammed_frame = frame;
+            r->last = frame;
+            break;
+        }
     }
     progress_clear(&r->pr);
 }
@@ -237,7 +276,11 @@ int main(int argc, char **argv)
     memset(&r, 0, sizeof r);
     r.o = &o;
     r.checkpoint_frame = -1;
+    r.jammed_frame = -1;
     ds_params p = params_of(&o);
+    ds_species kinds[2];
+    ds_mixture mix;
+    const ds_mixture *mixture = o.restart_path || o.from_path ? NULL : mixture_of(&o, kinds, &mix);
     if (o.restart_path) {
         r.sim = restart_from(o.restart_path);
         r.first = restart_frame(&o, r.sim) + 1;
@@ -245,16 +288,22 @@ int main(int argc, char **argv)
     } else if (o.from_path) {
         r.sim = start_from_frame(&o);
     } else {
-
-        check_request(&p, NULL);
+        check_request(&p, mixture, NULL);
+        check_growth_request(&o, &p, mixture);
     }
+    /* A checkpoint's or frame's growth is refused before anything is made. */
+    const int sim_was_read = r.sim != NULL;
+    if (sim_was_read)
+        start_growth(&o, r.sim);
     r.last = r.first + o.frames - 1;
     check_other_runs(&o, r.last);
 
     make_out_dir(o.out_dir);
     open_outputs(&r);
     if (!r.sim)
-        r.sim = create_fresh(&p);
+        r.sim = create_fresh(&p, mixture);
+    if (!sim_was_read)
+        start_growth(&o, r.sim);
     remove_other_runs(&o, r.last);
     r.frame_cap = ds_frame_size(r.sim, o.velocities);
     r.xyz_cap = o.trajectory_path ? ds_xyz_frame_size(r.sim) : 0;
@@ -273,7 +322,7 @@ int main(int argc, char **argv)
     if (o.checkpoint_path && r.checkpoint_frame != r.last)
         write_checkpoint(&r, r.last);
     if (!o.quiet)
-        print_report(&r);
+        print_report(&r, o.frames);
     free(r.frame_buf);
     free(r.xyz_buf);
     ds_destroy(r.sim);

@@ -38,6 +38,15 @@ static const char *const usage_text =
     "  --lattice            start on a triangular lattice instead of at random\n"
     "  --periodic           periodic box (nearest image) instead of walls\n"
     "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
+    "  --mixture RATIO:FRACTION\n"
+    "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
+    "                       radius RATIO x R, the rest R (e.g. 1.4:0.5)\n"
+    "  --mass M             equal (every disk mass 1, the default) or area (mass\n"
+    "                       (r/R)^2)\n"
+    "  --grow RATE          compress: every radius grows as r (1 + RATE t)\n"
+    "                       (event-driven, periodic); until Z passes 1e6, or:\n"
+    "  --until-eta ETA      stop growing at area fraction ETA, then run on\n"
+    "  --until-z Z          stop growing, and the run, once Z passes Z (1 < Z <= 1e9)\n"
     "  --integrator I       step (the fixed time step, default) or event (exact\n"
     "                       event-driven dynamics)\n"
     "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
@@ -121,6 +130,42 @@ static double box_y_arg(const char *s)
     return h;
 }
 
+/* A decimal number > 0 (and below a bound, when one is given). */
+static double positive_arg(const char *option, const char *s, double most)
+{
+    char *end;
+    double v = strtod(s, &end);
+    const int number = is_decimal_text(s) && end != s && *end == '\0' && isfinite(v);
+    if (!number || !(v > 0.0))
+        die(EXIT_USAGE, "%s must be a number > 0, got '%s'", option, s);
+    if (most > 0.0 && !(v <= most))
+        die(EXIT_USAGE, "%s must be a number > 0 and <= %g, got '%s'", option, most, s);
+    return v;
+}
+
+/* --mixture RATIO:FRACTION: two decimal numbers, RATIO > 0 (the library
+ * holds the large disks to the box), 0 < FRACTION < 1. */
+static void mixture_arg(const char *s, options *o)
+{
+    const char *colon = strchr(s, ':');
+    char ratio[64];
+    if (!colon || (size_t)(colon - s) >= sizeof ratio)
+        die(EXIT_USAGE, "--mixture must be RATIO:FRACTION (e.g. 1.4:0.5), got '%s'", s);
+    memcpy(ratio, s, (size_t)(colon - s));
+    ratio[colon - s] = '\0';
+    char *end;
+    const double r = strtod(ratio, &end), f = strtod(colon + 1, &end);
+    if (!is_decimal_text(ratio) || !is_decimal_text(colon + 1) || *end != '\0' ||
+        !(isfinite(r) && r > 0.0) || !(f > 0.0 && f < 1.0))
+        die(EXIT_USAGE,
+            "--mixture must be RATIO:FRACTION, a radius ratio > 0 and a fraction between 0 "
+            "and 1 (e.g. 1.4:0.5), got '%s'",
+            s);
+    o->mix_ratio = r;
+    o->mix_fraction = f;
+    o->mixture_text = s;
+}
+
 static ds_broadphase broadphase_arg(const char *s)
 {
     const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO, DS_CELLS};
@@ -175,6 +220,16 @@ static void check_combination(const options *o, int npos, const char *system_opt
             placement_option);
     if (o->checkpoint_every && !o->checkpoint_path)
         die(EXIT_USAGE, "--checkpoint-every needs --checkpoint FILE");
+    if (o->from_path && o->mixture_text)
+        die(EXIT_USAGE, "--mixture cannot be given with --from: the frame gives every radius");
+    if ((o->until_eta > 0.0 || o->until_z > 0.0) && !(o->grow_rate > 0.0))
+        die(EXIT_USAGE, "%s needs --grow RATE", o->until_eta > 0.0 ? "--until-eta" : "--until-z");
+    /* Growth needs exact contact times and no walls; a checkpoint's
+     * system is checked once it is read. */
+    if (o->grow_rate > 0.0 && !o->restart_path && o->integrator != DS_EVENT_DRIVEN)
+        die(EXIT_USAGE, "--grow needs --integrator event (the time step cannot grow disks)");
+    if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_PERIODIC)
+        die(EXIT_USAGE, "--grow needs --periodic (the compression runs in a periodic box)");
     if (npos == 1 || (npos == 0 && !o->restart_path && !o->from_path))
         die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
             npos == 0 ? "N and R" : "R");
@@ -249,9 +304,15 @@ options parse_args(int argc, char **argv)
                 CHECKPOINT,
                 CHECKPOINT_EVERY,
                 RESTART,
-                FROM
+                FROM,
+                MIXTURE,
+                MASS,
+                GROW,
+                UNTIL_ETA,
+                UNTIL_Z
             };
-            /* In the order of the enum; SEED .. BOX_Y with a system flag. */
+            /* In the order of the enum; those that describe the system
+             * with a system flag. */
             static const struct {
                 const char *name;
                 int system;
@@ -259,7 +320,8 @@ options parse_args(int argc, char **argv)
                 {"--seed", 1},  {"--frames", 0},     {"--steps-per-frame", 0},  {"--out", 0},
                 {"--stats", 0}, {"--broadphase", 1}, {"--integrator", 1},       {"--trajectory", 0},
                 {"--box-y", 1}, {"--checkpoint", 0}, {"--checkpoint-every", 0}, {"--restart", 0},
-                {"--from", 0}};
+                {"--from", 0},  {"--mixture", 1},    {"--mass", 1},             {"--grow", 0},
+                {"--until-eta", 0}, {"--until-z", 0}};
             int which = -1;
             for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
                 if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
@@ -313,8 +375,34 @@ options parse_args(int argc, char **argv)
             case RESTART:
                 o.restart_path = file_arg("--restart", value);
                 break;
-            default:
+            case FROM:
                 o.from_path = file_arg("--from", value);
+                break;
+            case MIXTURE:
+                mixture_arg(value, &o);
+                break;
+            case MASS:
+                if (strcmp(value, "equal") == 0)
+                    o.mass_rule = DS_MASS_EQUAL;
+                else if (strcmp(value, "area") == 0)
+                    o.mass_rule = DS_MASS_AREA;
+                else
+                    die(EXIT_USAGE, "--mass must be equal or area, got '%s'", value);
+                break;
+            case GROW:
+                o.grow_rate = positive_arg("--grow", value, 0.0);
+                break;
+            case UNTIL_ETA:
+                o.until_eta = positive_arg("--until-eta", value, 0.0);
+                if (!(o.until_eta < 1.0))
+                    die(EXIT_USAGE, "--until-eta must be an area fraction between 0 and 1, got '%s'",
+                        value);
+                break;
+            default:
+                o.until_z = positive_arg("--until-z", value, 1e9);
+                if (!(o.until_z > 1.0))
+                    die(EXIT_USAGE, "--until-z must be a reduced pressure > 1 and <= 1e9, got '%s'",
+                        value);
             }
             continue;
         }

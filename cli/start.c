@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,6 +28,11 @@ static const char *in_command_words(const char *field, const char *message, char
         {"integrator", "--integrator"},
     };
     const size_t flen = strlen(field);
+    /* "mixture: its largest radius, ..." is about --mixture. */
+    if (strcmp(field, "mixture") == 0 && strncmp(message, "mixture: ", 9) == 0) {
+        snprintf(out, cap, "--mixture: %s", message + 9);
+        return out;
+    }
     for (size_t k = 0; *field && k < sizeof names / sizeof names[0]; ++k) {
         if (strcmp(field, names[k][0]) != 0 || strncmp(message, field, flen) != 0 ||
             strncmp(message + flen, " = ", 3) != 0)
@@ -60,17 +66,17 @@ static void refuse(const char *from, int code, const char *fmt, ...)
 
 /* Refuses, before any work, what the library would refuse (in its words)
  * or what this machine cannot hold, and passes on its warnings. */
-void check_request(const ds_params *p, const char *from)
+void check_request(const ds_params *p, const ds_mixture *mixture, const char *from)
 {
     unsigned warnings = 0;
     ds_params_error why;
     char words[sizeof why.message + 16];
-    ds_status st = ds_diagnose_params(p, &warnings, &why);
+    ds_status st = ds_diagnose_mixture(p, mixture, &warnings, &why);
     if (st == DS_ERR_NOMEM)
         refuse(from, EXIT_USAGE, "%s",
                in_command_words(why.field, why.message, words, sizeof words));
     size_t bytes = 0;
-    if (st != DS_ERR_ARG && ds_memory_needed(p, &bytes) != DS_OK)
+    if (st != DS_ERR_ARG && ds_memory_needed_mixture(p, mixture, &bytes) != DS_OK)
         refuse(from, EXIT_USAGE, "N = %zu disks cannot be held in memory", p->n);
     long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
     if (pages > 0 && page > 0 && (double)bytes > 0.8 * (double)pages * (double)page)
@@ -102,13 +108,25 @@ ds_params params_of(const options *o)
     return p;
 }
 
-ds_sim *create_fresh(const ds_params *p)
+const ds_mixture *mixture_of(const options *o, ds_species kinds[2], ds_mixture *mix)
+{
+    if (!o->mixture_text && o->mass_rule == DS_MASS_EQUAL)
+        return NULL;
+    /* The large disks: the nearest whole number to FRACTION N. */
+    const size_t large = o->mixture_text ? (size_t)floor(o->mix_fraction * (double)o->n + 0.5) : 0;
+    kinds[0] = (ds_species){o->n - large, o->radius, 0.0};
+    kinds[1] = (ds_species){large, o->mix_ratio * o->radius, 0.0};
+    *mix = (ds_mixture){large ? 2 : 1, kinds, NULL, NULL, o->mass_rule};
+    return mix;
+}
+
+ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture)
 {
     ds_sim *sim = NULL;
-    ds_status st = ds_create(p, &sim);
+    ds_status st = ds_create_mixture(p, mixture, &sim);
     if (st == DS_ERR_PLACEMENT)
-        die(EXIT_RUN, "could not place %zu disks of R = %g without overlap (seed %llu): %s", p->n,
-            p->radius, (unsigned long long)p->seed,
+        die(EXIT_RUN, "could not place %zu disks of R = %g%s without overlap (seed %llu): %s",
+            p->n, p->radius, mixture ? " and their mixture" : "", (unsigned long long)p->seed,
             "try another --seed, or fewer or smaller disks");
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", ds_status_str(st));
@@ -238,8 +256,9 @@ ds_sim *start_from_frame(options *o)
     for (size_t k = 1; k < frame.count; ++k)
         if (frame.disks[k].r != r)
             refuse(path, EXIT_RUN,
-                   "disk %zu has R = %.17g, disk 0 R = %.17g: a run's disks have one radius", k,
-                   frame.disks[k].r, r);
+                   "disk %zu has R = %.17g, disk 0 R = %.17g: a mixture's run goes on from its "
+                   "--checkpoint, with --restart",
+                   k, frame.disks[k].r, r);
     if (o->have_n && frame.count != o->n)
         refuse(path, EXIT_RUN, "it holds %zu disks, not N = %zu", frame.count, o->n);
     if (o->have_n && r != o->radius)
@@ -248,8 +267,8 @@ ds_sim *start_from_frame(options *o)
     o->radius = r;
     o->placement = DS_LATTICE; /* placed, then replaced: a lattice is quick and never fails */
     ds_params p = params_of(o);
-    check_request(&p, path);
-    ds_sim *sim = create_fresh(&p);
+    check_request(&p, NULL, path);
+    ds_sim *sim = create_fresh(&p, NULL);
     ds_disk *disks = malloc(frame.count * sizeof *disks);
     if (!disks)
         refuse(path, EXIT_RUN, "out of memory for %zu disks", frame.count);
@@ -273,4 +292,42 @@ ds_sim *start_from_frame(options *o)
     if (st != DS_OK)
         refuse(path, EXIT_RUN, "%s", err.message[0] ? err.message : ds_status_str(st));
     return sim;
+}
+
+/* The area fraction a new request starts at. */
+static double request_eta(const ds_params *p, const ds_mixture *m)
+{
+    const double box = p->box > 0.0 ? p->box : 1000.0, box_y = p->box_y > 0.0 ? p->box_y : box;
+    double covered = 0.0;
+    if (!m)
+        covered = (double)p->n * p->radius * p->radius;
+    else
+        for (size_t k = 0; k < m->species; ++k)
+            covered += (double)m->kinds[k].count * m->kinds[k].radius * m->kinds[k].radius;
+    return 3.14159265358979323846 * covered / (box * box_y);
+}
+
+void check_growth_request(const options *o, const ds_params *p, const ds_mixture *mixture)
+{
+    const double eta = request_eta(p, mixture);
+    if (o->grow_rate > 0.0 && o->until_eta > 0.0 && !(o->until_eta > eta))
+        die(EXIT_USAGE, "--until-eta %g must be above the start's area fraction %.6g", o->until_eta,
+            eta);
+}
+
+void start_growth(const options *o, ds_sim *sim)
+{
+    if (!(o->grow_rate > 0.0))
+        return;
+    const char *source = o->restart_path ? o->restart_path : o->from_path;
+    if (ds_integrator_used(sim) != DS_EVENT_DRIVEN || ds_boundary_used(sim) != DS_PERIODIC)
+        die(EXIT_USAGE, "--grow needs an event-driven run in a periodic box; %s is %s, %s",
+            source ? source : "the request", ds_integrator_name(ds_integrator_used(sim)),
+            ds_boundary_name(ds_boundary_used(sim)));
+    if (o->until_eta > 0.0 && !(o->until_eta > ds_area_fraction(sim)))
+        die(EXIT_USAGE, "--until-eta %g must be above the start's area fraction %.6g%s%s",
+            o->until_eta, ds_area_fraction(sim), source ? " in " : "", source ? source : "");
+    ds_status st = ds_set_growth(sim, o->grow_rate, o->until_eta, o->until_z);
+    if (st != DS_OK)
+        die(EXIT_RUN, "cannot grow the disks: %s", ds_status_str(st));
 }

@@ -17,6 +17,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <limits.h>
 #include <signal.h>
 #include <grp.h>
@@ -970,6 +971,125 @@ static void test_a_run_starts_from_a_frame_written_with_velocities(void **state)
     remove_tree(dir);
 }
 
+/* The radii column of a frame: how many disks have radius a, how many b
+ * (to the frame's six decimals), and how many neither. */
+static void count_radii(const char *dir, const char *name, double a, double b, size_t counts[3])
+{
+    char *text = slurp_in(dir, name, NULL);
+    assert_non_null(text);
+    counts[0] = counts[1] = counts[2] = 0;
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+        double x, y, r;
+        assert_int_equal(sscanf(line, "%lf %lf %lf", &x, &y, &r), 3);
+        ++counts[fabs(r - a) < 5e-7 ? 0 : fabs(r - b) < 5e-7 ? 1 : 2];
+    }
+    free(text);
+}
+
+/* The last row of a --stats file, its columns split in place. */
+static int last_row(char *csv, char *cols[], int most)
+{
+    size_t len = strlen(csv);
+    while (len && csv[len - 1] == '\n')
+        csv[--len] = '\0';
+    char *row = strrchr(csv, '\n');
+    row = row ? row + 1 : csv;
+    int n = 0;
+    for (char *c = strtok(row, ","); c && n < most; c = strtok(NULL, ","))
+        cols[n++] = c;
+    return n;
+}
+
+/* --mixture 1.4:0.3: 30 of 100 disks have radius 1.4 R, the rest R, in
+ * every frame; --mass area changes the motion (the large disks weigh
+ * 1.96), not the start. */
+static void test_a_mixture_run_writes_its_two_radii(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *system = "100 5 --mixture 1.4:0.3 --integrator event --periodic --frames 3";
+    must_run(dir, "%s --quiet --out a --stats a.csv", system);
+    must_run(dir, "%s --mass area --quiet --out b", system);
+    size_t counts[3];
+    for (int k = 0; k < 3; ++k) {
+        char name[32];
+        snprintf(name, sizeof name, "a/frame_%04d.txt", k);
+        count_radii(dir, name, 5.0, 7.0, counts);
+        assert_int_equal(counts[0], 70);
+        assert_int_equal(counts[1], 30);
+        assert_int_equal(counts[2], 0);
+    }
+    assert_same_files(dir, "a/frame_0000.txt", "b/frame_0000.txt");
+    size_t la = 0, lb = 0;
+    char *x = slurp_in(dir, "a/frame_0002.txt", &la), *y = slurp_in(dir, "b/frame_0002.txt", &lb);
+    assert_true(x && y && !(la == lb && memcmp(x, y, la) == 0));
+    free(x);
+    free(y);
+    /* The area fraction column: pi (70 x 25 + 30 x 49) / 10^6. */
+    char *csv = slurp_in(dir, "a.csv", NULL), *cols[16];
+    assert_non_null(csv);
+    assert_non_null(strstr(csv, ",psi6,area_fraction\n"));
+    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_true(fabs(strtod(cols[10], NULL) / (3.14159265358979 * 3220e-6) - 1.0) < 1e-12);
+    free(csv);
+    remove_tree(dir);
+}
+
+/* --grow to --until-eta: the growth stops at the target exactly (to
+ * rounding: 1e-12), the radii keep their ratio, the run goes on to its
+ * last frame with the kinetic energy of the start (the heat taken out
+ * when the growth stops; N kT = N m v^2 / 2 at the speed of 100). */
+static void test_a_growth_stops_at_its_target_area_fraction(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "64 10 --mixture 1.4:0.5 --integrator event --periodic --grow 1 --until-eta 0.5 "
+                  "--frames 50 --quiet --out g --stats g.csv");
+    assert_true(exists_in(dir, "g/frame_0049.txt"));
+    char *csv = slurp_in(dir, "g.csv", NULL), *cols[16];
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_true(fabs(strtod(cols[10], NULL) - 0.5) < 1e-12);
+    assert_true(fabs(strtod(cols[2], NULL) / (64 * 5000.0) - 1.0) < 1e-12);
+    free(csv);
+    size_t counts[3];
+    const double r = sqrt(0.5e6 / (3.14159265358979 * 32 * (1.0 + 1.96)));
+    count_radii(dir, "g/frame_0049.txt", r, 1.4 * r, counts);
+    assert_int_equal(counts[0], 32);
+    assert_int_equal(counts[1], 32);
+    remove_tree(dir);
+}
+
+/* --grow until it jams: the frame of the step that jammed is the run's
+ * last (fewer frames than asked), with no overlap left (the library's
+ * check when its checkpoint is read back), and the checkpoint restarts. */
+static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "16 64 --mixture 1.4:0.5 --integrator event --periodic --grow 0.2 --frames 200 "
+                  "--quiet --out j --checkpoint j.ckpt");
+    char name[64];
+    long last = -1;
+    for (long k = 0; k < 200; ++k) {
+        snprintf(name, sizeof name, "j/frame_%04ld.txt", k);
+        if (exists_in(dir, name))
+            last = k;
+        else
+            break;
+    }
+    assert_true(last > 0 && last < 199);
+    snprintf(name, sizeof name, "j/frame_%04ld.txt", last + 1);
+    assert_false(exists_in(dir, name));
+    must_run(dir, "--restart j.ckpt --frames 2 --quiet --out j");
+    snprintf(name, sizeof name, "j/frame_%04ld.txt", last + 2);
+    assert_true(exists_in(dir, name));
+    remove_tree(dir);
+}
+
 /* A checkpoint damaged anywhere, or cut anywhere, is refused with one
  * line naming the library's reason, exit 1, nothing written. */
 static void test_a_corrupted_checkpoint_is_refused_with_one_line(void **state)
@@ -1196,6 +1316,9 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_a_corrupted_checkpoint_is_refused_with_one_line),
         cmocka_unit_test(test_outputs_inside_a_new_out_directory_are_written),
         cmocka_unit_test(test_frames_of_another_run_are_refused_unless_overwrite),
+        cmocka_unit_test(test_a_mixture_run_writes_its_two_radii),
+        cmocka_unit_test(test_a_growth_stops_at_its_target_area_fraction),
+        cmocka_unit_test(test_a_growth_that_jams_ends_the_run_with_the_packing),
     };
     for (size_t k = 0; k < sizeof survive / sizeof survive[0]; ++k)
         tests[n++] = survive[k];
