@@ -451,6 +451,24 @@ static void test_cyclic_map_closes_on_itself_without_jumps(void **state)
     assert_true(fabs(none.r - 0.3f * half.r) < 1e-6 && fabs(none.b - 0.3f * half.b) < 1e-6);
 }
 
+/* --colour size: the small disk at the map's bottom, the large one at its
+ * top, a disk of a size between at its place between; one size alone is
+ * the middle colour. */
+static void test_size_colours_disks_by_their_radius(void **state)
+{
+    image img = render_text(*state, "250 500 40 0 0\n500 500 70 0 0\n750 500 100 0 0\n", 400,
+                            "--colour size");
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 1);
+    assert_colour(pixel(&img, rl_px(&l, 250), rl_py(&l, 500)), rc_viridis(0.0), "small disk");
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 500)), rc_viridis(0.5), "middle disk");
+    assert_colour(pixel(&img, rl_px(&l, 750), rl_py(&l, 500)), rc_viridis(1.0), "large disk");
+    free(img.rgb);
+    img = render_text(*state, "500 500 40\n", 400, "--color size");
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 500)), rc_viridis(0.5), "one size");
+    free(img.rgb);
+}
+
 static void test_psi6_colours_a_hexagon_by_its_orientation(void **state)
 {
     /* Six disks touching a seventh, the whole turned by 0.1 rad: every
@@ -524,7 +542,7 @@ static void test_bad_colour_requests_are_refused(void **state)
     char args[1024];
     snprintf(args, sizeof args, "--colour hue %s", frame);
     assert_int_equal(run(*state, args), 2);
-    assert_non_null(strstr(last_stderr(), "--colour must be speed or psi6, got 'hue'"));
+    assert_non_null(strstr(last_stderr(), "--colour must be speed, psi6 or size, got 'hue'"));
     snprintf(args, sizeof args, "--quiet --colour speed %s", frame);
     assert_int_equal(run(*state, args), 1);
     assert_non_null(strstr(last_stderr(), "--colour speed needs frames of"));
@@ -822,6 +840,7 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_box_outline_is_drawn_on_the_box_edges, binary),             \
         cmocka_unit_test_prestate(test_speeds_colour_slow_and_fast_disks_differently, binary),     \
         cmocka_unit_test_prestate(test_psi6_colours_a_hexagon_by_its_orientation, binary),         \
+        cmocka_unit_test_prestate(test_size_colours_disks_by_their_radius, binary),                \
         cmocka_unit_test_prestate(test_psi6_counts_neighbours_across_a_periodic_edge, binary),     \
         cmocka_unit_test_prestate(test_a_tall_box_is_drawn_with_its_own_height, binary),           \
         cmocka_unit_test_prestate(test_bad_colour_requests_are_refused, binary),                   \

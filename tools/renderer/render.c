@@ -46,7 +46,8 @@ static const char usage[] =
     "               \"x y R vx vy\" frames) or psi6, the orientation arg(psi6)/6\n"
     "               of each disk's neighbours closer than 1.4 diameters, -30 to\n"
     "               +30 degrees on a cyclic colour wheel, darker where |psi6| is\n"
-    "               small (brightness 0.3 + 0.7 |psi6|)\n"
+    "               small (brightness 0.3 + 0.7 |psi6|), or size, the radius\n"
+    "               from the frame's smallest to its largest (mixtures)\n"
     "  --periodic   the box is periodic: psi6 counts neighbours across its edges\n"
     "  --vmax V     speed at the top of the colour scale (default 2.5 x rms speed)\n"
     "  -j N         frames rendered at once, 1..256 (default: number of cores)\n"
@@ -368,8 +369,10 @@ int main(int argc, char **argv)
                 colour = RD_COLOUR_SPEED;
             } else if (!strcmp(v, "psi6")) {
                 colour = RD_COLOUR_PSI6;
+            } else if (!strcmp(v, "size")) {
+                colour = RD_COLOUR_SIZE;
             } else {
-                fprintf(stderr, "render: %s must be speed or psi6, got '%s'\n", s, v);
+                fprintf(stderr, "render: %s must be speed, psi6 or size, got '%s'\n", s, v);
                 rc = 2;
             }
             continue;

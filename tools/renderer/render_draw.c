@@ -143,6 +143,14 @@ static int speed_legend(rd_renderer *r, const rl_layout *l, double vmax)
     return legend(r, l, rc_viridis, "0", top, "speed");
 }
 
+static int size_legend(rd_renderer *r, const rl_layout *l, double rmin, double rmax)
+{
+    char bottom[32], top[32];
+    snprintf(bottom, sizeof bottom, "%.3g", rmin);
+    snprintf(top, sizeof top, "%.3g", rmax);
+    return legend(r, l, rc_viridis, bottom, top, "radius");
+}
+
 /* psi6 of every disk of the frame (cutoff 1.4 diameters of the largest
  * disk, as ds_psi6) into re, im. */
 static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y, double *re,
@@ -255,10 +263,18 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
         snprintf(err, errlen, "--colour speed needs frames of \"x y R vx vy\" lines");
         return -1;
     }
-    const int speeds = colour == RD_COLOUR_SPEED, psi6 = colour == RD_COLOUR_PSI6;
+    const int speeds = colour == RD_COLOUR_SPEED, psi6 = colour == RD_COLOUR_PSI6,
+              sizes = colour == RD_COLOUR_SIZE;
+    /* Sizes: the smallest radius at the map's bottom, the largest at its
+     * top; one radius sits in the middle. */
+    double rmin = INFINITY, rmax = 0.0;
+    for (size_t i = 0; sizes && i < frame->count; ++i) {
+        rmin = fmin(rmin, frame->disks[i].r);
+        rmax = fmax(rmax, frame->disks[i].r);
+    }
     const double box_y = r->opt.box_y > 0.0 ? r->opt.box_y : r->opt.box;
     rl_layout l;
-    rl_make_rect(&l, r->opt.size, r->opt.box, box_y, speeds || psi6);
+    rl_make_rect(&l, r->opt.size, r->opt.box, box_y, speeds || psi6 || sizes);
     const double vmax = !speeds ? 0.0 : r->opt.vmax > 0.0 ? r->opt.vmax : rc_speed_scale(frame);
 
     r->count = 0;
@@ -287,6 +303,8 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
             c = rc_viridis(sqrt(v) / vmax);
         } else if (psi6) {
             c = rc_psi6(re[i], im[i]);
+        } else if (sizes) {
+            c = rc_viridis(rmax > rmin ? (d->r - rmin) / (rmax - rmin) : 0.5);
         }
         /* One pixel beyond the radius holds the whole antialiased ramp. */
         const double e = rad + 1.0;
@@ -306,7 +324,8 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
         (speeds && speed_legend(r, &l, vmax)) ||
         /* The psi6 bar: bond orientations from -30 to +30 degrees at full
          * order, t as rc_psi6 maps the phase. */
-        (psi6 && legend(r, &l, rc_cyclic, "-30", "30", "psi6"))) {
+        (psi6 && legend(r, &l, rc_cyclic, "-30", "30", "psi6")) ||
+        (sizes && size_legend(r, &l, rmin, rmax))) {
         snprintf(err, errlen, "out of memory");
         return -1;
     }

@@ -16,7 +16,8 @@ typedef struct rd_renderer rd_renderer;
 typedef enum rd_colour {
     RD_COLOUR_AUTO = 0, /* speed for "x y R vx vy" frames, one colour otherwise */
     RD_COLOUR_SPEED,    /* speed (viridis); the frame must have velocities */
-    RD_COLOUR_PSI6      /* bond orientation arg(psi6) / 6, darkened where |psi6| is small */
+    RD_COLOUR_PSI6,     /* bond orientation arg(psi6) / 6, darkened where |psi6| is small */
+    RD_COLOUR_SIZE      /* radius, the frame's smallest to its largest on viridis */
 } rd_colour;
 
 typedef struct rd_options {
