@@ -186,15 +186,23 @@ static void print_start(const run *r)
            frames, (unsigned long long)o->steps_per_frame, o->out_dir);
 }
 
+/* A jammed packing's contacts: within 1e-4 of a diameter (at Z = 10^6
+ * contacts are 1e-8 to 1e-5 apart, the next neighbours 1e-3 and more;
+ * docs/physics.md). */
+#define CONTACT_GAP 1e-4
+
 static void print_report(const run *r, long asked)
 {
     const ds_sim *sim = r->sim;
     const int grew = ds_growth_z(sim) > 0.0 || ds_growth_state_of(sim) != DS_GROWTH_NONE;
     if (grew || ds_radius_max(sim) != ds_radius(sim)) {
         printf("area fraction %.6f", ds_area_fraction(sim));
-        if (r->jammed_frame >= 0)
-            printf(", jammed at Z = %.4g in frame %ld (%ld of %ld frames written)",
-                   ds_growth_z(sim), r->jammed_frame, r->jammed_frame - r->first + 1, asked);
+        ds_contacts c;
+        if (r->jammed_frame >= 0 && ds_count_contacts(sim, CONTACT_GAP, &c) == DS_OK)
+            printf(", jammed at Z = %.4g at t = %.6g, frame %ld (%ld of %ld frames written); "
+                   "%.4f contacts per disk, rattlers %zu (%.2f%%)",
+                   ds_growth_z(sim), ds_time(sim), r->jammed_frame, r->jammed_frame - r->first + 1,
+                   asked, c.per_disk, c.rattlers, 100.0 * c.rattler_fraction);
         else if (ds_growth_state_of(sim) == DS_GROWING)
             printf(", still growing (Z = %.4g)", ds_growth_z(sim));
         else if (ds_growth_state_of(sim) == DS_GROWTH_REACHED_ETA)
@@ -213,20 +221,23 @@ static void print_report(const run *r, long asked)
     printf("simulation %.3f s, output %.3f s\n", r->sim_seconds, r->out_seconds);
 }
 
-/* One frame of steps. A growing run goes step by step, to see the growth
- * jam (Z past --until-z) in the step it does: that frame's steps are
- * finished at the packing's radii (what the library does within the
- * step), its frame is the run's last. Returns whether it jammed. */
+/* The steps up to a frame's. A growing run goes step by step, to see the
+ * growth jam (Z past --until-z) in the step it does: the run ends there,
+ * its frame the packing as it jammed (run on at fixed radii, a packing
+ * compressed fast unjams within a time unit: docs/physics.md). Returns
+ * whether it jammed. */
 static int advance_frame(ds_sim *sim, uint64_t steps)
 {
     uint64_t k = 0;
     while (k < steps && ds_growth_state_of(sim) == DS_GROWING) {
         ds_step(sim);
         ++k;
+        if (ds_growth_state_of(sim) == DS_GROWTH_JAMMED)
+            return 1;
     }
     if (k < steps)
         ds_run(sim, steps - k);
-    return k > 0 && ds_growth_state_of(sim) == DS_GROWTH_JAMMED;
+    return 0;
 }
 
 static void run_frames(run *r)
@@ -239,7 +250,9 @@ static void run_frames(run *r)
         int jammed = 0;
         if (frame > 0 && (k > 0 || o->restart_path)) {
             double t0 = ds_now();
-            jammed = advance_frame(r->sim, o->steps_per_frame);
+            /* To the frame's step: a restart of a packing that jammed
+             * between frames gets back onto them. */
+            jammed = advance_frame(r->sim, (uint64_t)frame * o->steps_per_frame - ds_steps(r->sim));
             r->sim_seconds += ds_now() - t0;
         }
         double t0 = ds_now();

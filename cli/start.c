@@ -188,12 +188,15 @@ ds_sim *restart_from(const char *path)
 long restart_frame(const options *o, const ds_sim *sim)
 {
     const uint64_t steps = ds_steps(sim), k = o->steps_per_frame;
-    if (steps % k != 0)
+    /* A growth that jammed ended its run between frames, in the frame it
+     * was making: the restart goes on from the next. */
+    const int jammed = ds_growth_state_of(sim) == DS_GROWTH_JAMMED;
+    if (steps % k != 0 && !jammed)
         die(EXIT_RUN,
             "cannot restart from %s: its step %llu is not a whole number of frames of "
             "--steps-per-frame %llu; give the run's --steps-per-frame",
             o->restart_path, (unsigned long long)steps, (unsigned long long)k);
-    const uint64_t frame = steps / k;
+    const uint64_t frame = steps / k + (steps % k != 0);
     if (frame + (uint64_t)o->frames > MAX_FRAMES - 1)
         die(EXIT_RUN,
             "cannot restart from %s at frame %llu: --frames %ld would go past frame_%04d.txt "

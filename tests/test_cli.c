@@ -1062,16 +1062,17 @@ static void test_a_growth_stops_at_its_target_area_fraction(void **state)
     remove_tree(dir);
 }
 
-/* --grow until it jams: the frame of the step that jammed is the run's
- * last (fewer frames than asked), with no overlap left (the library's
- * check when its checkpoint is read back), and the checkpoint restarts. */
+/* --grow until it jams: the packing at the step that jammed is the run's
+ * last frame (fewer frames than asked), with no overlap left (the
+ * library's check when its checkpoint is read back), and the checkpoint
+ * restarts onto the frames' times. */
 static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
 {
     (void)state;
     char dir[] = "/tmp/ds_test_cli_XXXXXX";
     assert_non_null(mkdtemp(dir));
     must_run(dir, "16 64 --mixture 1.4:0.5 --integrator event --periodic --grow 0.2 --frames 200 "
-                  "--quiet --out j --checkpoint j.ckpt");
+                  "--quiet --out j --checkpoint j.ckpt --stats j.csv");
     char name[64];
     long last = -1;
     for (long k = 0; k < 200; ++k) {
@@ -1084,9 +1085,25 @@ static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
     assert_true(last > 0 && last < 199);
     snprintf(name, sizeof name, "j/frame_%04ld.txt", last + 1);
     assert_false(exists_in(dir, name));
-    must_run(dir, "--restart j.ckpt --frames 2 --quiet --out j");
+    /* The last frame is the packing when it jammed, between two frames'
+     * times (steps of 0.001, 100 to a frame). */
+    char *csv = slurp_in(dir, "j.csv", NULL), *cols[16];
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(strtol(cols[0], NULL, 10), last);
+    const double jammed_at = strtod(cols[1], NULL);
+    assert_true(jammed_at > 0.1 * (double)(last - 1) && jammed_at <= 0.1 * (double)last);
+    free(csv);
+    /* The restart gets back onto the frames' times. */
+    must_run(dir, "--restart j.ckpt --frames 2 --quiet --out j --stats r.csv");
     snprintf(name, sizeof name, "j/frame_%04ld.txt", last + 2);
     assert_true(exists_in(dir, name));
+    csv = slurp_in(dir, "r.csv", NULL);
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(strtol(cols[0], NULL, 10), last + 2);
+    assert_true(fabs(strtod(cols[1], NULL) - 0.1 * (double)(last + 2)) < 1e-6);
+    free(csv);
     remove_tree(dir);
 }
 

@@ -5,6 +5,8 @@
  *     N = 10^3 to 10^6: each system is created and relaxed for about one
  *     collision per disk, then timed in every round (ds_collision_seconds:
  *     predicting and processing events) over about 10^6 collisions.
+ * 5c. A mixture: 50:50 of radius ratio 1.4 against one size, both at
+ *     area fraction 0.5 and N = 10^5 with walls, in the same rounds.
  * 5b. What exactness costs: one simulated time unit event-driven against
  *     the time step at the dt whose pressure bias is 0.1%, for N = 4000 at
  *     area fraction 0.3, the system of the Z(dt) test. The bias of the
@@ -85,6 +87,49 @@ int bench_events_one(unsigned long n, double per_disk)
     return 1;
 }
 
+/* N disks at area fraction 0.5, half of radius r and half of 1.4 r:
+ * r^2 = 0.5 A / (pi N (1 + 1.96) / 2). Relaxed as relaxed() does. */
+static ds_sim *relaxed_mixture(size_t n, double per_disk)
+{
+    const double r = sqrt(0.5 * 1000.0 * 1000.0 / (PI * (double)n * 1.48));
+    ds_params p = ds_default_params(n, r);
+    p.integrator = DS_EVENT_DRIVEN;
+    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, 1.4 * r, 0.0}};
+    const ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
+    ds_sim *sim = NULL;
+    ds_status st = ds_create_mixture(&p, &mix, &sim);
+    if (st != DS_OK) {
+        fprintf(stderr, "bench: ds_create_mixture(N = %zu): %s\n", n, ds_status_str(st));
+        return NULL;
+    }
+    ds_run(sim, at_least(0.5 * per_disk * (double)n / collisions_per_step(n), 2));
+    return sim;
+}
+
+/* 5c: ns per collision of the mixture and of one size, interleaved. */
+static int bench_mixture(void)
+{
+    const size_t n = 100000;
+    double created, ns[2][ROUNDS];
+    ds_sim *one = relaxed(n, 1.0, &created), *mix = one ? relaxed_mixture(n, 1.0) : NULL;
+    for (int k = 0; mix && k < ROUNDS; ++k) {
+        ns[0][k] = ns_per_collision(one);
+        ns[1][k] = ns_per_collision(mix);
+    }
+    const int ok = mix != NULL;
+    ds_destroy(one);
+    ds_destroy(mix);
+    if (!ok)
+        return 0;
+    const double ratio = median_ratio(ns[1], ns[0]);
+    printf("\n   A mixture, 50:50 of radius ratio 1.4, against one size (N = 10^5, area fraction\n"
+           "   0.5, walls; the cells sized by the largest pair, 2.4 r, not 2 r):\n");
+    printf("   one size %.0f ns/collision, mixture %.0f: mixture / one size = %.2f (target <= 1.3)\n",
+           median(ns[0], ROUNDS), median(ns[1], ROUNDS), ratio);
+    fflush(stdout);
+    return 1;
+}
+
 /* Z = P A / E from the collision virial (A = (box - 2R)^2) over `units`
  * time units after 2 of relaxation, and the wall-clock seconds of ds_run
  * per time unit. */
@@ -136,6 +181,8 @@ int bench_events(void)
     printf("   collisions/s at N = 10^5: %.3g (target >= 2e6)\n", 1e9 / m[2]);
     printf("   ns/collision, N = 10^6 / N = 10^3: %.2f (target <= 1.5)\n", scaling);
     fflush(stdout);
+    if (!bench_mixture())
+        return 0;
 
     double z_exact, s_exact, z2, s2, z1, s1;
     if (!virial_z(DS_EVENT_DRIVEN, 0.001, 10, &z_exact, &s_exact) ||
