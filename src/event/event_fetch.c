@@ -123,6 +123,20 @@ FETCHER void fetch_disks(const ds_events *e, region g)
         }
 }
 
+/* A mixture's pair test reads each candidate's radius too, a line of its
+ * own: the first slot of each cell (slots in a cell are disks of nearby
+ * numbers often enough, eight radii to a line). An empty slot holds n:
+ * one past the last radius, an address a prefetch may name. */
+FETCHER void fetch_radii(const ds_events *e, region g)
+{
+    const size_t stride = (size_t)e->cells.nx * DS_CELL_SLOTS;
+    for (int r = 0; r < g.rows; ++r, g.slot += stride)
+        for (int k = 0; k < g.slots; k += DS_CELL_SLOTS) {
+            ds_prefetch(&e->radius[g.slot[k]]);
+            ds_prefetch(&e->radius[g.slot[k + 1]]);
+        }
+}
+
 /* A named disk whose record showed, at the second stage, that it has been
  * rescheduled past its bucket: its bucket's entry is stale, and the bucket
  * it has moved to names it again. */
@@ -162,7 +176,10 @@ void ds_fetch_ahead(ds_events *e)
         if (f->ahead[k] == DROPPED)
             continue;
         const ed_disk *d = &e->disk[f->ahead[k]];
-        fetch_disks(e, cells_ahead(e, d));
+        const region g = cells_ahead(e, d);
+        fetch_disks(e, g);
+        if (e->radius)
+            fetch_radii(e, g);
     }
     while (f->second < f->tail && f->ahead_tag[f->second & DS_FETCH_AHEAD_MASK] != now) {
         const uint32_t k = f->second++ & DS_FETCH_AHEAD_MASK;
