@@ -105,7 +105,13 @@ PyObject *dspy_sim_set_growth(dspy_sim *self, PyObject *args, PyObject *kwargs)
 const char dspy_scale_velocities_doc[] =
     "scale_velocities($self, /, factor)\n--\n\n"
     "Every velocity times factor (> 0, finite), now: a thermostat's step, or a\n"
-    "compression taking out its heat. ArgumentError for another factor.";
+    "compression taking out its heat. ArgumentError for another factor, or one that\n"
+    "would take a velocity component beyond 1e12, which set_state refuses too.";
+
+/* ds_set's bound on a velocity component. ds_scale_velocities does not
+ * hold a factor to it, and velocities beyond it overflow to infinities,
+ * with which an event-driven step never ends. */
+#define MOST_SPEED 1e12
 
 PyObject *dspy_sim_scale_velocities(dspy_sim *self, PyObject *args, PyObject *kwargs)
 {
@@ -116,8 +122,18 @@ PyObject *dspy_sim_scale_velocities(dspy_sim *self, PyObject *args, PyObject *kw
         dspy_double_arg(factor_obj, "factor", &factor) < 0)
         return NULL;
     ds_sim *sim = dspy_sim_of(self);
-    if (!sim)
+    ds_disk *disks = sim ? dspy_get_all(sim) : NULL;
+    if (!disks)
         return NULL;
+    double fastest = 0.0;
+    for (size_t i = 0; i < ds_count(sim); ++i)
+        fastest = fmax(fastest, fmax(fabs(disks[i].vx), fabs(disks[i].vy)));
+    PyMem_RawFree(disks);
+    if (factor > 0.0 && isfinite(factor) && !(fastest * factor <= MOST_SPEED))
+        return dspy_raisef(DS_ERR_ARG, "factor",
+                           "factor = %g would take a velocity component to %g, beyond the %g "
+                           "set_state accepts",
+                           factor, fastest * factor, MOST_SPEED);
     const ds_status st = ds_scale_velocities(sim, factor);
     if (st == DS_ERR_ARG)
         return dspy_raisef(st, "factor", "factor = %g must be a finite number > 0", factor);
