@@ -1,10 +1,11 @@
 # SPDX-License-Identifier: MIT
 """disksim: hard disks (2D elastic billiards) from Python.
 
-A thin face over libdisksim, the C library of this repository: N equal disks
-of radius R bouncing elastically in a box with walls or periodic edges,
-advanced by a fixed time step or by exact event-driven dynamics, with the
-library's observables (energy, momentum, wall and virial pressure, psi6)
+A thin face over libdisksim, the C library of this repository: N disks of
+radius R (or a mixture of radii and masses) bouncing elastically in a box
+with walls or periodic edges, advanced by a fixed time step or by exact
+event-driven dynamics, compressed by growing them, with the library's
+observables (energy, momentum, wall and virial pressure, psi6)
 and frames. Everything runs in the library; the arrays are numpy copies.
 
     import disksim
@@ -24,20 +25,25 @@ Error         every failure the library reports; ArgumentError (also a
               ValueError), FormatError (ValueError), FileError (OSError),
               NoMemoryError (MemoryError)
 
-INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES are the names the arguments
-take; DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS the
-library's constants. docs/python.md in the repository is the manual.
+INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES and
+GROWTH_STATES are the names the arguments and properties take;
+DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z the
+library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
 """
 from ._disksim import (
     BOUNDARIES,
     BROADPHASES,
     CONTACT_TOLERANCE,
     DEFAULT_SEED,
+    GROWTH_STATES,
     INTEGRATORS,
+    JAMMED_Z,
     MANY_DISKS,
+    MASS_RULES,
     MAX_AREA_FRACTION,
     PLACEMENTS,
     ArgumentError,
+    Contacts,
     Error,
     FileError,
     FormatError,
@@ -62,6 +68,7 @@ __all__ = [
     "local_psi6",
     "memory_needed",
     "Frame",
+    "Contacts",
     "Error",
     "ArgumentError",
     "FormatError",
@@ -71,6 +78,9 @@ __all__ = [
     "BOUNDARIES",
     "PLACEMENTS",
     "BROADPHASES",
+    "MASS_RULES",
+    "GROWTH_STATES",
+    "JAMMED_Z",
     "DEFAULT_SEED",
     "CONTACT_TOLERANCE",
     "MAX_AREA_FRACTION",

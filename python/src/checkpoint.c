@@ -13,14 +13,17 @@
 #include <sys/stat.h>
 
 /* A new instance of type (Sim or a subclass) owning sim. */
-static PyObject *new_sim(PyTypeObject *type, ds_sim *sim, const ds_params *params, unsigned unknown)
+static PyObject *new_sim(PyTypeObject *type, ds_sim *sim, const ds_params *params, unsigned unknown,
+                         PyObject *mixture_args)
 {
     PyObject *empty = PyTuple_New(0);
     PyObject *obj = empty ? dspy_SimType.tp_new(type, empty, NULL) : NULL;
     Py_XDECREF(empty);
-    if (!obj || dspy_sim_adopt((dspy_sim *)obj, sim, params, unknown) < 0) {
-        if (!obj)
+    if (!obj || dspy_sim_adopt((dspy_sim *)obj, sim, params, unknown, mixture_args) < 0) {
+        if (!obj) {
             ds_destroy(sim);
+            Py_XDECREF(mixture_args);
+        }
         Py_XDECREF(obj);
         return NULL;
     }
@@ -123,7 +126,7 @@ PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
     Py_DECREF(path);
     if (st != DS_OK)
         return raise_state_error(st, errnum, &err, path_obj);
-    return new_sim(&dspy_SimType, sim, NULL, 0);
+    return new_sim(&dspy_SimType, sim, NULL, 0, NULL);
 }
 
 /* pickle and copy: (disksim._disksim._restore, (type, checkpoint, params),
@@ -151,7 +154,7 @@ PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused)
         Py_DECREF(data);
         return dspy_raise(st != DS_OK ? st : DS_ERR_NOMEM, NULL, ds_status_str(st));
     }
-    PyObject *params = dspy_params_dict(&self->params, self->unknown);
+    PyObject *params = dspy_params_dict(&self->params, self->unknown, self->mixture_args);
     PyObject *module = params ? PyImport_ImportModule("disksim._disksim") : NULL;
     PyObject *restore = module ? PyObject_GetAttrString(module, "_restore") : NULL;
     PyObject *dict = restore ? PyObject_GetAttrString((PyObject *)self, "__dict__") : NULL;
@@ -170,6 +173,17 @@ PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused)
     return result;
 }
 
+/* Only the mixture's arguments the pickle had (one of a loaded Sim has
+ * none). */
+static int keep_given(PyObject *mixture_args, PyObject *params)
+{
+    for (int k = 0; k < 4; ++k)
+        if (!PyDict_GetItemString(params, dspy_mixture_names[k]) &&
+            PyDict_DelItemString(mixture_args, dspy_mixture_names[k]) < 0)
+            return -1;
+    return 0;
+}
+
 PyObject *dspy_restore(PyObject *module, PyObject *args)
 {
     (void)module;
@@ -179,10 +193,13 @@ PyObject *dspy_restore(PyObject *module, PyObject *args)
         return NULL;
     PyObject *result = NULL;
     ds_params p;
+    dspy_mixture mix = DSPY_MIXTURE_INIT;
     unsigned unknown = 0;
     if (!PyType_Check(type) || !PyType_IsSubtype((PyTypeObject *)type, &dspy_SimType)) {
         PyErr_SetString(PyExc_TypeError, "_restore: the type must be disksim.Sim or a subclass");
-    } else if (dspy_params_from_dict(params, &p, &unknown) == 0) {
+    } else if (dspy_params_from_dict(params, &p, &mix, &unknown) == 0 &&
+               keep_given(mix.args, params) == 0) {
+        dspy_mixture_free(&mix); /* the checkpoint has the radii and masses */
         ds_sim *sim = NULL;
         ds_state_error err = {""};
         ds_status st;
@@ -193,10 +210,14 @@ PyObject *dspy_restore(PyObject *module, PyObject *args)
             ds_destroy(sim);
             dspy_raise(DS_ERR_ARG, NULL, "_restore: the parameters are not the checkpoint's");
         } else {
-            result = st == DS_OK ? new_sim((PyTypeObject *)type, sim, &p, unknown)
+            result = st == DS_OK ? new_sim((PyTypeObject *)type, sim, &p, unknown, mix.args)
                                  : raise_state_error(st, 0, &err, NULL);
+            if (st == DS_OK)
+                mix.args = NULL; /* new_sim took it */
         }
     }
+    dspy_mixture_free(&mix);
+    Py_XDECREF(mix.args);
     PyBuffer_Release(&data);
     return result;
 }

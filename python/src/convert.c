@@ -156,3 +156,35 @@ int dspy_path_arg(PyObject *value, PyObject **bytes)
     }
     return -1;
 }
+
+PyArrayObject *dspy_vector_array(PyObject *value, const char *field, size_t want)
+{
+    PyArrayObject *a =
+        (PyArrayObject *)PyArray_FROMANY(value, NPY_DOUBLE, 0, 0, NPY_ARRAY_IN_ARRAY);
+    if (!a) {
+        if (PyErr_ExceptionMatches(PyExc_ValueError)) {
+            PyObject *cause = dspy_take_exception();
+            PyObject *text = cause ? PyObject_Str(cause) : NULL;
+            const char *s = text ? PyUnicode_AsUTF8(text) : NULL;
+            if (s)
+                dspy_raisef(DS_ERR_ARG, field, "%s must be an (n,) array of numbers: %s", field, s);
+            Py_XDECREF(text);
+            dspy_set_cause(cause);
+        }
+        return NULL;
+    }
+    const int ndim = PyArray_NDIM(a);
+    if (ndim != 1 || (size_t)PyArray_DIM(a, 0) != want) {
+        char shape[96] = "";
+        for (int k = 0; k < ndim && k < 4; ++k)
+            PyOS_snprintf(shape + strlen(shape), sizeof shape - strlen(shape), "%s%ld",
+                          k ? ", " : "", (long)PyArray_DIM(a, k));
+        if (ndim == 1)
+            strcat(shape, ",");
+        dspy_raisef(DS_ERR_ARG, field, "%s has shape (%s%s): it must be (%zu,), one per disk (n)",
+                    field, shape, ndim > 4 ? ", ..." : "", want);
+        Py_DECREF(a);
+        return NULL;
+    }
+    return a;
+}

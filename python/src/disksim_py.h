@@ -76,6 +76,8 @@ typedef enum dspy_kind {
     DSPY_BOUNDARY,
     DSPY_PLACEMENT,
     DSPY_BROADPHASE,
+    DSPY_MASS_RULE,    /* ds_mass_rule: "equal", "area" */
+    DSPY_GROWTH_STATE, /* ds_growth_state: "none", "growing", "reached_eta", "jammed" */
     DSPY_KINDS
 } dspy_kind;
 
@@ -108,19 +110,56 @@ PyArrayObject *dspy_xy_array(PyObject *value, const char *field, size_t want);
 PyArrayObject *dspy_new_xy(size_t n);
 /* A path argument (str, bytes or os.PathLike) as a bytes object. */
 int dspy_path_arg(PyObject *value, PyObject **bytes);
+/* A 1-D float64 C-contiguous array of want numbers from any array-like (a
+ * new reference); ArgumentError for another shape or values numpy cannot
+ * read as numbers. */
+PyArrayObject *dspy_vector_array(PyObject *value, const char *field, size_t want);
+
+/* ---------------------------------------------------------------- mixtures */
+
+/* Sim's mixture arguments (mixture.c): species, radii, masses, mass. */
+typedef struct dspy_mixture {
+    PyObject *given[4]; /* the arguments as passed (borrowed), NULL if not */
+    ds_mixture mixture; /* what the library is given, pointing into the below */
+    ds_species *kinds;  /* PyMem_Raw: the species */
+    double *radii;      /* PyMem_Raw: radii per disk */
+    double *masses;     /* PyMem_Raw: masses per disk */
+    int any;            /* species or radii given: a ds_mixture for the library */
+    PyObject *args;     /* a new dict of the four, normalised (for params, repr) */
+} dspy_mixture;
+#define DSPY_MIXTURE_INIT                                                                          \
+    {                                                                                              \
+        {NULL, NULL, NULL, NULL}, {0, NULL, NULL, NULL, DS_MASS_EQUAL}, NULL, NULL, NULL, 0, NULL  \
+    }
+
+/* The index of a mixture keyword (0 .. 3), or -1. */
+int dspy_mixture_keyword(const char *name);
+/* The given values into a ds_mixture for n disks, and m->args; -1 with an
+ * exception (TypeError, ArgumentError for a shape or a negative count). */
+int dspy_mixture_convert(dspy_mixture *m, size_t n);
+/* The ds_mixture for the library, or NULL for disks of one kind. */
+const ds_mixture *dspy_mixture_of(const dspy_mixture *m);
+/* Frees the arrays (not args). */
+void dspy_mixture_free(dspy_mixture *m);
+/* The arguments' names in Sim's order. */
+extern const char *const dspy_mixture_names[4];
 
 /* ---------------------------------------------------------------- parameters */
 
-/* ds_params from Sim's arguments (n, radius, and the keyword-only rest),
- * checked by ds_diagnose_params: on failure the library's sentence is
- * raised. warning receives the first warning's sentence ("" if none). */
-int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params, char warning[256]);
+/* ds_params and the mixture from Sim's arguments (n, radius, and the
+ * keyword-only rest), checked by ds_diagnose_mixture: on failure the
+ * library's sentence is raised (and the mixture freed). On success the
+ * caller frees the mixture (dspy_mixture_free) and owns mixture->args.
+ * warning receives the first warning's sentence ("" if none). */
+int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params,
+                          dspy_mixture *mixture, char warning[256]);
 /* The keyword arguments that recreate params, as a dict (for repr and
- * Sim.params), without the arguments whose bit is set in unknown. */
-PyObject *dspy_params_dict(const ds_params *params, unsigned unknown);
+ * Sim.params), without the arguments whose bit is set in unknown, with
+ * those of mixture_args (a dict, or NULL), arrays copied. */
+PyObject *dspy_params_dict(const ds_params *params, unsigned unknown, PyObject *mixture_args);
 /* "Sim(400, 5.0, integrator='event')": the arguments that differ from
  * the defaults (and are known). */
-PyObject *dspy_params_repr(const ds_params *params, unsigned unknown);
+PyObject *dspy_params_repr(const ds_params *params, unsigned unknown, PyObject *mixture_args);
 /* The parameters of a simulation read back from the library (a loaded
  * checkpoint), as far as it tells them; returns the mask of those it
  * does not (seed, speed, placement). */
@@ -128,21 +167,24 @@ unsigned dspy_params_of_sim(const ds_sim *sim, ds_params *params);
 /* The parameters of a dict of Sim's keyword arguments (a pickle's),
  * checked as Sim checks them; unknown receives the mask of the arguments
  * the dict does not have. */
-int dspy_params_from_dict(PyObject *dict, ds_params *params, unsigned *unknown);
+int dspy_params_from_dict(PyObject *dict, ds_params *params, dspy_mixture *mixture,
+                          unsigned *unknown);
 /* Whether the argument name is in the unknown mask. */
 unsigned dspy_param_unknown(unsigned unknown, const char *name);
 /* The text of Sim's signature for its docstring. */
 #define DSPY_SIM_SIGNATURE                                                                         \
     "Sim(n, radius, *, seed=20260101, integrator='step', boundary='walls', "                       \
-    "placement='random', box=1000.0, box_y=None, dt=0.001, speed=100.0, broadphase='auto')"
+    "placement='random', box=1000.0, box_y=None, dt=0.001, speed=100.0, broadphase='auto', "       \
+    "species=None, radii=None, masses=None, mass='equal')"
 
 /* ---------------------------------------------------------------- Sim */
 
 typedef struct dspy_sim {
     PyObject_HEAD
-    ds_sim *sim;      /* NULL once closed (or before __init__) */
-    ds_params params; /* as created, for repr and params */
-    unsigned unknown; /* members of params not known (a loaded checkpoint) */
+    ds_sim *sim;            /* NULL once closed (or before __init__) */
+    ds_params params;       /* as created, for repr and params */
+    unsigned unknown;       /* members of params not known (a loaded checkpoint) */
+    PyObject *mixture_args; /* the mixture's arguments as a dict (NULL before __init__) */
     /* Set while a call runs without the GIL (run, step, creation,
      * set_state, writing): any other use of this Sim from another thread
      * then raises Error instead of racing the library. */
@@ -163,6 +205,13 @@ PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs);
 /* Every disk of sim (ds_get_all) into a new buffer; NULL with MemoryError. */
 ds_disk *dspy_get_all(const ds_sim *sim);
 
+/* growth.c: compression, velocities, contacts. */
+PyObject *dspy_sim_set_growth(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_scale_velocities(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_contacts(dspy_sim *self, PyObject *args, PyObject *kwargs);
+int dspy_add_contacts_type(PyObject *module);
+extern const char dspy_set_growth_doc[], dspy_scale_velocities_doc[], dspy_contacts_doc[];
+
 /* frames.c */
 PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_read_frame(PyObject *module, PyObject *args, PyObject *kwargs);
@@ -182,7 +231,8 @@ PyObject *dspy_restore(PyObject *module, PyObject *args);
 extern const char dspy_load_doc[];
 /* Makes self own sim (which it frees on failure), its parameters those of
  * the library's answer, or params if given. */
-int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown);
+int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown,
+                   PyObject *mixture_args);
 
 /* ase.c */
 PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused);

@@ -8,10 +8,13 @@ static PyObject *memory_needed(PyObject *module, PyObject *args, PyObject *kwarg
 {
     (void)module;
     ds_params p;
-    if (dspy_params_from_args(args, kwargs, &p, NULL) < 0)
+    dspy_mixture mix = DSPY_MIXTURE_INIT;
+    if (dspy_params_from_args(args, kwargs, &p, &mix, NULL) < 0)
         return NULL;
     size_t bytes = 0;
-    const ds_status st = ds_memory_needed(&p, &bytes);
+    const ds_status st = ds_memory_needed_mixture(&p, dspy_mixture_of(&mix), &bytes);
+    dspy_mixture_free(&mix);
+    Py_XDECREF(mix.args);
     if (st != DS_OK)
         return dspy_raise(st, "n", ds_status_str(st));
     return PyLong_FromSize_t(bytes);
@@ -54,9 +57,11 @@ static struct PyModuleDef module_def = {
 
 static int add_constants(PyObject *m)
 {
-    const dspy_kind kinds[] = {DSPY_INTEGRATOR, DSPY_BOUNDARY, DSPY_PLACEMENT, DSPY_BROADPHASE};
-    const char *const names[] = {"INTEGRATORS", "BOUNDARIES", "PLACEMENTS", "BROADPHASES"};
-    for (size_t k = 0; k < 4; ++k) {
+    const dspy_kind kinds[] = {DSPY_INTEGRATOR, DSPY_BOUNDARY,  DSPY_PLACEMENT,
+                               DSPY_BROADPHASE, DSPY_MASS_RULE, DSPY_GROWTH_STATE};
+    const char *const names[] = {"INTEGRATORS", "BOUNDARIES", "PLACEMENTS",
+                                 "BROADPHASES", "MASS_RULES", "GROWTH_STATES"};
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
         PyObject *t = dspy_names(kinds[k]);
         if (!t || PyModule_AddObject(m, names[k], t) < 0) {
             Py_XDECREF(t);
@@ -67,7 +72,8 @@ static int add_constants(PyObject *m)
         PyModule_AddObject(m, "DEFAULT_SEED", PyLong_FromUnsignedLongLong(DS_DEFAULT_SEED)) < 0 ||
         PyModule_AddObject(m, "CONTACT_TOLERANCE", PyFloat_FromDouble(DS_CONTACT_TOLERANCE)) < 0 ||
         PyModule_AddObject(m, "MAX_AREA_FRACTION", PyFloat_FromDouble(DS_MAX_AREA_FRACTION)) < 0 ||
-        PyModule_AddIntConstant(m, "MANY_DISKS", DS_MANY_DISKS) < 0)
+        PyModule_AddIntConstant(m, "MANY_DISKS", DS_MANY_DISKS) < 0 ||
+        PyModule_AddObject(m, "JAMMED_Z", PyFloat_FromDouble(DS_JAMMED_Z)) < 0)
         return -1;
     return 0;
 }
@@ -80,8 +86,8 @@ PyMODINIT_FUNC PyInit__disksim(void)
     PyObject *m = PyModule_Create(&module_def);
     if (!m)
         return NULL;
-    if (dspy_add_exceptions(m) < 0 || dspy_add_frame_type(m) < 0 || add_constants(m) < 0 ||
-        PyModule_AddObjectRef(m, "Sim", (PyObject *)&dspy_SimType) < 0) {
+    if (dspy_add_exceptions(m) < 0 || dspy_add_frame_type(m) < 0 || dspy_add_contacts_type(m) < 0 ||
+        add_constants(m) < 0 || PyModule_AddObjectRef(m, "Sim", (PyObject *)&dspy_SimType) < 0) {
         Py_DECREF(m);
         return NULL;
     }

@@ -2,8 +2,8 @@
 /* The names of the library's enumerations, as the command takes them:
  * integrators and boundaries through the library's own name functions,
  * so a new integrator is a name here without an edit; placements from a
- * table (the library has no name function for them); broad phases through
- * ds_broadphase_name. */
+ * table (the library has no name function for them), as are mass rules
+ * and growth states; broad phases through ds_broadphase_name. */
 
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
 
@@ -14,6 +14,13 @@
 #define MOST_VALUES 64
 
 static const char *const placement_names[] = {[DS_RANDOM] = "random", [DS_LATTICE] = "lattice"};
+static const char *const mass_rule_names[] = {[DS_MASS_EQUAL] = "equal", [DS_MASS_AREA] = "area"};
+static const char *const growth_state_names[] = {[DS_GROWTH_NONE] = "none",
+                                                 [DS_GROWING] = "growing",
+                                                 [DS_GROWTH_REACHED_ETA] = "reached_eta",
+                                                 [DS_GROWTH_JAMMED] = "jammed"};
+#define NAME_IN(table, value)                                                                      \
+    ((size_t)(value) < sizeof table / sizeof table[0] ? table[value] : NULL)
 
 const char *dspy_name_of(dspy_kind kind, int value)
 {
@@ -28,9 +35,13 @@ const char *dspy_name_of(dspy_kind kind, int value)
         name = ds_boundary_name((ds_boundary)value);
         break;
     case DSPY_PLACEMENT:
-        name = (size_t)value < sizeof placement_names / sizeof placement_names[0]
-                   ? placement_names[value]
-                   : NULL;
+        name = NAME_IN(placement_names, value);
+        break;
+    case DSPY_MASS_RULE:
+        name = NAME_IN(mass_rule_names, value);
+        break;
+    case DSPY_GROWTH_STATE:
+        name = NAME_IN(growth_state_names, value);
         break;
     case DSPY_BROADPHASE:
         name = ds_broadphase_name((ds_broadphase)value);

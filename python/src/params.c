@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Sim's arguments as a ds_params: one table row per argument, so a new
- * member of ds_params (a mixture's radii, growth) is one row here, one
- * line of DSPY_SIM_SIGNATURE and one paragraph of Sim's docstring.
+ * member of ds_params is one row here, one line of DSPY_SIM_SIGNATURE and
+ * one paragraph of Sim's docstring. The mixture's arguments (species,
+ * radii, masses, mass) are a ds_mixture beside it, made in mixture.c.
  *
  * The library judges every value (ds_diagnose_params) and its sentence
  * is what is raised; the module refuses only what Python adds: wrong
@@ -129,9 +130,21 @@ static const param_arg *find(PyObject *key)
     return NULL;
 }
 
+static int mixture_keyword(PyObject *key)
+{
+    const char *name = PyUnicode_Check(key) ? PyUnicode_AsUTF8(key) : NULL;
+    if (!name) {
+        PyErr_Clear();
+        return -1;
+    }
+    return dspy_mixture_keyword(name);
+}
+
 /* Python's own rules for calling: at most two positional arguments, each
- * argument once, no unknown keyword, n and radius given. */
-static int parse(PyObject *args, PyObject *kwargs, ds_params *p)
+ * argument once, no unknown keyword, n and radius given. The mixture's
+ * arguments are kept (borrowed) in m->given, to be converted once n is
+ * known. */
+static int parse(PyObject *args, PyObject *kwargs, ds_params *p, dspy_mixture *m)
 {
     const Py_ssize_t given = args ? PyTuple_GET_SIZE(args) : 0;
     if (given > POSITIONAL) {
@@ -151,6 +164,11 @@ static int parse(PyObject *args, PyObject *kwargs, ds_params *p)
     PyObject *key, *value;
     while (kwargs && PyDict_Next(kwargs, &pos, &key, &value)) {
         const param_arg *a = find(key);
+        const int mk = a ? -1 : mixture_keyword(key);
+        if (mk >= 0) {
+            m->given[mk] = value; /* a dict has each key once */
+            continue;
+        }
         if (!a) {
             PyErr_Format(PyExc_TypeError, "Sim() got an unexpected keyword argument %R", key);
             return -1;
@@ -173,18 +191,21 @@ static int parse(PyObject *args, PyObject *kwargs, ds_params *p)
     return 0;
 }
 
-int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params, char warning[256])
+int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params,
+                          dspy_mixture *mixture, char warning[256])
 {
     ds_params p = ds_default_params(0, 0.0);
     for (size_t k = 0; k < PARAM_ARGS; ++k)
         if (param_args[k].kind == ARG_LENGTH)
             *(double *)member(&p, &param_args[k]) = param_args[k].fallback;
-    if (parse(args, kwargs, &p) < 0)
+    if (parse(args, kwargs, &p, mixture) < 0 || dspy_mixture_convert(mixture, p.n) < 0)
         return -1;
     unsigned warnings = 0;
     ds_params_error err;
-    const ds_status st = ds_diagnose_params(&p, &warnings, &err);
+    const ds_status st = ds_diagnose_mixture(&p, dspy_mixture_of(mixture), &warnings, &err);
     if (st != DS_OK) {
+        dspy_mixture_free(mixture);
+        Py_CLEAR(mixture->args);
         dspy_raise(st, err.field, err.message);
         return -1;
     }
@@ -194,7 +215,24 @@ int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params, c
     return 0;
 }
 
-PyObject *dspy_params_dict(const ds_params *p, unsigned unknown)
+/* The mixture's arguments into dict, arrays copied (so that changing
+ * them changes nothing). */
+static int add_mixture_args(PyObject *dict, PyObject *mixture_args)
+{
+    Py_ssize_t pos = 0;
+    PyObject *key, *value;
+    while (mixture_args && PyDict_Next(mixture_args, &pos, &key, &value)) {
+        PyObject *v = PyArray_Check(value) ? PyArray_NewCopy((PyArrayObject *)value, NPY_CORDER)
+                                           : Py_NewRef(value);
+        const int r = v ? PyDict_SetItem(dict, key, v) : -1;
+        Py_XDECREF(v);
+        if (r < 0)
+            return -1;
+    }
+    return 0;
+}
+
+PyObject *dspy_params_dict(const ds_params *p, unsigned unknown, PyObject *mixture_args)
 {
     PyObject *dict = PyDict_New();
     for (size_t k = 0; dict && k < PARAM_ARGS; ++k) {
@@ -227,16 +265,37 @@ PyObject *dspy_params_dict(const ds_params *p, unsigned unknown)
             Py_CLEAR(dict);
         Py_XDECREF(value);
     }
+    if (dict && add_mixture_args(dict, mixture_args) < 0)
+        Py_CLEAR(dict);
     return dict;
 }
 
-PyObject *dspy_params_repr(const ds_params *p, unsigned unknown)
+/* ", species=..." for each mixture argument that is not its default. */
+static PyObject *mixture_repr(PyObject *text, PyObject *mixture_args)
+{
+    for (int k = 0; text && mixture_args && k < 4; ++k) {
+        const char *name = dspy_mixture_names[k];
+        PyObject *v = PyDict_GetItemString(mixture_args, name);
+        const int plain = !v || v == Py_None ||
+                          (PyUnicode_Check(v) && PyUnicode_CompareWithASCIIString(v, "equal") == 0);
+        if (plain)
+            continue;
+        PyObject *part = PyUnicode_FromFormat(", %s=%R", name, v);
+        PyObject *joined = part ? PyUnicode_Concat(text, part) : NULL;
+        Py_XDECREF(part);
+        Py_SETREF(text, joined);
+    }
+    return text;
+}
+
+PyObject *dspy_params_repr(const ds_params *p, unsigned unknown, PyObject *mixture_args)
 {
     ds_params defaults = ds_default_params(p->n, p->radius);
     for (size_t k = 0; k < PARAM_ARGS; ++k)
         if (param_args[k].kind == ARG_LENGTH)
             *(double *)member(&defaults, &param_args[k]) = param_args[k].fallback;
-    PyObject *mine = dspy_params_dict(p, unknown), *plain = dspy_params_dict(&defaults, 0);
+    PyObject *mine = dspy_params_dict(p, unknown, NULL),
+             *plain = dspy_params_dict(&defaults, 0, NULL);
     PyObject *text = mine && plain
                          ? PyUnicode_FromFormat("Sim(%R, %R", PyDict_GetItemString(mine, "n"),
                                                 PyDict_GetItemString(mine, "radius"))
@@ -254,6 +313,7 @@ PyObject *dspy_params_repr(const ds_params *p, unsigned unknown)
         Py_XDECREF(part);
         Py_SETREF(text, joined);
     }
+    text = mixture_repr(text, mixture_args);
     if (text) {
         PyObject *closed = PyUnicode_FromString(")");
         PyObject *joined = closed ? PyUnicode_Concat(text, closed) : NULL;
@@ -293,10 +353,10 @@ unsigned dspy_param_unknown(unsigned unknown, const char *name)
     return 0;
 }
 
-int dspy_params_from_dict(PyObject *dict, ds_params *p, unsigned *unknown)
+int dspy_params_from_dict(PyObject *dict, ds_params *p, dspy_mixture *mixture, unsigned *unknown)
 {
     PyObject *empty = PyTuple_New(0);
-    const int r = empty ? dspy_params_from_args(empty, dict, p, NULL) : -1;
+    const int r = empty ? dspy_params_from_args(empty, dict, p, mixture, NULL) : -1;
     Py_XDECREF(empty);
     *unknown = 0;
     for (size_t k = 0; r == 0 && k < PARAM_ARGS; ++k)

@@ -22,7 +22,9 @@ static const real_getter get_time = {ds_time}, get_radius = {ds_radius}, get_box
                          get_kinetic_energy = {ds_kinetic_energy}, get_pressure = {ds_pressure},
                          get_virial_pressure = {ds_virial_pressure}, get_psi6 = {ds_psi6},
                          get_wall_impulse = {ds_wall_impulse},
-                         get_collision_seconds = {ds_collision_seconds};
+                         get_collision_seconds = {ds_collision_seconds},
+                         get_radius_max = {ds_radius_max}, get_area_fraction = {ds_area_fraction},
+                         get_growth_z = {ds_growth_z};
 static const count_getter get_steps = {ds_steps}, get_n = {count_of},
                           get_collision_count = {ds_collision_count},
                           get_wall_count = {ds_wall_count}, get_pairs_tested = {ds_pairs_tested};
@@ -61,6 +63,10 @@ static PyObject *name_property(dspy_sim *self, void *closure)
             Py_RETURN_NONE; /* a loaded checkpoint does not say */
         value = (int)self->params.placement;
         break;
+    case DSPY_GROWTH_STATE:
+        value = (int)ds_growth_state_of(sim);
+        break;
+    case DSPY_MASS_RULE:
     case DSPY_KINDS:
         break;
     }
@@ -68,7 +74,35 @@ static PyObject *name_property(dspy_sim *self, void *closure)
     return PyUnicode_FromString(name ? name : "unknown");
 }
 static const int integrator_kind = DSPY_INTEGRATOR, boundary_kind = DSPY_BOUNDARY,
-                 broadphase_kind = DSPY_BROADPHASE, placement_kind = DSPY_PLACEMENT;
+                 broadphase_kind = DSPY_BROADPHASE, placement_kind = DSPY_PLACEMENT,
+                 growth_state_kind = DSPY_GROWTH_STATE;
+
+/* Every disk's radius (masses 0) or mass (1) as a new (n,) array. */
+static PyObject *per_disk(dspy_sim *self, int masses)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    npy_intp dims[1] = {(npy_intp)ds_count(sim)};
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, dims, NPY_DOUBLE);
+    if (a) {
+        double *out = (double *)PyArray_DATA(a);
+        ds_get_radii(sim, masses ? NULL : out, masses ? out : NULL);
+    }
+    return (PyObject *)a;
+}
+
+static PyObject *radii_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return per_disk(self, 0);
+}
+
+static PyObject *masses_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    return per_disk(self, 1);
+}
 
 static PyObject *momentum_property(dspy_sim *self, void *closure)
 {
@@ -84,7 +118,8 @@ static PyObject *momentum_property(dspy_sim *self, void *closure)
 static PyObject *params_property(dspy_sim *self, void *closure)
 {
     (void)closure;
-    return dspy_sim_of(self) ? dspy_params_dict(&self->params, self->unknown) : NULL;
+    return dspy_sim_of(self) ? dspy_params_dict(&self->params, self->unknown, self->mixture_args)
+                             : NULL;
 }
 
 static PyObject *closed_property(dspy_sim *self, void *closure)
@@ -114,7 +149,18 @@ static PyObject *running_property(dspy_sim *self, void *closure)
 
 PyGetSetDef dspy_sim_getset[] = {
     COUNT(n, "Number of disks."),
-    REAL(radius, "Disk radius."),
+    REAL(radius, "Disk radius; in a mixture the reference radius R (mass='area' weighs a\n"
+                 "disk (r / R)^2), the disks' own being radii."),
+    {"radii", (getter)radii_property, NULL,
+     "Every disk's radius as a new (n,) float64 array, in generation order (a copy;\n"
+     "radius for each disk of one kind). Growth makes them grow.",
+     NULL},
+    {"masses", (getter)masses_property, NULL,
+     "Every disk's mass as a new (n,) float64 array, in generation order (a copy;\n"
+     "1 for each disk of one kind).",
+     NULL},
+    REAL(radius_max, "The largest radius (radius with one kind of disk)."),
+    REAL(area_fraction, "The fraction of the box the disks cover: sum of pi r^2 over box box_y."),
     REAL(box, "Width of the box."),
     REAL(box_y, "Height of the box (box when square)."),
     REAL(dt, "The time step: the simulated time one step() advances."),
@@ -133,9 +179,9 @@ PyGetSetDef dspy_sim_getset[] = {
      "The velocities as a new (n, 2) float64 array, row i disk i: a copy, as\n"
      "positions.",
      NULL},
-    REAL(kinetic_energy, "Kinetic energy, the sum of v^2 / 2 (unit masses)."),
+    REAL(kinetic_energy, "Kinetic energy, the sum of m v^2 / 2 (masses 1 unless a mixture's)."),
     {"momentum", (getter)momentum_property, NULL,
-     "Total momentum (px, py). Pairs conserve it; walls do not.", NULL},
+     "Total momentum (px, py), the sum of m v. Pairs conserve it; walls do not.", NULL},
     REAL(pressure, "Wall pressure: the wall impulse per unit time per unit length of wall the\n"
                    "centres reach (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the\n"
                    "last reset; 0 before any step. A force per length: the ideal gas has\n"
@@ -160,10 +206,18 @@ PyGetSetDef dspy_sim_getset[] = {
          "Wall-clock seconds spent on collisions, summed over all steps: with 'step',\n"
          "sorting, pruning, testing and resolving pairs; with 'event', processing\n"
          "events (collisions, wall turns, cell crossings) and their predictions."),
+    NAME(growth_state,
+         "Growth (set_growth): 'none' (never grown, or stopped with rate 0), 'growing',\n"
+         "'reached_eta' (stopped at until_eta) or 'jammed' (stopped when Z passed\n"
+         "until_z)."),
+    REAL(growth_z, "The reduced pressure Z growth measured over its last window of 2 n\n"
+                   "collisions (when it jammed, the window that stopped it); 0 before its\n"
+                   "first window, and for a simulation that never grew."),
     {"params", (getter)params_property, NULL,
      "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
      "same simulation at time 0. A Sim from load() has those the library tells: no\n"
-     "seed, speed or placement.",
+     "seed, speed, placement or mixture arguments (its radii and masses are radii\n"
+     "and masses).",
      NULL},
     {"closed", (getter)closed_property, NULL, "Whether close() has freed this Sim.", NULL},
     {"running", (getter)running_property, NULL,

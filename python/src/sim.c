@@ -31,7 +31,8 @@ ds_sim *dspy_sim_of(dspy_sim *self)
 
 static const char sim_doc[] = DSPY_SIM_SIGNATURE
     "\n--\n\n"
-    "N hard disks of one radius in a box: elastic billiards, through libdisksim.\n"
+    "N hard disks of one radius in a box (or a mixture of radii and masses):\n"
+    "elastic billiards, through libdisksim.\n"
     "\n"
     "Sim(400, 5.0) is the command's `disks 400 5`: 400 disks of radius 5 placed at\n"
     "random in the box [0, 1000]^2 with walls, every disk at speed 100 in a random\n"
@@ -62,8 +63,29 @@ static const char sim_doc[] = DSPY_SIM_SIGNATURE
     "            (the fastest for the integrator), or for 'step' 'sap', 'strips',\n"
     "            'brute'; for 'event' 'cells', 'brute'.\n"
     "\n"
+    "A mixture, given as species or disk by disk (one of the two):\n"
+    "species     [(count, radius), ...] or [(count, radius, mass), ...]: counts that\n"
+    "            add up to n; disks 0 .. count_0 - 1 are of the first kind, and so on.\n"
+    "radii       per disk: n radii, in generation order (an (n,) array).\n"
+    "masses      per disk, with radii: n masses (None: by the mass rule).\n"
+    "mass        the rule for the masses not given: 'equal' (1, whatever the radius)\n"
+    "            or 'area' ((r / R)^2, R = radius: disks of radius R weigh 1).\n"
+    "Each disk then has its own radius and mass: pairs touch at the sum of their\n"
+    "radii, a collision is elastic along the line of centres for the two masses,\n"
+    "walls turn a disk at its own radius. radius is the reference radius R (of\n"
+    "mass='area', and what the radius property returns); the disks' radii come from\n"
+    "the mixture, and the limits above hold with every radius. Random placement\n"
+    "places the largest disks first; the lattice puts them on sites at least the\n"
+    "largest diameter apart, in an order drawn from the seed. A mixture of one kind\n"
+    "of radius R and mass 1 is exactly the plain simulation. Without species or\n"
+    "radii every disk weighs 1 by either rule.\n"
+    "\n"
+    "Compression: set_growth() grows every radius (integrator='event', periodic),\n"
+    "growth_state and growth_z follow it, contacts() counts a packing's contacts.\n"
+    "\n"
     "Raises ArgumentError (a ValueError) with the library's sentence for a value it\n"
-    "refuses (e.field names the argument), NoMemoryError for more disks than this\n"
+    "refuses (e.field names the argument; 'mixture' for the mixture's values), NoMemoryError for "
+    "more disks than this\n"
     "machine's memory holds, TypeError for an argument of the wrong type. A request\n"
     "that runs with degraded physics (a time step so long that head-on pairs can\n"
     "pass through each other) gives a RuntimeWarning saying so.\n"
@@ -85,6 +107,7 @@ static PyObject *sim_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
         self->sim = NULL;
         self->busy = 0;
         self->unknown = 0;
+        self->mixture_args = NULL;
         memset(&self->params, 0, sizeof self->params);
     }
     return (PyObject *)self;
@@ -97,46 +120,60 @@ static int sim_init(dspy_sim *self, PyObject *args, PyObject *kwargs)
         return -1;
     }
     ds_params p;
+    dspy_mixture mix = DSPY_MIXTURE_INIT;
     char warning[256] = "";
-    if (dspy_params_from_args(args, kwargs, &p, warning) < 0)
+    if (dspy_params_from_args(args, kwargs, &p, &mix, warning) < 0)
         return -1;
+    const ds_mixture *mixture = dspy_mixture_of(&mix);
     size_t bytes = 0;
-    const ds_status need = ds_memory_needed(&p, &bytes);
-    if (need != DS_OK) {
-        dspy_raisef(need, "n", "n = %zu disks: %s", p.n, ds_status_str(need));
-        return -1;
-    }
+    const ds_status need = ds_memory_needed_mixture(&p, mixture, &bytes);
     char what[64];
     PyOS_snprintf(what, sizeof what, "n = %zu disks", p.n);
-    if (dspy_check_memory((double)bytes, what) < 0)
-        return -1;
-    if (warning[0] && PyErr_WarnEx(PyExc_RuntimeWarning, warning, 1) < 0)
-        return -1; /* warnings turned into errors */
     ds_sim *sim = NULL;
-    ds_status st;
-    self->busy = 1;
-    Py_BEGIN_ALLOW_THREADS
-    st = ds_create(&p, &sim);
-    Py_END_ALLOW_THREADS
-    self->busy = 0;
-    if (st != DS_OK) {
-        if (st == DS_ERR_PLACEMENT)
+    ds_status st = DS_OK;
+    if (need != DS_OK)
+        dspy_raisef(need, "n", "n = %zu disks: %s", p.n, ds_status_str(need));
+    else if (dspy_check_memory((double)bytes, what) < 0)
+        ;
+    else if (warning[0] && PyErr_WarnEx(PyExc_RuntimeWarning, warning, 1) < 0)
+        ; /* warnings turned into errors */
+    else {
+        self->busy = 1;
+        Py_BEGIN_ALLOW_THREADS
+        st = ds_create_mixture(&p, mixture, &sim);
+        Py_END_ALLOW_THREADS
+        self->busy = 0;
+        if (st == DS_ERR_PLACEMENT && mixture)
+            dspy_raisef(st, "n",
+                        "n = %zu disks of the mixture could not be placed: a disk found no free "
+                        "place in 2 million random draws (placement='lattice' fits more)",
+                        p.n);
+        else if (st == DS_ERR_PLACEMENT)
             dspy_raisef(st, "n",
                         "n = %zu disks of radius %g could not be placed: a disk found no free "
                         "place in 2 million random draws (placement='lattice' fits more)",
                         p.n, p.radius);
-        else
+        else if (st != DS_OK)
             dspy_raisef(st, NULL, "n = %zu disks: %s", p.n, ds_status_str(st));
+    }
+    dspy_mixture_free(&mix);
+    if (!sim) {
+        Py_XDECREF(mix.args);
         return -1;
     }
-    return dspy_sim_adopt(self, sim, &p, 0);
+    return dspy_sim_adopt(self, sim, &p, 0, mix.args);
 }
 
-int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown)
+int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigned unknown,
+                   PyObject *mixture_args)
 {
-    if (self->busy) {
+    if (!mixture_args) /* a loaded checkpoint: its radii and masses are radii, masses */
+        mixture_args = PyDict_New();
+    if (self->busy || !mixture_args) {
         ds_destroy(sim);
-        PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
+        Py_XDECREF(mixture_args);
+        if (self->busy)
+            PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
         return -1;
     }
     ds_params p;
@@ -148,12 +185,14 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
     self->sim = sim;
     self->params = p;
     self->unknown = unknown;
+    Py_XSETREF(self->mixture_args, mixture_args);
     return 0;
 }
 
 static void sim_dealloc(dspy_sim *self)
 {
     ds_destroy(self->sim);
+    Py_CLEAR(self->mixture_args);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -189,8 +228,9 @@ static PyObject *sim_exit(dspy_sim *self, PyObject *args)
 
 static PyObject *sim_repr(dspy_sim *self)
 {
-    PyObject *args =
-        self->sim || self->busy ? dspy_params_repr(&self->params, self->unknown) : NULL;
+    PyObject *args = self->sim || self->busy
+                         ? dspy_params_repr(&self->params, self->unknown, self->mixture_args)
+                         : NULL;
     if (!self->sim && !self->busy)
         return PyUnicode_FromString("<disksim.Sim, closed>");
     if (!args)
@@ -304,6 +344,12 @@ static PyMethodDef sim_methods[] = {
      "with the library's sentence naming the disks. The integrator then starts\n"
      "afresh from the new state; time, steps and the observables go on.\n"
      "The arrays are copied: changing them afterwards changes nothing."},
+    {"set_growth", (PyCFunction)(void (*)(void))dspy_sim_set_growth, METH_VARARGS | METH_KEYWORDS,
+     dspy_set_growth_doc},
+    {"scale_velocities", (PyCFunction)(void (*)(void))dspy_sim_scale_velocities,
+     METH_VARARGS | METH_KEYWORDS, dspy_scale_velocities_doc},
+    {"contacts", (PyCFunction)(void (*)(void))dspy_sim_contacts, METH_VARARGS | METH_KEYWORDS,
+     dspy_contacts_doc},
     {"write_frame", (PyCFunction)(void (*)(void))dspy_sim_write_frame, METH_VARARGS | METH_KEYWORDS,
      "write_frame($self, /, path, velocities=False)\n--\n\n"
      "Write the disks to the text file path as the command's frames are written:\n"

@@ -24,7 +24,10 @@ def test_everything_public_has_a_docstring():
 def test_help_reads_like_the_header():
     text = pydoc.render_doc(disksim.Sim, renderer=pydoc.plaintext)
     for words in ("N hard disks of one radius", "'event': exact event-driven", "run(self, /, steps)",
-                  "virial_pressure", "Pressure from the collision virial", "releases the GIL"):
+                  "virial_pressure", "Pressure from the collision virial", "releases the GIL",
+                  "species     [(count, radius), ...]", "mass        the rule for the masses",
+                  "set_growth(self, /, rate, until_eta=0.0, until_z=0.0)",
+                  "Lubachevsky-Stillinger", "contacts(self, /, gap=0.0001)", "growth_state"):
         assert words in text, words
 
 
@@ -33,6 +36,7 @@ def test_the_signature_is_introspectable_and_its_defaults_are_the_librarys():
     assert list(parameters)[:2] == ["n", "radius"]
     assert parameters["seed"].default == disksim.DEFAULT_SEED == 20260101
     assert parameters["seed"].kind is inspect.Parameter.KEYWORD_ONLY
+    assert list(parameters)[-4:] == ["species", "radii", "masses", "mass"]
     s = disksim.Sim(400, 5)
     defaults = {k: p.default for k, p in parameters.items() if k not in ("n", "radius")}
     assert {k: v for k, v in s.params.items() if k not in ("n", "radius")} == defaults
@@ -46,6 +50,9 @@ def test_the_names_are_the_librarys():
     assert disksim.BOUNDARIES == ("walls", "periodic")
     assert disksim.PLACEMENTS == ("random", "lattice")
     assert set(disksim.BROADPHASES) == {"sap", "brute", "strips", "auto", "cells"}
+    assert disksim.MASS_RULES == ("equal", "area")
+    assert disksim.GROWTH_STATES == ("none", "growing", "reached_eta", "jammed")
+    assert disksim.JAMMED_Z == 1e6
     assert disksim.__version__ == disksim.library_version
 
 

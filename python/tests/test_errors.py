@@ -23,6 +23,10 @@ def sim():
     return disksim.Sim(20, 5)
 
 
+def periodic():
+    return disksim.Sim(20, 5, integrator="event", boundary="periodic")
+
+
 # (what, call, exception, words of the message)
 BAD = [
     ("no disks", lambda: disksim.Sim(0, 5), ArgumentError, "n = 0: there must be at least one disk"),
@@ -122,6 +126,86 @@ BAD = [
     ("load path None", lambda: disksim.load(None), TypeError, "NoneType"),
     ("save path int", lambda: sim().save(3.5), TypeError, "float"),
     ("save nowhere", lambda: sim().save("/nonexistent/x.ckpt"), FileError, "No such file"),
+    # mixtures: the library's sentences (field 'mixture'), and what only the
+    # module sees (a negative count, an array of another length)
+    ("species counts short", lambda: disksim.Sim(10, 5, species=[(4, 5), (5, 7)]), ArgumentError,
+     "mixture: the species' counts add up to 9, not n = 10"),
+    ("species counts over", lambda: disksim.Sim(10, 5, species=[(8, 5), (5, 7)]), ArgumentError,
+     "add up to more than n = 10"),
+    ("negative species count", lambda: disksim.Sim(10, 5, species=[(-4, 5), (14, 7)]),
+     ArgumentError, "species[0] count = -4 must not be negative"),
+    ("species count beyond 64 bits", lambda: disksim.Sim(10, 5, species=[(2**64, 5)]),
+     NoMemoryError, "species[0] count = 18446744073709551616 cannot be held in memory"),
+    ("NaN species radius", lambda: disksim.Sim(10, 5, species=[(5, 5), (5, NAN)]), ArgumentError,
+     "mixture: disk 5's radius nan is not a number > 0"),
+    ("negative species mass", lambda: disksim.Sim(10, 5, species=[(5, 5), (5, 7, -1)]),
+     ArgumentError, "mixture: species 1's mass -1 is not a finite number >= 0 (0 for the rule)"),
+    ("species radius too big", lambda: disksim.Sim(10, 5, species=[(5, 5), (5, 600)]),
+     ArgumentError, "mixture: its largest radius, 600, does not fit a box of 1000 x 1000"),
+    ("species of four items", lambda: disksim.Sim(10, 5, species=[(10, 5, 1, 2)]), ArgumentError,
+     "species[0] has 4 items: it must be (count, radius) or (count, radius, mass)"),
+    ("species not a sequence", lambda: disksim.Sim(10, 5, species=3), TypeError,
+     "species must be a sequence of (count, radius)"),
+    ("species item not a tuple", lambda: disksim.Sim(10, 5, species=[5]), TypeError,
+     "species[0] must be a tuple (count, radius)"),
+    ("species as text", lambda: disksim.Sim(10, 5, species="ab"), TypeError,
+     "species must be a sequence"),
+    ("species float count", lambda: disksim.Sim(10, 5, species=[(10.0, 5)]), TypeError,
+     "species[0] count must be an int"),
+    ("no species", lambda: disksim.Sim(10, 5, species=[]), ArgumentError,
+     "give either species (kinds, with their count) or radii per disk, not both and not neither"),
+    ("species and radii", lambda: disksim.Sim(3, 5, species=[(3, 5)], radii=[5, 5, 5]),
+     ArgumentError, "not both and not neither"),
+    ("radii of another n", lambda: disksim.Sim(10, 5, radii=[5, 6]), ArgumentError,
+     "radii has shape (2,): it must be (10,), one per disk (n)"),
+    ("radii of 2 dimensions", lambda: disksim.Sim(2, 5, radii=np.ones((2, 1))), ArgumentError,
+     "radii has shape (2, 1)"),
+    ("radii of text", lambda: disksim.Sim(2, 5, radii=["a", "b"]), ArgumentError,
+     "radii must be an (n,) array of numbers"),
+    ("zero radius in radii", lambda: disksim.Sim(2, 5, radii=[5, 0]), ArgumentError,
+     "mixture: disk 1's radius 0 is not a number > 0"),
+    ("masses of another n", lambda: disksim.Sim(3, 5, radii=[5, 5, 5], masses=[1]), ArgumentError,
+     "masses has shape (1,): it must be (3,)"),
+    ("masses without radii", lambda: disksim.Sim(3, 5, masses=[1, 1, 1]), ArgumentError,
+     "give either species"),
+    ("masses with species", lambda: disksim.Sim(3, 5, species=[(3, 5)], masses=[1, 1, 1]),
+     ArgumentError, "masses is per disk, given with radii"),
+    ("infinite mass", lambda: disksim.Sim(2, 5, radii=[5, 5], masses=[1, INF]), ArgumentError,
+     "mixture: disk 1's mass is not a finite number > 0"),
+    ("unknown mass rule", lambda: disksim.Sim(2, 5, radii=[5, 5], mass="volume"), ArgumentError,
+     "mass = 'volume' is not one of 'equal', 'area'"),
+    ("mass rule not a str", lambda: disksim.Sim(2, 5, mass=1), TypeError, "mass must be a str"),
+    ("mixture beyond random placement",
+     lambda: disksim.Sim(4000, 6, species=[(2000, 6), (2000, 8.4)]), ArgumentError,
+     "disks of radii 6 to 8.4"),
+    ("memory of a bad mixture", lambda: disksim.memory_needed(10, 5, species=[(3, 5)]),
+     ArgumentError, "add up to 3, not n = 10"),
+    # growth, velocities, contacts: the header's rules
+    ("growth with walls", lambda: disksim.Sim(10, 5, integrator="event").set_growth(0.1),
+     ArgumentError, "growth runs with integrator='event' in a periodic box only"),
+    ("growth with the time step", lambda: disksim.Sim(10, 5, boundary="periodic").set_growth(0.1),
+     ArgumentError, "not integrator='step' with boundary='periodic'"),
+    ("negative growth rate", lambda: periodic().set_growth(-1), ArgumentError,
+     "set_growth: rate = -1 must be a finite number >= 0"),
+    ("NaN growth rate", lambda: periodic().set_growth(NAN), ArgumentError, "rate = nan"),
+    ("until_eta passed", lambda: periodic().set_growth(0.1, until_eta=0.001), ArgumentError,
+     "set_growth: until_eta = 0.001 must be 0 (no target) or between the area fraction of now"),
+    ("until_eta beyond 1", lambda: periodic().set_growth(0.1, until_eta=1.5), ArgumentError,
+     "until_eta = 1.5"),
+    ("until_z below 1", lambda: periodic().set_growth(0.1, until_z=0.5), ArgumentError,
+     "set_growth: until_z = 0.5 must be 0 (JAMMED_Z, 1e6) or in (1, 1e9]"),
+    ("growth rate a str", lambda: periodic().set_growth("fast"), TypeError,
+     "rate must be a real number"),
+    ("no growth rate", lambda: periodic().set_growth(), TypeError, "rate"),
+    ("scale by 0", lambda: sim().scale_velocities(0), ArgumentError,
+     "factor = 0 must be a finite number > 0"),
+    ("scale by inf", lambda: sim().scale_velocities(INF), ArgumentError, "factor = inf"),
+    ("scale beyond 1e12", lambda: sim().scale_velocities(1e20), ArgumentError,
+     "factor = 1e+20 would take a velocity component to 1e+22, beyond the 1e+12 set_state "
+     "accepts"),
+    ("contacts gap 1", lambda: sim().contacts(gap=1.0), ArgumentError, "gap = 1 must be in [0, 1)"),
+    ("contacts negative gap", lambda: sim().contacts(-1e-3), ArgumentError, "gap = -0.001"),
+    ("contacts gap None", lambda: sim().contacts(None), TypeError, "gap must be a real number"),
 ]
 
 
@@ -173,12 +257,14 @@ def test_a_closed_sim_refuses_everything_and_says_so():
              lambda: s.set_state(np.zeros((10, 2))), lambda: s.write_frame("x"),
              lambda: s.to_ase(), lambda: s.reset_observables(), lambda: s.pair_histogram(1, 2),
              lambda: s.local_psi6(), lambda: s.params, lambda: s.__enter__(),
-             lambda: s.save("x"), lambda: s.__reduce__()]
+             lambda: s.save("x"), lambda: s.__reduce__(), lambda: s.set_growth(1.0),
+             lambda: s.scale_velocities(2.0), lambda: s.contacts()]
     calls += [lambda name=name: getattr(s, name) for name in (
         "n", "radius", "box", "box_y", "dt", "time", "steps", "integrator", "boundary",
         "placement", "broadphase", "kinetic_energy", "momentum", "pressure", "virial_pressure",
         "psi6", "collision_count", "wall_count", "wall_impulse", "pairs_tested",
-        "collision_seconds")]
+        "collision_seconds", "radii", "masses", "radius_max", "area_fraction", "growth_state",
+        "growth_z")]
     for call in calls:
         with pytest.raises(Error, match="this Sim is closed"):
             call()
@@ -237,17 +323,28 @@ VALUES = [0, 1, 2, 3, 7, 20, 400, -1, -2**63, 2**31, 2**32, 2**64, 10**30, True,
           "event", "step", "lattice", "random", "cells", "sap", "auto", "brute", "strips", b"x",
           "\0", [], [[1, 2]], [[1, 2], [3, 4]], object(), np.float64(3), np.int32(4),
           np.zeros((20, 2)), np.full((20, 2), NAN), np.ones((20, 2)) * 500, np.zeros((0, 2)),
-          np.zeros((2, 2, 2)), np.zeros(5, dtype=complex), np.arange(40.0).reshape(20, 2)]
+          np.zeros((2, 2, 2)), np.zeros(5, dtype=complex), np.arange(40.0).reshape(20, 2),
+          "equal", "area", [(10, 5.0), (10, 7.0)], [(20, 5.0, 2.0)], [(1, 1.0)], [(-1, 5.0)],
+          [(20, NAN)], [(2**64, 1.0)], [(20,)], [(20, 5.0, 1.0, 1.0)], [("a", 1.0)], [None],
+          ((3, 5.0), (17, 1.0, 0.0)), np.full(20, 5.0), np.linspace(1.0, 9.0, 20), np.ones(3),
+          np.full(20, -1.0), np.full(20, INF), np.ones((20, 1)), 1e-9, 0.999, 1.5, 1e6, 2e9]
 SIM_KEYWORDS = ["seed", "integrator", "boundary", "placement", "box", "box_y", "dt", "speed",
-                "broadphase", "bogus"]
+                "broadphase", "bogus", "species", "radii", "masses", "mass"]
+REFUSED = [-1, NAN, INF, -INF, "x", None, 5j]
+MIXTURE = {"species": [[(10, 5.0), (10, 7.0)], [(20, 5.0, 2.0)], [(5, 3.0), (15, 6.0)]],
+           "radii": [np.full(20, 5.0), np.linspace(1.0, 9.0, 20)],
+           "masses": [np.arange(1.0, 21.0), np.full(20, 0.5)], "mass": ["equal", "area"]}
 OK_SIZES = [1, 2, 3, 20]  # fuzzed Sims are small, so the fuzz stays fast
 
 
-def fuzz_call(rng, s, tmp_path):
+def fuzz_call(rng, s, g, tmp_path):
     pick = rng.choice
-    target = rng.randrange(11)
+    target = rng.randrange(15)
     if target == 0:
         kwargs = {k: pick(VALUES) for k in rng.sample(SIM_KEYWORDS, rng.randrange(4))}
+        # a valid mixture a third of the time, so the rest gets judged with it
+        if rng.random() < 0.3:
+            kwargs.update({k: pick(MIXTURE[k]) for k in rng.sample(list(MIXTURE), 2)})
         # A valid n and radius half the time, so the keywords get judged too.
         n = pick(OK_SIZES) if rng.random() < 0.5 else pick(VALUES)
         radius = pick([1.0, 5.0]) if rng.random() < 0.5 else pick(VALUES)
@@ -283,19 +380,44 @@ def fuzz_call(rng, s, tmp_path):
         return s.save(pick([tmp_path / "s.ckpt", pick(VALUES)]))
     if target == 9:
         return disksim.load(pick([tmp_path / "s.ckpt", tmp_path / "f.txt", pick(VALUES)]))
-    return disksim.memory_needed(pick(VALUES), pick(VALUES))
+    if target == 10:
+        # growth on a Sim where it runs (g) or not (s), then a few steps
+        # Rates from a list: a rate that grows a radius much faster than the
+        # disks move (rate R >> speed, 1e6 here) jams within a step, whose
+        # collisions then take minutes (issue note); the refused ones all.
+        t = pick([g, g, s])
+        args = [pick([0.0, 0.5, 5.0] + REFUSED)]
+        args += [pick([0.0, 0.3, 0.6, pick(VALUES)]) for _ in range(rng.randrange(3))]
+        t.set_growth(*args)
+        t.run(pick([0, 1, 5]))
+        return t.growth_state, t.growth_z
+    if target == 11:
+        # a valid factor and its inverse (the energy stays), or a refused one
+        t, factor = pick([g, s]), pick([0.5, 2.0, 0, 1e20, 1e300] + REFUSED)
+        t.scale_velocities(factor)
+        return t.scale_velocities(1 / factor)
+    if target == 12:
+        return pick([g, s]).contacts(*[pick([1e-4, pick(VALUES)])][:rng.randrange(2)])
+    if target == 13:
+        t = pick([g, s])
+        return t.radii, t.masses, t.radius_max, t.area_fraction, t.growth_state, t.params
+    kwargs = {k: pick(MIXTURE[k] + [pick(VALUES)]) for k in rng.sample(list(MIXTURE), 2)}
+    return disksim.memory_needed(pick([20, pick(VALUES)]), pick([5.0, pick(VALUES)]), **kwargs)
 
 
 def test_two_thousand_random_calls_raise_or_succeed_and_never_crash(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)  # paths such as "a" or b"x" are written here
     rng = random.Random(26)
     s = disksim.Sim(20, 5, integrator="event")
+    g = disksim.Sim(20, 5, integrator="event", boundary="periodic",
+                    species=[(10, 5.0), (10, 7.0)], mass="area")
     outcomes = {}
+    eta0 = g.area_fraction
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         for _ in range(2000):
             try:
-                fuzz_call(rng, s, tmp_path)
+                fuzz_call(rng, s, g, tmp_path)
                 outcome = "ok"
             except (TypeError, Error) as e:  # the documented ones (Error covers the rest)
                 outcome = type(e).__name__
@@ -305,6 +427,8 @@ def test_two_thousand_random_calls_raise_or_succeed_and_never_crash(tmp_path, mo
     # The fuzz reached both sides: calls that ran and calls that were refused.
     assert outcomes.get("ok", 0) > 200 and outcomes.get("ArgumentError", 0) > 200
     assert outcomes.get("TypeError", 0) > 200 and outcomes.get("FileError", 0) > 0
-    # and the Sim it hammered is still a working simulation
+    # and the Sims it hammered are still working simulations
     s.run(10)
-    assert s.positions.shape == (20, 2)
+    g.run(10)
+    assert s.positions.shape == (20, 2) and g.radii.shape == (20,)
+    assert g.area_fraction > eta0  # and the fuzz's growth did grow it
