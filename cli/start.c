@@ -310,8 +310,25 @@ static double request_eta(const ds_params *p, const ds_mixture *m)
     return 3.14159265358979323846 * covered / (box * box_y);
 }
 
+/* The library's bound on the rate: the largest pair's surfaces recede at
+ * 2 r_max rate, at most 10 rms speeds. */
+static void check_growth_rate(const options *o, double radius_max, double rms)
+{
+    const double most = 10.0 * rms / (2.0 * radius_max);
+    if (o->grow_rate > 0.0 && !(o->grow_rate <= most))
+        die(EXIT_USAGE,
+            "--grow %g is too fast: the largest disks' surfaces would recede at %g, more than 10 "
+            "times the rms speed %g; at most --grow %.6g",
+            o->grow_rate, 2.0 * radius_max * o->grow_rate, rms, most);
+}
+
 void check_growth_request(const options *o, const ds_params *p, const ds_mixture *mixture)
 {
+    double radius_max = p->radius;
+    for (size_t k = 0; mixture && k < mixture->species; ++k)
+        radius_max = mixture->kinds[k].count ? fmax(radius_max, mixture->kinds[k].radius) : radius_max;
+    /* A new start: every disk at the speed (0 means 100). */
+    check_growth_rate(o, radius_max, p->speed > 0.0 ? p->speed : 100.0);
     const double eta = request_eta(p, mixture);
     if (o->grow_rate > 0.0 && o->until_eta > 0.0 && !(o->until_eta > eta))
         die(EXIT_USAGE, "--until-eta %g must be above the start's area fraction %.6g", o->until_eta,
@@ -330,6 +347,10 @@ void start_growth(const options *o, ds_sim *sim)
     if (o->until_eta > 0.0 && !(o->until_eta > ds_area_fraction(sim)))
         die(EXIT_USAGE, "--until-eta %g must be above the start's area fraction %.6g%s%s",
             o->until_eta, ds_area_fraction(sim), source ? " in " : "", source ? source : "");
+    double mass = 0.0;
+    for (size_t i = 0; i < ds_count(sim); ++i)
+        mass += ds_mass_of(sim, i);
+    check_growth_rate(o, ds_radius_max(sim), sqrt(2.0 * ds_kinetic_energy(sim) / mass));
     ds_status st = ds_set_growth(sim, o->grow_rate, o->until_eta, o->until_z);
     if (st != DS_OK)
         die(EXIT_RUN, "cannot grow the disks: %s", ds_status_str(st));

@@ -307,8 +307,11 @@ double ds_area_fraction(const ds_sim *sim);
  * at the end of each window, and when the growth stops, every velocity is
  * scaled back to the kinetic energy of the call. The masses stay. ds_set_all stops growth; so does a
  * call with other targets, which starts again from now. DS_ERR_ARG for a
- * rate < 0 or not finite, until_eta not 0 and not between the area
- * fraction of now and 1, until_z not 0 and not in (1, 1e9]. The step in
+ * rate < 0 or not finite, a rate at which the largest pair's surfaces
+ * would recede faster than 10 rms speeds (2 r_max rate > 10 sqrt(2 K /
+ * M), M the total mass; so any rate > 0 with every disk at rest), until_eta
+ * not 0 and not between the area fraction of now and 1, until_z not 0
+ * and not in (1, 1e9]. The step in
  * which growth stops at Z is finished without it: near jamming that step
  * has many collisions (about 4 (Z - 1) sqrt(kT / (pi m)) / sigma per disk
  * per unit time). */
@@ -327,8 +330,10 @@ ds_growth_state ds_growth_state_of(const ds_sim *sim);
  * first window, and for a simulation that never grew. */
 double ds_growth_z(const ds_sim *sim);
 
-/* Every velocity times factor (> 0, finite; DS_ERR_ARG otherwise), at
- * ds_time: a thermostat's step, or a compression taking out its heat. */
+/* Every velocity times factor, at ds_time: a thermostat's step, or a
+ * compression taking out its heat. DS_ERR_ARG, changing nothing, for a
+ * factor not > 0 and finite, or one that takes a velocity component past
+ * 1e12 (ds_set's limit). */
 ds_status ds_scale_velocities(ds_sim *sim, double factor);
 
 /* The contacts of a packing at ds_time: pairs whose centres are closer

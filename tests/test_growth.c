@@ -11,11 +11,13 @@
 
 #define PI 3.14159265358979323846
 
-/* Two disks of radius 5 at rest 30 apart in a periodic box 1000 wide,
- * growing at rate 0.1: the contact distance 10 (1 + 0.1 t) reaches 30 at
- * t = 20, and the pair then parts at twice the contact distance's growth
- * speed, a = 10 x 0.1 = 1 (each disk at 1, equal masses): in the frame of
- * the receding surfaces the pair arrives at -a and leaves at +a. */
+/* Two disks of radius 5, 30 apart in a periodic box 1000 wide, at rest
+ * but for a common drift along y (growth needs motion; the pair's own
+ * motion is nil), growing at rate 0.1: the contact distance 10 (1 + 0.1
+ * t) reaches 30 at t = 20, and the pair then parts at twice the contact
+ * distance's growth speed, a = 10 x 0.1 = 1 (each disk at 1, equal
+ * masses): in the frame of the receding surfaces the pair arrives at -a
+ * and leaves at +a; the drift stays. */
 static void test_two_growing_disks_meet_on_time_and_part_at_twice_the_growth_speed(void **state)
 {
     (void)state;
@@ -25,7 +27,7 @@ static void test_two_growing_disks_meet_on_time_and_part_at_twice_the_growth_spe
     p.dt = 0.25;
     ds_sim *sim = NULL;
     assert_int_equal(ds_create(&p, &sim), DS_OK);
-    ds_disk d[2] = {{500.0, 500.0, 0.0, 0.0}, {530.0, 500.0, 0.0, 0.0}};
+    ds_disk d[2] = {{500.0, 500.0, 0.0, 1.0}, {530.0, 500.0, 0.0, 1.0}};
     assert_int_equal(ds_set_all(sim, d, NULL), DS_OK);
     assert_int_equal(ds_set_growth(sim, 0.1, 0.0, 0.0), DS_OK);
     assert_int_equal(ds_growth_state_of(sim), DS_GROWING);
@@ -36,7 +38,7 @@ static void test_two_growing_disks_meet_on_time_and_part_at_twice_the_growth_spe
     assert_int_equal(ds_collision_count(sim), 1);
     const ds_disk a = ds_get(sim, 0), b = ds_get(sim, 1);
     assert_true(fabs(a.vx + 1.0) < 1e-12 && fabs(b.vx - 1.0) < 1e-12);
-    assert_true(fabs(a.vy) < 1e-12 && fabs(b.vy) < 1e-12);
+    assert_true(fabs(a.vy - 1.0) < 1e-12 && fabs(b.vy - 1.0) < 1e-12);
     /* At t = 20.25 the centres are 30 + 2 x 0.25 apart, the contact
      * distance 10 (1 + 2.025) = 30.25: the gap opens at a. */
     assert_true(fabs((b.x - a.x) - 30.5) < 1e-9);
@@ -202,7 +204,28 @@ static void test_growth_is_refused_where_it_cannot_run(void **state)
     assert_int_equal(ds_set_growth(sim, 0.1, ds_area_fraction(sim), 0.0), DS_ERR_ARG);
     assert_int_equal(ds_set_growth(sim, 0.1, 0.0, 0.5), DS_ERR_ARG);
     assert_int_equal(ds_set_growth(NULL, 0.1, 0.0, 0.0), DS_ERR_ARG);
+    /* Faster than the disks move: 10 disks of R = 5 at the speed of 100
+     * take a rate up to 10 x 100 / (2 x 5) = 100. */
+    assert_int_equal(ds_set_growth(sim, 100.5, 0.0, 0.0), DS_ERR_ARG);
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_NONE);
+    /* Disks at rest take no growth at all. */
+    ds_sim *rest = NULL;
+    assert_int_equal(ds_create(&p, &rest), DS_OK);
+    ds_disk still[10];
+    assert_int_equal(ds_get_all(rest, still), DS_OK);
+    for (int k = 0; k < 10; ++k)
+        still[k].vx = still[k].vy = 0.0;
+    assert_int_equal(ds_set_all(rest, still, NULL), DS_OK);
+    assert_int_equal(ds_set_growth(rest, 1e-3, 0.0, 0.0), DS_ERR_ARG);
+    ds_destroy(rest);
     assert_int_equal(ds_scale_velocities(sim, 0.0), DS_ERR_ARG);
+    /* Past ds_set's 1e12 a velocity is refused, and nothing changes:
+     * every component is at most the speed, 100. */
+    const double e = ds_kinetic_energy(sim);
+    assert_int_equal(ds_scale_velocities(sim, 1e11), DS_ERR_ARG);
+    assert_true(ds_kinetic_energy(sim) == e);
+    assert_int_equal(ds_scale_velocities(sim, 2.0), DS_OK);
+    assert_true(fabs(ds_kinetic_energy(sim) / (4.0 * e) - 1.0) < 1e-14);
     assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_NONE);
     assert_true(ds_growth_z(sim) == 0.0);
     ds_destroy(sim);

@@ -48,7 +48,8 @@ const char dspy_set_growth_doc[] =
     "every velocity is scaled back to the kinetic energy of this call. The masses\n"
     "stay. set_state() stops growth; so does a call with other targets, which starts\n"
     "again from now. growth_state and growth_z say how it goes. ArgumentError for\n"
-    "another integrator or boundary, a rate < 0 or not finite, until_eta not 0 and\n"
+    "another integrator or boundary, a rate < 0 or not finite, a rate at which the\n"
+    "largest pair's surfaces recede faster than 10 rms speeds, until_eta not 0 and\n"
     "not between the area fraction of now and 1, until_z not 0 and not in (1, 1e9].";
 
 /* The first of the header's rules that rate, until_eta and until_z break. */
@@ -64,6 +65,15 @@ static PyObject *growth_refused(const ds_sim *sim, double rate, double until_eta
     if (!(rate >= 0.0) || !isfinite(rate))
         return dspy_raisef(DS_ERR_ARG, "rate", "set_growth: rate = %g must be a finite number >= 0",
                            rate);
+    double mass = 0.0;
+    for (size_t i = 0; i < ds_count(sim); ++i)
+        mass += ds_mass_of(sim, i);
+    const double rms = sqrt(2.0 * ds_kinetic_energy(sim) / mass);
+    if (rate > 0.0 && !(2.0 * ds_radius_max(sim) * rate <= 10.0 * rms))
+        return dspy_raisef(DS_ERR_ARG, "rate",
+                           "set_growth: rate = %g is too fast: the largest disks' surfaces would "
+                           "recede at %g, more than 10 times the rms speed %g",
+                           rate, 2.0 * ds_radius_max(sim) * rate, rms);
     if (until_eta != 0.0 && !(until_eta > eta && until_eta < 1.0))
         return dspy_raisef(DS_ERR_ARG, "until_eta",
                            "set_growth: until_eta = %.17g must be 0 (no target) or between the "

@@ -148,3 +148,14 @@ def test_growth_is_refused_where_it_cannot_run():
     for kw, words in cases:
         with pytest.raises(disksim.ArgumentError, match=words):
             disksim.Sim(10, 5.0, **kw).set_growth(0.1)
+
+
+def test_a_growth_faster_than_the_disks_move_is_refused():
+    # 10 disks of R = 5 at the speed of 100: the largest pair's surfaces
+    # recede at 2 x 5 x rate, at most 10 x 100, so rate <= 100.
+    s = disksim.Sim(10, 5.0, integrator="event", boundary="periodic")
+    with pytest.raises(disksim.ArgumentError, match="rate = 200 is too fast"):
+        s.set_growth(200.0)
+    assert s.growth_state == "none"
+    s.set_growth(100.0)
+    assert s.growth_state == "growing"

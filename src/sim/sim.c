@@ -184,6 +184,16 @@ ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until
         (until_eta > 0.0 && until_eta <= ds_area_fraction(sim)) ||
         !(until_z == 0.0 || (until_z > 1.0 && until_z <= 1e9)))
         return DS_ERR_ARG;
+    /* The compression must be slow beside the motion: the surfaces of the
+     * largest pair recede at 2 r_max rate, at most 10 rms speeds (past
+     * 1000, 20 disks made no step in 20 s: every collision sends a pair
+     * off at twice the surfaces' speed, and the growth outruns them). */
+    double mass = 0.0;
+    for (size_t i = 0; i < sim->disks.n; ++i)
+        mass += sim->disks.m ? sim->disks.m[i] : 1.0;
+    const double rms = mass > 0.0 ? sqrt(2.0 * ds_kinetic_energy(sim) / mass) : 0.0;
+    if (rate > 0.0 && !(2.0 * ds_radius_max(sim) * rate <= 10.0 * rms))
+        return DS_ERR_ARG;
     return sim->integrator->set_growth(sim, rate, until_eta,
                                        until_z == 0.0 ? DS_JAMMED_Z : until_z);
 }
@@ -207,6 +217,13 @@ double ds_growth_z(const ds_sim *sim)
 ds_status ds_scale_velocities(ds_sim *sim, double factor)
 {
     if (!sim || !(factor > 0.0) || !isfinite(factor))
+        return DS_ERR_ARG;
+    /* No faster than ds_set takes: an infinite velocity would never let an
+     * event-driven step end. */
+    double fastest = 0.0;
+    for (size_t i = 0; i < sim->disks.n; ++i)
+        fastest = fmax(fastest, fmax(fabs(sim->disks.vx[i]), fabs(sim->disks.vy[i])));
+    if (!(fastest * factor <= DS_VELOCITY_MAX))
         return DS_ERR_ARG;
     return sim->integrator->scale_velocities(sim, factor);
 }

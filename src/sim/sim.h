@@ -20,6 +20,10 @@ ds_status ds_world_of_request(const ds_params *params, const ds_mixture *mixture
 double ds_mixture_radius(const ds_mixture *m, size_t i);
 double ds_mixture_mass(const ds_mixture *m, double reference_radius, size_t i);
 
+/* The fastest velocity component a disk may have (ds_set, ds_set_all,
+ * ds_scale_velocities). */
+#define DS_VELOCITY_MAX 1e12
+
 /* DS_OK, or why disk i cannot be d in world w (not finite, too fast,
  * outside the box): what ds_set and ds_set_all refuse as a value. */
 ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, ds_state_error *err);

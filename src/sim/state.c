@@ -16,7 +16,7 @@ ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, d
     if (!isfinite(d.x) || !isfinite(d.y) || !isfinite(d.vx) || !isfinite(d.vy))
         return ds_state_refuse(err, DS_ERR_ARG, "disk %zu has a value that is not a finite number",
                                i);
-    if (fabs(d.vx) > 1e12 || fabs(d.vy) > 1e12)
+    if (fabs(d.vx) > DS_VELOCITY_MAX || fabs(d.vy) > DS_VELOCITY_MAX)
         return ds_state_refuse(err, DS_ERR_ARG,
                                "disk %zu moves at (%g, %g): a velocity component beyond 1e12", i,
                                d.vx, d.vy);
