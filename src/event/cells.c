@@ -42,8 +42,16 @@ size_t ds_cells_bytes(size_t n, double box_x, double box_y, double min_side,
 ds_status ds_cells_init(ds_cells *cells, size_t n, double box_x, double box_y, double min_side,
                         uint32_t max_side_cells)
 {
-    grid_shape(n, box_x, box_y, min_side, max_side_cells ? max_side_cells : 1, &cells->nx,
-               &cells->ny);
+    uint32_t nx, ny;
+    grid_shape(n, box_x, box_y, min_side, max_side_cells ? max_side_cells : 1, &nx, &ny);
+    return ds_cells_init_shape(cells, n, box_x, box_y, nx, ny);
+}
+
+ds_status ds_cells_init_shape(ds_cells *cells, size_t n, double box_x, double box_y, uint32_t nx,
+                              uint32_t ny)
+{
+    cells->nx = nx;
+    cells->ny = ny;
     cells->wx = box_x / cells->nx;
     cells->wy = box_y / cells->ny;
     cells->inv_wx = cells->nx / box_x;

@@ -47,6 +47,11 @@ typedef struct ds_cells {
  * per dimension (1 gives one cell: every disk is everyone's candidate). */
 ds_status ds_cells_init(ds_cells *cells, size_t n, double box_x, double box_y, double min_side,
                         uint32_t max_side_cells);
+/* The same with a shape of nx x ny cells given (1 <= nx, ny <= the
+ * shape ds_cells_init would choose: cells no narrower than its): a
+ * checkpoint's grid, built for radii larger than now. */
+ds_status ds_cells_init_shape(ds_cells *cells, size_t n, double box_x, double box_y, uint32_t nx,
+                              uint32_t ny);
 void ds_cells_free(ds_cells *cells);
 size_t ds_cells_bytes(size_t n, double box_x, double box_y, double min_side,
                       uint32_t max_side_cells);

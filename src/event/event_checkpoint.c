@@ -268,9 +268,17 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
     e->epoch = ds_get_f64(r);
     const double rebase_time = ds_get_f64(r);
     e->tested = ds_get_u64(r);
+    /* The grid a growth built for radii 5% past its last rebuild
+     * (event_growth.c) has fewer, wider cells than the radii of now would
+     * choose: any grid no finer than that is one a run could have. */
     const uint32_t nx = ds_get_u32(r), ny = ds_get_u32(r);
-    if (r->failed || nx != e->cells.nx || ny != e->cells.ny)
+    if (r->failed || !(nx >= 1u && nx <= e->cells.nx && ny >= 1u && ny <= e->cells.ny))
         return ds_state_refuse(err, DS_ERR_FORMAT, "the event cells do not match the box");
+    if (nx != e->cells.nx || ny != e->cells.ny) {
+        ds_cells_free(&e->cells);
+        if (ds_cells_init_shape(&e->cells, n, e->box_x, e->box_y, nx, ny) != DS_OK)
+            return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the event cells");
+    }
     /* The clock: the epoch is a step boundary, the present one at most
      * one rebase time ago. */
     const double now = (double)sim->steps * sim->world.dt - e->epoch;
