@@ -186,9 +186,8 @@ static void print_start(const run *r)
            frames, (unsigned long long)o->steps_per_frame, o->out_dir);
 }
 
-/* A jammed packing's contacts: within 1e-4 of a diameter (at Z = 10^6
- * contacts are 1e-8 to 1e-5 apart, the next neighbours 1e-3 and more;
- * docs/physics.md). */
+/* A jammed packing's contacts: within 1e-4 of their contact distance (at
+ * Z = 10^6 contacts are 1e-6 to 1e-4 apart; docs/physics.md). */
 #define CONTACT_GAP 1e-4
 
 static void print_report(const run *r, long asked)

@@ -338,9 +338,9 @@ ds_status ds_scale_velocities(ds_sim *sim, double factor);
 
 /* The contacts of a packing at ds_time: pairs whose centres are closer
  * than (r_i + r_j) (1 + gap), gap >= 0 (a jammed packing's contacts are
- * what its pressure keeps a hair apart: at Z = 10^6 they are 1e-8 to 1e-5
- * of a diameter apart, the next neighbours 1e-3 and more: gap 1e-4 tells
- * them apart; docs/physics.md). Rattlers, disks with fewer than 3
+ * what its pressure keeps a hair apart: at Z = 10^6 they are 1e-6 to
+ * 1e-4 of their contact distance apart, and gap 1e-4 counts 4.00 per disk
+ * of 1024 where 1e-3 counts 1.5% more; docs/physics.md). Rattlers, disks with fewer than 3
  * contacts (which a disk in the plane needs to be held), are removed,
  * and removed again as their removal leaves others with fewer, until
  * none is left. */

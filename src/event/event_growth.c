@@ -155,9 +155,9 @@ int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
          * jamming, and the pressure it measures is its own push, not the
          * packing's (at a fixed rate 0.01, Z passed 10^6 with most gaps
          * between neighbours near 1e-4 of a diameter, a packing at Z ~
-         * 10^4). Slowing past 10^4 leaves the contacts 1e-8 to 1e-5 apart
-         * at Z = 10^6, the next neighbours 1e-3 and more, in 29 s at 1024
-         * disks (past 10^3: the same in 195 s; past 100: 8 minutes). Donev,
+         * 10^4). Slowing past 10^4 leaves the contacts 1e-6 to 1e-4 apart
+         * at Z = 10^6, 4.00 per disk with the rattlers out, in 108 s at
+         * 1024 disks from 0.476 at rate 0.01 (docs/physics.md). Donev,
          * Torquato and Stillinger 2005 slow down likewise. */
         const double rate = z > GROWTH_SLOWS_AT_Z ? g->asked * GROWTH_SLOWS_AT_Z / z : g->asked;
         heat_out(e, n, g, t);

@@ -18,15 +18,19 @@ if (!exists("out")) out = 'jamming.png'
 set terminal pngcairo size 900,600 font ',11'
 set output out
 set title 'Jamming of a 50:50 mixture of radius ratio 1.4 (Z > 10^6)'
-set xlabel 'growth rate (relative radius per unit time, speed 100)'
+# The x axis is the dimensionless rate: how fast a small disk's surface
+# moves, rate * r, over the speed 100, with r of the row's N from the
+# area fraction 0.5 the runs start at (tools/analysis/jamming.sh).
+r(n) = sqrt(0.5e6 / (pi * n * 1.48))
+set xlabel 'growth rate x small radius / speed'
 set ylabel 'area fraction at jamming'
 set logscale x
-set xrange [0.002:0.15]
-set yrange [0.82:0.86]
+set xrange [0.0002:0.015]
+set yrange [0.835:0.86]
 set grid
 set key bottom left
 
 plot 0.842 with lines dt 2 lc rgb 'black' title "O'Hern et al. 2003: 0.842", \
      0.853 with lines dt 3 lc rgb 'gray40' title 'Schreck et al. 2011: up to 0.853', \
-     small using ($2 * 0.97):4 with points pt 7 ps 1.2 lc rgb '#2a6fb0' title 'N = 1024', \
-     large using ($2 * 1.03):4 with points pt 5 ps 1.2 lc rgb '#c0392b' title 'N = 4096'
+     small using ($2 * r($1) / 100):4 with points pt 7 ps 1.2 lc rgb '#2a6fb0' title 'N = 1024', \
+     large using ($2 * r($1) / 100):4 with points pt 5 ps 1.2 lc rgb '#c0392b' title 'N = 4096'

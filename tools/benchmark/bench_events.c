@@ -123,7 +123,7 @@ static int bench_mixture(void)
         return 0;
     const double ratio = median_ratio(ns[1], ns[0]);
     printf("\n   A mixture, 50:50 of radius ratio 1.4, against one size (N = 10^5, area fraction\n"
-           "   0.5, walls; the cells sized by the largest pair, 2.4 r, not 2 r):\n");
+           "   0.5, walls; cells sized by the largest pair, 2.3 r, not 2 r, r the one size's):\n");
     printf("   one size %.0f ns/collision, mixture %.0f: mixture / one size = %.2f (target <= 1.3)\n",
            median(ns[0], ROUNDS), median(ns[1], ROUNDS), ratio);
     fflush(stdout);
