@@ -374,6 +374,24 @@ ds_disk ds_get(const ds_sim *sim, size_t i);
 /* Every disk at once: out[i] = ds_get(sim, i) for i < ds_count(sim), so out
  * must hold ds_count(sim) disks. DS_ERR_ARG if sim or out is NULL. */
 ds_status ds_get_all(const ds_sim *sim, ds_disk *out);
+/* Periodic images, in generation order as ds_get_all: image[2 i] and
+ * image[2 i + 1] are how many times disk i has crossed the box along x
+ * and along y since it was placed (+1 each time it leaves through the far
+ * edge, -1 through 0), so that its unwrapped centre is x + image[2 i] box,
+ * y + image[2 i + 1] box_y (LAMMPS' ix iy, OVITO's periodic image). image
+ * holds 2 ds_count(sim) values; with walls they are all 0. ds_set keeps
+ * the disk's counts, ds_set_all sets them all to 0 (a new state starts
+ * in the box), checkpoints carry them. The counts wrap past 2^31
+ * crossings. DS_ERR_ARG if sim or image is NULL. */
+ds_status ds_get_images(const ds_sim *sim, int32_t *image);
+/* Unwrapped centres, generation order: xy[2 i], xy[2 i + 1] = x + ix box,
+ * y + iy box_y (ds_get_images), each one rounding of the sum from the
+ * exact image sum. With walls the centres themselves. A free disk's
+ * unwrapped centre is x0 + v t up to the rounding of its flight: within
+ * (s + 2) eps (box + |x0 + v t|) after s steps of the time step or s events
+ * of the event-driven integrator (eps = DBL_EPSILON). xy holds 2
+ * ds_count(sim) values; DS_ERR_ARG if sim or xy is NULL. */
+ds_status ds_get_unwrapped(const ds_sim *sim, double *xy);
 /* Two centres closer than 2R (1 - DS_CONTACT_TOLERANCE) overlap; closer
  * than 2R by less is contact, up to the rounding of the coordinates. */
 #define DS_CONTACT_TOLERANCE 1e-9
@@ -387,7 +405,7 @@ ds_status ds_get_all(const ds_sim *sim, ds_disk *out);
  * state unchanged: exact dynamics has no meaning for overlapping hard
  * disks. Moving many disks one by one can fail where the new state is
  * fine (a disk's new place overlaps a disk not yet moved): use
- * ds_set_all. */
+ * ds_set_all. The disk's periodic image counts stay (ds_get_images). */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
 
 /* Why a whole state was refused (ds_set_all, ds_load_state). */
@@ -402,7 +420,9 @@ typedef struct ds_state_error {
  * with either integrator: this is a state to start from). err, if not
  * NULL, says which disk and why. On DS_OK the integrator starts afresh
  * from the new state (the event-driven one predicts every event again);
- * the time, the step count and the observables' accumulators go on. */
+ * the time, the step count and the observables' accumulators go on; the
+ * periodic image counts start again at 0 (the new centres are in the
+ * box, so ds_get_unwrapped starts from them). */
 ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
 
 /* ------------------------------------------------------------------ */
