@@ -502,6 +502,20 @@ double ds_pressure(const ds_sim *sim);
  * exact. With the time step the collisions happen a little inside 2R,
  * which biases it low (docs/physics.md). */
 double ds_virial_pressure(const ds_sim *sim);
+/* The temperature the collisions see (observe/observables.c derives it):
+ * with walls kT = K / N; in a periodic box, where the total momentum P
+ * (total mass M) is conserved, kT = K_int / (N - 1) with K_int = K - P^2
+ * / (2 M) (0 for a single disk). The canonical ensemble at this kT has
+ * the pressure a run measures. 0 for NULL. */
+double ds_temperature(const ds_sim *sim);
+/* The canonical compressibility factor Z = P A / (N kT) with kT of
+ * ds_temperature, averaged since the last reset (0 before any step, 1
+ * with no relative motion): 1 + W / (2 t N kT), W the collision virial
+ * of ds_virial_pressure, A the area the centres reach. With walls it is
+ * ds_virial_pressure A / K; periodic it is the Z of the canonical
+ * ensemble at every N, which P A / K is not (high by about (Z - 1) / N).
+ * Monte Carlo at the same N, A and kT gives the same Z. */
+double ds_compressibility(const ds_sim *sim);
 /* Zeroes the wall impulse, wall count, collision virial and pressure clock
  * (not the collision count or time), so a relaxation period can be
  * discarded. */
