@@ -379,6 +379,24 @@ ds_disk ds_get(const ds_sim *sim, size_t i);
 /* Every disk at once: out[i] = ds_get(sim, i) for i < ds_count(sim), so out
  * must hold ds_count(sim) disks. DS_ERR_ARG if sim or out is NULL. */
 ds_status ds_get_all(const ds_sim *sim, ds_disk *out);
+/* Periodic images, in generation order as ds_get_all: image[2 i] and
+ * image[2 i + 1] are how many times disk i has crossed the box along x
+ * and along y since it was placed (+1 each time it leaves through the far
+ * edge, -1 through 0), so that its unwrapped centre is x + image[2 i] box,
+ * y + image[2 i + 1] box_y (LAMMPS' ix iy, OVITO's periodic image). image
+ * holds 2 ds_count(sim) values; with walls they are all 0. ds_set keeps
+ * the disk's counts, ds_set_all sets them all to 0 (a new state starts
+ * in the box), checkpoints carry them. The counts wrap past 2^31
+ * crossings. DS_ERR_ARG if sim or image is NULL. */
+ds_status ds_get_images(const ds_sim *sim, int32_t *image);
+/* Unwrapped centres, generation order: xy[2 i], xy[2 i + 1] = x + ix box,
+ * y + iy box_y (ds_get_images), each one rounding of the sum from the
+ * exact image sum. With walls the centres themselves. A free disk's
+ * unwrapped centre is x0 + v t up to the rounding of its flight: within
+ * (s + 2) eps (box + |x0 + v t|) after s steps of the time step or s events
+ * of the event-driven integrator (eps = DBL_EPSILON). xy holds 2
+ * ds_count(sim) values; DS_ERR_ARG if sim or xy is NULL. */
+ds_status ds_get_unwrapped(const ds_sim *sim, double *xy);
 /* Two centres closer than 2R (1 - DS_CONTACT_TOLERANCE) overlap; closer
  * than 2R by less is contact, up to the rounding of the coordinates. */
 #define DS_CONTACT_TOLERANCE 1e-9
@@ -392,7 +410,7 @@ ds_status ds_get_all(const ds_sim *sim, ds_disk *out);
  * state unchanged: exact dynamics has no meaning for overlapping hard
  * disks. Moving many disks one by one can fail where the new state is
  * fine (a disk's new place overlaps a disk not yet moved): use
- * ds_set_all. */
+ * ds_set_all. The disk's periodic image counts stay (ds_get_images). */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
 
 /* Why a whole state was refused (ds_set_all, ds_load_state). */
@@ -407,7 +425,9 @@ typedef struct ds_state_error {
  * with either integrator: this is a state to start from). err, if not
  * NULL, says which disk and why. On DS_OK the integrator starts afresh
  * from the new state (the event-driven one predicts every event again);
- * the time, the step count and the observables' accumulators go on. */
+ * the time, the step count and the observables' accumulators go on; the
+ * periodic image counts start again at 0 (the new centres are in the
+ * box, so ds_get_unwrapped starts from them). */
 ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
 
 /* ------------------------------------------------------------------ */
@@ -487,6 +507,20 @@ double ds_pressure(const ds_sim *sim);
  * exact. With the time step the collisions happen a little inside 2R,
  * which biases it low (docs/physics.md). */
 double ds_virial_pressure(const ds_sim *sim);
+/* The temperature the collisions see (observe/observables.c derives it):
+ * with walls kT = K / N; in a periodic box, where the total momentum P
+ * (total mass M) is conserved, kT = K_int / (N - 1) with K_int = K - P^2
+ * / (2 M) (0 for a single disk). The canonical ensemble at this kT has
+ * the pressure a run measures. 0 for NULL. */
+double ds_temperature(const ds_sim *sim);
+/* The canonical compressibility factor Z = P A / (N kT) with kT of
+ * ds_temperature, averaged since the last reset (0 before any step, 1
+ * with no relative motion): 1 + W / (2 t N kT), W the collision virial
+ * of ds_virial_pressure, A the area the centres reach. With walls it is
+ * ds_virial_pressure A / K; periodic it is the Z of the canonical
+ * ensemble at every N, which P A / K is not (high by about (Z - 1) / N).
+ * Monte Carlo at the same N, A and kT gives the same Z. */
+double ds_compressibility(const ds_sim *sim);
 /* Zeroes the wall impulse, wall count, collision virial and pressure clock
  * (not the collision count or time), so a relaxation period can be
  * discarded. */

@@ -10,6 +10,7 @@
 #define DS_BOUNDARY_H
 
 #include <math.h>
+#include <stdint.h>
 
 /* u moved into [0, box): one shift, which is all a step that moves a disk
  * less than a side needs, else ds_wrap_any (below). */
@@ -34,6 +35,32 @@ static inline double ds_wrap_any(double u, double box)
 {
     u -= box * floor(u / box);
     return u >= 0.0 && u < box ? u : 0.0; /* rounding can reach box itself */
+}
+
+/* ds_wrap that also counts the boxes crossed into *image (+1 for each
+ * side u went past box, -1 for each below 0), so that u + image box is
+ * the same point before and after, up to the rounding of one subtraction
+ * (exact for a single shift: u - box and u + box are then exact). The
+ * count wraps (unsigned arithmetic) rather than overflow. */
+static inline double ds_wrap_counting(double u, double box, int32_t *image)
+{
+    if (u >= box) {
+        u -= box;
+        *image = (int32_t)((uint32_t)*image + 1u);
+    } else if (u < 0.0) {
+        u += box;
+        *image = (int32_t)((uint32_t)*image - 1u);
+    }
+    if (u >= 0.0 && u < box)
+        return u;
+    const double f = floor(u / box);
+    u -= box * f;
+    *image = (int32_t)((uint32_t)*image + (uint32_t)(int64_t)f);
+    if (u >= box) { /* rounding reached box itself: the next box's 0 */
+        *image = (int32_t)((uint32_t)*image + 1u);
+        return 0.0;
+    }
+    return u >= 0.0 ? u : 0.0;
 }
 
 /* A separation r along one axis of a periodic box of side box, taken to

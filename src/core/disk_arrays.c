@@ -7,7 +7,7 @@
 #include "core/disk_arrays.h"
 
 /* The moving arrays of n + 1 slots, the sentinel at n. */
-static ds_status alloc_moving(ds_disks *d, size_t n, int radii, int masses)
+static ds_status alloc_moving(ds_disks *d, size_t n, int radii, int masses, int images)
 {
     const size_t cap = n + 1;
     d->n = n;
@@ -17,7 +17,8 @@ static ds_status alloc_moving(ds_disks *d, size_t n, int radii, int masses)
     d->vy = malloc(cap * sizeof *d->vy);
     d->id = malloc(cap * sizeof *d->id);
     if (!d->x || !d->y || !d->vx || !d->vy || !d->id ||
-        ds_disks_add_mixture(d, radii, masses) != DS_OK) {
+        ds_disks_add_mixture(d, radii, masses) != DS_OK ||
+        (images && ds_disks_add_images(d) != DS_OK)) {
         ds_disks_free(d);
         return DS_ERR_NOMEM;
     }
@@ -43,10 +44,20 @@ ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses)
     return DS_OK;
 }
 
+ds_status ds_disks_add_images(ds_disks *d)
+{
+    const size_t cap = d->n + 1;
+    if (!d->ix && !(d->ix = calloc(cap, sizeof *d->ix)))
+        return DS_ERR_NOMEM;
+    if (!d->iy && !(d->iy = calloc(cap, sizeof *d->iy)))
+        return DS_ERR_NOMEM;
+    return DS_OK;
+}
+
 ds_status ds_disks_alloc(ds_disks *d, size_t n)
 {
     memset(d, 0, sizeof *d);
-    if (alloc_moving(d, n, 0, 0) != DS_OK)
+    if (alloc_moving(d, n, 0, 0, 0) != DS_OK)
         return DS_ERR_NOMEM;
     d->slot = malloc((n + 1) * sizeof *d->slot);
     if (!d->slot) {
@@ -64,7 +75,7 @@ ds_status ds_disks_alloc(ds_disks *d, size_t n)
 ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like)
 {
     memset(d, 0, sizeof *d);
-    return alloc_moving(d, like->n, like->r != NULL, like->m != NULL);
+    return alloc_moving(d, like->n, like->r != NULL, like->m != NULL, like->ix != NULL);
 }
 
 void ds_disks_free(ds_disks *d)
@@ -75,9 +86,12 @@ void ds_disks_free(ds_disks *d)
     free(d->vy);
     free(d->r);
     free(d->m);
+    free(d->ix);
+    free(d->iy);
     free(d->id);
     free(d->slot);
     d->x = d->y = d->vx = d->vy = d->r = d->m = NULL;
+    d->ix = d->iy = NULL;
     d->id = d->slot = NULL;
 }
 
@@ -96,6 +110,11 @@ void ds_disks_swap(ds_disks *a, ds_disks *b)
     swap_doubles(&a->vy, &b->vy);
     swap_doubles(&a->r, &b->r);
     swap_doubles(&a->m, &b->m);
+    int32_t *ix = a->ix, *iy = a->iy;
+    a->ix = b->ix;
+    a->iy = b->iy;
+    b->ix = ix;
+    b->iy = iy;
     uint32_t *t = a->id;
     a->id = b->id;
     b->id = t;

@@ -32,6 +32,11 @@ typedef struct ds_disks {
      * disk has the world's radius (r) or mass 1 (m): then the hot loops
      * take the one radius, and the arrays cost nothing. */
     double *r, *m;
+    /* A periodic box's image counters: how many times each disk has
+     * crossed the box along x and along y (+1 out at the far edge, -1 out
+     * at 0), so that its unwrapped centre is x + ix box (ds_disks_add_images);
+     * NULL with walls. They wrap past 2^31 crossings. */
+    int32_t *ix, *iy;
     uint32_t *id;   /* the generation index of the disk in each slot */
     uint32_t *slot; /* the slot of disk i: the inverse of id */
 } ds_disks;
@@ -39,6 +44,7 @@ typedef struct ds_disks {
 /* One disk with everything that moves with it between slots. */
 typedef struct ds_disk_record {
     double x, y, vx, vy, r, m;
+    int32_t ix, iy;
     uint32_t id;
 } ds_disk_record;
 
@@ -47,6 +53,7 @@ typedef struct ds_disk_record {
 #define DS_DISKS_MOVING_BYTES (4 * sizeof(double) + sizeof(uint32_t))
 #define DS_DISKS_BYTES_PER_DISK (DS_DISKS_MOVING_BYTES + sizeof(uint32_t))
 #define DS_DISKS_MIXTURE_BYTES (2 * sizeof(double))
+#define DS_DISKS_IMAGE_BYTES (2 * sizeof(int32_t))
 
 /* Arrays for n disks (+ 1: the sentinel slot n, x = y = +infinity), the
  * slots in generation order (id[k] = k, slot[i] = i), positions and
@@ -55,6 +62,8 @@ ds_status ds_disks_alloc(ds_disks *d, size_t n);
 /* The radius and mass arrays of a mixture (radii, masses: either NULL
  * for none), sentinel slot included. */
 ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses);
+/* The image counters of a periodic box, zero, sentinel slot included. */
+ds_status ds_disks_add_images(ds_disks *d);
 /* A second set of the moving arrays of `like` (no slot[]), for a broad
  * phase that rebuilds the order into it and swaps (DS_SAP_STRIPS). */
 ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like);
@@ -81,6 +90,8 @@ static inline ds_disk_record ds_disks_load(const ds_disks *d, size_t k)
     r.vy = d->vy[k];
     r.r = d->r ? d->r[k] : 0.0;
     r.m = d->m ? d->m[k] : 1.0;
+    r.ix = d->ix ? d->ix[k] : 0;
+    r.iy = d->iy ? d->iy[k] : 0;
     r.id = d->id[k];
     return r;
 }
@@ -95,6 +106,10 @@ static inline void ds_disks_store(ds_disks *d, size_t k, ds_disk_record r)
         d->r[k] = r.r;
     if (d->m)
         d->m[k] = r.m;
+    if (d->ix) {
+        d->ix[k] = r.ix;
+        d->iy[k] = r.iy;
+    }
     d->id[k] = r.id;
 }
 
@@ -110,10 +125,15 @@ static inline void ds_disks_copy(ds_disks *dst, size_t to, const ds_disks *src, 
         dst->r[to] = src->r[from];
     if (src->m)
         dst->m[to] = src->m[from];
+    if (src->ix) {
+        dst->ix[to] = src->ix[from];
+        dst->iy[to] = src->iy[from];
+    }
     dst->id[to] = src->id[from];
 }
 
-/* ds_disks_copy for arrays known to hold no mixture's (r and m NULL):
+/* ds_disks_copy for arrays known to hold no mixture's and no image
+ * counters (r, m and ix NULL):
  * for a loop that has asked once. */
 static inline void ds_disks_copy_motion(ds_disks *dst, size_t to, const ds_disks *src,
                                         size_t from)

@@ -227,8 +227,7 @@ static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_state_error
  * state that passes is one the integrator could have reached, so a run
  * from it is a run (a forged record far from its cell would have it
  * cross cells at one instant for ever). */
-static ds_status check_records(const ds_sim *sim, const ds_events *e, double now,
-                               ds_state_error *err)
+static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_state_error *err)
 {
     const ds_disks *a = &sim->disks;
     const ds_cells *c = &e->cells;
@@ -238,8 +237,13 @@ static ds_status check_records(const ds_sim *sim, const ds_events *e, double now
         const double lag = now - d->t;
         double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
         if (e->periodic) {
-            x = ds_wrap(x, e->box_x);
-            y = ds_wrap(y, e->box_y);
+            /* The records' image counts: the arrays' less the wrap of
+             * showing (ds_ed_show_at). */
+            int32_t ix = 0, iy = 0;
+            x = ds_wrap_counting(x, e->box_x, &ix);
+            y = ds_wrap_counting(y, e->box_y, &iy);
+            e->image[2 * k] = (int32_t)((uint32_t)a->ix[k] - (uint32_t)ix);
+            e->image[2 * k + 1] = (int32_t)((uint32_t)a->iy[k] - (uint32_t)iy);
         }
         const int in_cell = d->x >= (double)d->column * c->wx - slack &&
                             d->x <= (double)(d->column + 1u) * c->wx + slack &&

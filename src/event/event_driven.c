@@ -117,14 +117,18 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
     const uint32_t count = axis_y ? cells->ny : cells->nx;
     double *u = axis_y ? &d->y : &d->x;
     const double box = axis_y ? e->box_y : e->box_x;
+    /* A periodic box's crossing counts in the disk's images. */
+    int32_t *image = e->image ? &e->image[2 * (size_t)i + (axis_y ? 1 : 0)] : NULL;
     if ((axis_y ? d->vy : d->vx) > 0.0) {
         if (++*c == count) { /* periodic: out at the far edge, in at 0 */
             *c = 0;
             *u -= box;
+            *image = (int32_t)((uint32_t)*image + 1u);
         }
     } else if (*c == 0) {
         *c = (uint16_t)(count - 1);
         *u += box;
+        *image = (int32_t)((uint32_t)*image - 1u);
     } else {
         --*c;
     }
@@ -161,17 +165,21 @@ static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
 /* Showing the disks, moving the epoch                                  */
 /* ------------------------------------------------------------------ */
 
-/* Writes every disk at integrator time t into the simulation's arrays:
- * record k is the disk of slot k (created so, see create). */
-static void show_at(ds_disks *disks, const ds_events *e, double t)
+/* Record k is the disk of slot k (created so, see create). A disk shown
+ * a hair past the box edge before its crossing event is wrapped here, and
+ * its shown image counts that wrap too. */
+void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
 {
     for (size_t k = 0; k < disks->n; ++k) {
         const ed_disk *d = &e->disk[k];
         const double lag = t - d->t;
         double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
         if (e->periodic) {
-            x = ds_wrap(x, e->box_x);
-            y = ds_wrap(y, e->box_y);
+            int32_t ix = e->image[2 * k], iy = e->image[2 * k + 1];
+            x = ds_wrap_counting(x, e->box_x, &ix);
+            y = ds_wrap_counting(y, e->box_y, &iy);
+            disks->ix[k] = ix;
+            disks->iy[k] = iy;
         }
         disks->x[k] = x;
         disks->y[k] = y;
@@ -236,7 +244,7 @@ static void run(ds_sim *sim, uint64_t steps)
     ds_timer_stop(&sim->collision_timer);
     sim->tally.pairs_tested += e->tested;
     e->tested = 0;
-    show_at(&sim->disks, e, target);
+    ds_ed_show_at(&sim->disks, e, target);
     ds_ed_show_radii(sim, e, target);
 }
 
@@ -255,7 +263,8 @@ static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_b
 
 static size_t bytes(const ds_world *w)
 {
-    return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase);
+    return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase) +
+           (w->boundary == DS_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
 }
 
 void ds_ed_destroy(ds_sim *sim)
@@ -264,6 +273,7 @@ void ds_ed_destroy(ds_sim *sim)
     if (!e)
         return;
     free(e->growth.base);
+    free(e->image);
     ds_eq_destroy(e->queue);
     ds_cells_free(&e->cells);
     free(e->disk);
@@ -340,6 +350,8 @@ ds_status ds_ed_alloc(ds_sim *sim)
     e->growth.scale = 1.0;
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
     ds_status st = e->disk ? DS_OK : DS_ERR_NOMEM;
+    if (st == DS_OK && e->periodic && !(e->image = calloc(2 * (n ? n : 1), sizeof *e->image)))
+        st = DS_ERR_NOMEM;
     if (st == DS_OK)
         st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius_max,
                            w->broadphase == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
@@ -387,6 +399,10 @@ ds_status ds_ed_create(ds_sim *sim)
         d->row = (uint16_t)ds_cells_row(&e->cells, d->y);
         d->next = INFINITY;
         ds_cells_add(&e->cells, ds_cells_index(&e->cells, d->column, d->row), (uint32_t)k);
+        if (e->image) { /* the arrays' centres are in the box: no wrap to undo */
+            e->image[2 * k] = disks->ix[k];
+            e->image[2 * k + 1] = disks->iy[k];
+        }
     }
     st = ds_ed_schedule_all(e, n);
     if (st == DS_OK)
@@ -456,6 +472,10 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     d->column = (uint16_t)column;
     d->row = (uint16_t)row;
     ds_cells_add(cells, ds_cells_index(cells, column, row), (uint32_t)k);
+    if (e->image) { /* the disk keeps its images; its new centre is in the box */
+        e->image[2 * k] = sim->disks.ix[k];
+        e->image[2 * k + 1] = sim->disks.iy[k];
+    }
     ++d->changes; /* whatever was predicted against the old disk is stale */
     schedule(e, (uint32_t)k);
     sim->tally.pairs_tested += e->tested;

@@ -242,12 +242,7 @@ ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next)
     /* The disks of now into the arrays, then a state of their own. */
     for (size_t k = 0; k < sim->world.n; ++k)
         ds_ed_advance(&e->disk[k], now);
-    for (size_t k = 0; k < sim->world.n; ++k) {
-        sim->disks.x[k] = e->periodic ? ds_wrap(e->disk[k].x, e->box_x) : e->disk[k].x;
-        sim->disks.y[k] = e->periodic ? ds_wrap(e->disk[k].y, e->box_y) : e->disk[k].y;
-        sim->disks.vx[k] = e->disk[k].vx;
-        sim->disks.vy[k] = e->disk[k].vy;
-    }
+    ds_ed_show_at(&sim->disks, e, now); /* with the image counts */
     ds_ed_show_radii(sim, e, now);
     /* Cells for radii 5% larger than now: a new state every 5% of growth,
      * not every step. */

@@ -83,6 +83,12 @@ struct ds_events {
      * slot k is record k), or NULL for one radius (lo_x, ... and sigma2
      * above) and mass 1. */
     const double *radius, *mass;
+    /* A periodic box's image counters by record, x then y (image[2 k],
+     * image[2 k + 1]): the boxes crossed by the record's own x, y, which
+     * cross_cell keeps; the arrays' counts are these plus whatever the
+     * wrap of showing adds (ds_ed_show_at). Outside the 64-byte record:
+     * only a crossing of the box edge writes them. NULL with walls. */
+    int32_t *image;
     ds_growth growth;
 };
 typedef struct ds_events ds_events;
@@ -116,6 +122,11 @@ static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
  * the calendar from the records' times, at integrator time now. */
 ds_status ds_ed_alloc(ds_sim *sim);
 void ds_ed_start(ds_events *e, double now);
+
+/* Writes every disk at integrator time t into the simulation's arrays
+ * (record k is slot k), wrapped into a periodic box, with its image
+ * counts (event_driven.c). */
+void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t);
 
 static inline void ds_ed_advance(ed_disk *d, double t)
 {

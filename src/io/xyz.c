@@ -14,6 +14,11 @@
  * Particle Type, Position, Radius and Velocity. ASE keeps radius and velo
  * as per-atom arrays of those names. "X" is ASE's dummy element. */
 #define XYZ_PROPERTIES "species:S:1:pos:R:3:radius:R:1:velo:R:3"
+/* A periodic box adds each disk's image counts (ds_get_images): the
+ * unwrapped centre is pos + image x the cell's side, as LAMMPS' ix iy and
+ * OVITO's Periodic Image; ASE reads it as an (N, 2) integer array. */
+#define XYZ_IMAGE_PROPERTY ":image:I:2"
+#define XYZ_IMAGE_MAX (2 * 12) /* " -2147483648" twice */
 #define XYZ_SPECIES "X"
 
 /* Count line, and a comment line of fixed text plus four numbers. */
@@ -25,7 +30,8 @@ size_t ds_xyz_frame_size(const ds_sim *sim)
         return 0;
     /* "X x y 0 R vx vy 0\n": four fixed fields, R, the rest constant. */
     char radius[DS_RADIUS_TEXT_MAX];
-    size_t line = 4 * (DS_FIELD_MAX + 1) + ds_radius_text(sim, radius) + 16;
+    size_t line = 4 * (DS_FIELD_MAX + 1) + ds_radius_text(sim, radius) + 16 +
+                  (sim->disks.ix ? XYZ_IMAGE_MAX : 0);
     return XYZ_HEADER_MAX + sim->world.n * line;
 }
 
@@ -40,10 +46,11 @@ static size_t format_header(const ds_sim *sim, char *out)
     time[ds_format_fixed6(time, ds_time(sim))] = '\0';
     /* Periodic along x and y, never along the flat z of the layer. */
     const char *pbc = w->boundary == DS_PERIODIC ? "T T F" : "F F F";
-    int len = snprintf(out, XYZ_HEADER_MAX,
-                       "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
-                       " Time=%s pbc=\"%s\"\n",
-                       w->n, box, box_y, height, time, pbc);
+    int len =
+        snprintf(out, XYZ_HEADER_MAX,
+                 "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
+                 "%s Time=%s pbc=\"%s\"\n",
+                 w->n, box, box_y, height, sim->disks.ix ? XYZ_IMAGE_PROPERTY : "", time, pbc);
     return len > 0 && len < XYZ_HEADER_MAX ? (size_t)len : 0;
 }
 
@@ -78,8 +85,12 @@ ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *
         l += ds_format_fixed6(line + l, d->vx[k]);
         line[l++] = ' ';
         l += ds_format_fixed6(line + l, d->vy[k]);
-        memcpy(line + l, " 0\n", 3);
-        l += 3;
+        memcpy(line + l, " 0", 2);
+        l += 2;
+        if (d->ix)
+            l += (size_t)snprintf(line + l, XYZ_IMAGE_MAX + 1, " %ld %ld", (long)d->ix[k],
+                                  (long)d->iy[k]);
+        line[l++] = '\n';
         if (used + l <= cap)
             memcpy(buf + used, line, l);
         used += l;

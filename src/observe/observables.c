@@ -82,6 +82,60 @@ double ds_virial_pressure(const ds_sim *sim)
     return (ds_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) / centre_area(sim);
 }
 
+/* The temperature the collisions see. A pair's collision virial is
+ * proportional to the second moment of its relative normal velocity, and
+ * for hard disks the velocities are independent of the configuration
+ * (uniform on the energy shell, less the conserved momentum), so that
+ * moment is exactly what a canonical ensemble at some kT gives:
+ * - walls: momentum is not conserved, each velocity component has
+ *   <m v_x^2> = 2 K / (2 N), so kT = K / N;
+ * - periodic: the total momentum P (mass M) is conserved, the centre of
+ *   mass carries P^2 / (2 M) that no pair's relative motion sees, and the
+ *   internal energy K_int = K - P^2 / (2 M) spreads over 2 (N - 1)
+ *   degrees of freedom: <m_i m_j / (m_i + m_j) (v_i - v_j)_x^2> = kT with
+ *   kT = K_int / (N - 1). (A single disk: no internal motion, 0.) */
+double ds_temperature(const ds_sim *sim)
+{
+    if (!sim || sim->world.n == 0)
+        return 0.0;
+    const double n = (double)sim->world.n, kinetic = ds_kinetic_energy(sim);
+    if (sim->world.boundary != DS_PERIODIC)
+        return kinetic / n;
+    if (sim->world.n < 2)
+        return 0.0;
+    double px = 0.0, py = 0.0, mass = n;
+    ds_momentum(sim, &px, &py);
+    if (sim->disks.m) {
+        mass = 0.0;
+        for (size_t k = 0; k < sim->disks.n; ++k)
+            mass += sim->disks.m[k];
+    }
+    const double internal = kinetic - (px * px + py * py) / (2.0 * mass);
+    return (internal > 0.0 ? internal : 0.0) / (n - 1.0);
+}
+
+/* The canonical Z. The virial theorem with the collisions' impulses
+ * (ds_virial_pressure) gives P A = N kT + W / (2 t), W the sum over the
+ * collisions of r_ij . dp_i; in the canonical ensemble at temperature kT
+ * the ideal term is N kT (N disks, whatever the boundary: in a periodic
+ * box the configurational integral of N disks still has N positions),
+ * and W / (2 t) is the canonical one at the kT of ds_temperature (see
+ * there). So Z = P A / (N kT) = 1 + W / (2 t N kT), with the area A the
+ * centres reach. With walls kT = K / N, and this is ds_virial_pressure A
+ * / K; periodic, it differs from that by the centre of mass's energy and
+ * by N / (N - 1) in the collision term: (Z - 1) / N relative at equal
+ * momentum zero. Two disks in a periodic box give (1 + A / (A - pi
+ * sigma^2)) / 2, the canonical value (tests/test_canonical.c). */
+double ds_compressibility(const ds_sim *sim)
+{
+    if (!sim || sim->steps == sim->observables_since_step)
+        return 0.0;
+    const double kt = ds_temperature(sim);
+    if (!(kt > 0.0))
+        return 1.0; /* no relative motion, no collisions: the ideal gas */
+    return 1.0 + sim->tally.virial / (2.0 * elapsed(sim)) / ((double)sim->world.n * kt);
+}
+
 void ds_reset_observables(ds_sim *sim)
 {
     if (!sim)

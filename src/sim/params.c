@@ -229,8 +229,8 @@ static ds_status check_size(const ds_world *w, int mixture, double min_room, ds_
                          2.0 * r * min_room);
     /* Ids are 32-bit; beyond that no machine this runs on has the memory. */
     if (w->n >= UINT32_MAX ||
-        w->n > (SIZE_MAX - 64) /
-                   (DS_DISKS_BYTES_PER_DISK + DS_DISKS_MIXTURE_BYTES + DS_PLACEMENT_BYTES_PER_DISK))
+        w->n > (SIZE_MAX - 64) / (DS_DISKS_BYTES_PER_DISK + DS_DISKS_MIXTURE_BYTES +
+                                  DS_DISKS_IMAGE_BYTES + DS_PLACEMENT_BYTES_PER_DISK))
         return ds_refuse(err, DS_ERR_NOMEM, "n", "n = %zu disks cannot be held in memory", w->n);
     return DS_OK;
 }
@@ -353,7 +353,8 @@ ds_status ds_memory_needed_mixture(const ds_params *params, const ds_mixture *mi
     if (w.broadphase == DS_AUTO)
         w.broadphase = ops->choose(&w);
     const size_t per_disk = DS_DISKS_BYTES_PER_DISK + DS_PLACEMENT_BYTES_PER_DISK +
-                            (mixture ? DS_DISKS_MIXTURE_BYTES : 0);
+                            (mixture ? DS_DISKS_MIXTURE_BYTES : 0) +
+                            (w.boundary == DS_PERIODIC ? DS_DISKS_IMAGE_BYTES : 0);
     *bytes = (w.n + 1) * per_disk + ops->bytes(&w);
     return DS_OK;
 }

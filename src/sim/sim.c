@@ -49,6 +49,8 @@ ds_status ds_create_mixture(const ds_params *params, const ds_mixture *mixture, 
     st = ds_disks_alloc(&sim->disks, sim->world.n);
     if (st == DS_OK && mixture)
         st = fill_mixture(&sim->disks, mixture, w.radius);
+    if (st == DS_OK && w.boundary == DS_PERIODIC)
+        st = ds_disks_add_images(&sim->disks);
     if (st == DS_OK)
         st = ds_place(&sim->disks, &sim->world);
     if (st == DS_OK)
@@ -130,6 +132,32 @@ ds_status ds_get_all(const ds_sim *sim, ds_disk *out)
         d->y = a->y[k];
         d->vx = a->vx[k];
         d->vy = a->vy[k];
+    }
+    return DS_OK;
+}
+
+ds_status ds_get_images(const ds_sim *sim, int32_t *image)
+{
+    if (!sim || !image)
+        return DS_ERR_ARG;
+    const ds_disks *a = &sim->disks;
+    for (size_t k = 0; k < a->n; ++k) {
+        image[2 * (size_t)a->id[k]] = a->ix ? a->ix[k] : 0;
+        image[2 * (size_t)a->id[k] + 1] = a->iy ? a->iy[k] : 0;
+    }
+    return DS_OK;
+}
+
+ds_status ds_get_unwrapped(const ds_sim *sim, double *xy)
+{
+    if (!sim || !xy)
+        return DS_ERR_ARG;
+    const ds_disks *a = &sim->disks;
+    const double box_x = sim->world.box, box_y = sim->world.box_y;
+    for (size_t k = 0; k < a->n; ++k) {
+        const size_t i = a->id[k];
+        xy[2 * i] = a->ix ? a->x[k] + (double)a->ix[k] * box_x : a->x[k];
+        xy[2 * i + 1] = a->iy ? a->y[k] + (double)a->iy[k] * box_y : a->y[k];
     }
     return DS_OK;
 }

@@ -102,6 +102,8 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
     st = ds_disks_alloc(&fresh.disks, w->n);
     if (st == DS_OK)
         st = ds_disks_add_mixture(&fresh.disks, sim->disks.r != NULL, sim->disks.m != NULL);
+    if (st == DS_OK && sim->disks.ix)
+        st = ds_disks_add_images(&fresh.disks); /* a new state: images 0 */
     if (st == DS_OK) {
         for (size_t i = 0; i < w->n; ++i) {
             fresh.disks.x[i] = disks[i].x;
@@ -161,8 +163,9 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
     ds_put_u32(w, (uint32_t)wo->broadphase);
     ds_put_u32(w, (uint32_t)wo->placement);
     ds_put_u64(w, wo->seed);
-    /* Which of a mixture's arrays follow each disk: 1 radii, 2 masses. */
-    ds_put_u32(w, (sim->disks.r ? 1u : 0u) | (sim->disks.m ? 2u : 0u));
+    /* Which of the optional arrays follow each disk: 1 radii, 2 masses,
+     * 4 image counters (a periodic box; a state without them has 0). */
+    ds_put_u32(w, (sim->disks.r ? 1u : 0u) | (sim->disks.m ? 2u : 0u) | (sim->disks.ix ? 4u : 0u));
     ds_put_u64(w, sim->steps);
     ds_put_u64(w, sim->observables_since_step);
     ds_put_u64(w, sim->tally.collisions);
@@ -183,6 +186,10 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
             ds_put_f64(w, d->r[k]);
         if (d->m)
             ds_put_f64(w, d->m[k]);
+        if (d->ix) {
+            ds_put_u32(w, (uint32_t)d->ix[k]);
+            ds_put_u32(w, (uint32_t)d->iy[k]);
+        }
     }
     sim->integrator->save(sim, w);
 }
@@ -384,7 +391,7 @@ static ds_status check_positions(const ds_sim *sim, ds_state_error *err)
     return DS_OK;
 }
 
-static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
+static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_state_error *err)
 {
     const ds_world *w = &sim->world;
     ds_disks *d = &sim->disks;
@@ -398,6 +405,10 @@ static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_state_error *err)
             d->r[k] = ds_get_f64(r);
         if (d->m)
             d->m[k] = ds_get_f64(r);
+        if (images) { /* any counts: every pair of int32 is a place */
+            d->ix[k] = (int32_t)ds_get_u32(r);
+            d->iy[k] = (int32_t)ds_get_u32(r);
+        }
         if (r->failed)
             return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside slot %zu", k);
         const double radius = d->r ? d->r[k] : w->radius;
@@ -438,9 +449,13 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     sim->world = w;
     sim->integrator = ds_integrator_ops_of(w.integrator);
     const uint32_t arrays = ds_get_u32(&r);
-    if (arrays > 3u)
+    const int periodic = w.boundary == DS_PERIODIC;
+    if (arrays > 7u)
         st = ds_state_refuse(err, DS_ERR_FORMAT, "it names arrays this library does not know");
-    else if (ds_disks_add_mixture(&sim->disks, arrays & 1u, arrays & 2u) != DS_OK)
+    else if ((arrays & 4u) && !periodic)
+        st = ds_state_refuse(err, DS_ERR_FORMAT, "it has image counters without a periodic box");
+    else if (ds_disks_add_mixture(&sim->disks, arrays & 1u, arrays & 2u) != DS_OK ||
+             (periodic && ds_disks_add_images(&sim->disks) != DS_OK))
         st = ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", w.n);
     sim->steps = ds_get_u64(&r);
     sim->observables_since_step = ds_get_u64(&r);
@@ -460,7 +475,7 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     for (size_t k = 0; st == DS_OK && k < w.n; ++k)
         sim->disks.slot[k] = UINT32_MAX;
     if (st == DS_OK)
-        st = read_disks(&r, sim, err);
+        st = read_disks(&r, sim, (arrays & 4u) != 0, err);
     if (st == DS_OK)
         st = sim->integrator->load(sim, &r, err);
     if (st == DS_OK && ds_left(&r) != 0)

@@ -81,8 +81,16 @@ void ds_move_and_wrap(ds_disks *d, const ds_world *w)
     const double dt = w->dt, box_x = w->box, box_y = w->box_y;
     double *restrict x = d->x, *restrict y = d->y;
     const double *restrict vx = d->vx, *restrict vy = d->vy;
+    if (!d->ix) {
+        for (size_t k = 0; k < n; ++k) {
+            x[k] = ds_wrap(x[k] + vx[k] * dt, box_x);
+            y[k] = ds_wrap(y[k] + vy[k] * dt, box_y);
+        }
+        return;
+    }
+    int32_t *restrict ix = d->ix, *restrict iy = d->iy;
     for (size_t k = 0; k < n; ++k) {
-        x[k] = ds_wrap(x[k] + vx[k] * dt, box_x);
-        y[k] = ds_wrap(y[k] + vy[k] * dt, box_y);
+        x[k] = ds_wrap_counting(x[k] + vx[k] * dt, box_x, &ix[k]);
+        y[k] = ds_wrap_counting(y[k] + vy[k] * dt, box_y, &iy[k]);
     }
 }

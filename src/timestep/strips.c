@@ -192,7 +192,8 @@ static ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t
 static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w, size_t nm,
                           size_t *mp)
 {
-    return d->r || d->m ? merge_into(d, st, t, w, nm, mp, 1) : merge_into(d, st, t, w, nm, mp, 0);
+    return d->r || d->m || d->ix ? merge_into(d, st, t, w, nm, mp, 1)
+                                 : merge_into(d, st, t, w, nm, mp, 0);
 }
 
 /* Lists the disks outside their strip's band, with the strip their

@@ -10,9 +10,11 @@
  * The N disks cover the area fraction ETA of the 1000 x H box (H = 1000
  * unless --box-y): R = sqrt(ETA 1000 H / (N pi)). After T time units of relaxation (default
  * 5) it runs B blocks (default 20) of T time units each (default 1),
- * taking Z in each block from the collision virial (ds_virial_pressure),
- * and with walls also from the walls (ds_pressure), both with A the area
- * the centres reach. Z is the mean over the blocks; its error is the
+ * taking Z in each block from the collision virial, the canonical Z of
+ * ds_compressibility (kT = K / N with walls, K_int / (N - 1) in a
+ * periodic box, where the momentum is conserved: the Z of Monte Carlo at
+ * the same N), and with walls also from the walls (ds_pressure A / K),
+ * both with A the area the centres reach. Z is the mean over the blocks; its error is the
  * standard error of that mean, sqrt(var / (B - 1)), which is honest when
  * a block is much longer than the time over which the pressure stays
  * correlated (collision times, here ~1e-3 to 1e-2; near a phase transition
@@ -137,7 +139,7 @@ int main(int argc, char **argv)
         ds_reset_observables(sim);
         ds_run(sim, per_block);
         const double energy = ds_kinetic_energy(sim);
-        add(&virial, ds_virial_pressure(sim) * area / energy);
+        add(&virial, ds_compressibility(sim));
         if (walls)
             add(&wall, ds_pressure(sim) * area / energy);
     }
