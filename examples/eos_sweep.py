@@ -6,7 +6,7 @@ Each point is one disksim.Sim: event-driven, in a periodic box of aspect
 sqrt(3)/2 (1000 x 866.03), started on the triangular lattice that fits it,
 as tools/analysis/eos.sh runs its points. After RELAX time units it measures
 BLOCKS blocks of BLOCK time units; Z = P A / (N kT) is the mean of the
-blocks' virial Z and its error the standard error of that mean, computed as
+blocks' canonical Z (Sim.compressibility) and its error the standard error of that mean, computed as
 tools/pressure computes them, so each row is the row tools/pressure prints
 for the same point (tools/analysis/plot_eos.plt can plot them).
 
@@ -41,12 +41,11 @@ def point(n, eta, relax, blocks, block):
                     box_y=HEIGHT)
     s.run(round(relax / s.dt))
     collisions = s.collision_count
-    area = s.box * s.box_y
     total = total2 = 0.0
     for _ in range(blocks):
         s.reset_observables()
         s.run(round(block / s.dt))
-        z = s.virial_pressure * area / s.kinetic_energy
+        z = s.compressibility
         total += z
         total2 += z * z
     mean = total / blocks

@@ -24,7 +24,8 @@ static const real_getter get_time = {ds_time}, get_radius = {ds_radius}, get_box
                          get_wall_impulse = {ds_wall_impulse},
                          get_collision_seconds = {ds_collision_seconds},
                          get_radius_max = {ds_radius_max}, get_area_fraction = {ds_area_fraction},
-                         get_growth_z = {ds_growth_z};
+                         get_growth_z = {ds_growth_z}, get_temperature = {ds_temperature},
+                         get_compressibility = {ds_compressibility};
 static const count_getter get_steps = {ds_steps}, get_n = {count_of},
                           get_collision_count = {ds_collision_count},
                           get_wall_count = {ds_wall_count}, get_pairs_tested = {ds_pairs_tested};
@@ -191,8 +192,17 @@ PyGetSetDef dspy_sim_getset[] = {
          "any step: P A = E + (1 / (2 t)) sum over collisions of r_ij . dp_i, with E the\n"
          "kinetic energy (N kT = E in 2D) and A the area the centres reach, (box - 2R)\n"
          "(box_y - 2R) with walls, box box_y in a periodic box. The compressibility\n"
-         "factor is Z = virial_pressure * A / kinetic_energy. With the time step the\n"
-         "collisions happen a little inside 2R, which biases it low."),
+         "factor is Z = compressibility. With the time step the collisions happen a\n"
+         "little inside 2R, which biases it low."),
+    REAL(temperature,
+         "The temperature the collisions see: kT = kinetic_energy / n with walls; in a\n"
+         "periodic box, where the momentum is conserved, kT = K_int / (n - 1), K_int the\n"
+         "kinetic energy less the centre of mass's (0 for one disk)."),
+    REAL(compressibility,
+         "The canonical compressibility factor Z = P A / (n kT), kT = temperature,\n"
+         "averaged since the last reset (0 before any step): the Z Monte Carlo gives at\n"
+         "the same n. With walls it is virial_pressure * A / kinetic_energy; periodic,\n"
+         "that is high by about (Z - 1) / n and this is not."),
     REAL(psi6, "Global bond-orientational order |(1/N) sum_j psi6_j| of the disks now, with\n"
                "cutoff 1.4 d (d = 2R): near 1 for a crystal of one orientation, O(1/sqrt N)\n"
                "for a liquid. Computed when read, O(N). NaN for a periodic box narrower than\n"
