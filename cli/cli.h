@@ -47,6 +47,9 @@ typedef struct options {
     ds_mass_rule mass_rule;
     /* --grow RATE, --until-eta, --until-z (0: not given) */
     double grow_rate, until_eta, until_z;
+    /* --measure-after T: the observables reset at the first frame at t >=
+     * T (0: never) */
+    double measure_after;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */

@@ -53,6 +53,7 @@ typedef struct run {
     long jammed_frame;     /* the frame in which growth jammed, -1 */
     progress pr;
     double sim_seconds, out_seconds;
+    int measuring; /* --measure-after's reset has been made (or needs none) */
 } run;
 
 static const char stats_header[] =
@@ -256,6 +257,13 @@ static void run_frames(run *r)
         }
         double t0 = ds_now();
         emit_frame(r, frame);
+        /* The frame at T closes the relaxation: its row holds the averages
+         * from the start, the rows after it those from it on. Before the
+         * checkpoint, so that a restart from it carries the reset. */
+        if (!r->measuring && ds_time(r->sim) >= o->measure_after) {
+            ds_reset_observables(r->sim);
+            r->measuring = 1;
+        }
         if (o->checkpoint_every && frame > 0 && frame % o->checkpoint_every == 0 &&
             frame < r->last && !stop_signal())
             write_checkpoint(r, frame);
@@ -308,6 +316,17 @@ int main(int argc, char **argv)
     if (sim_was_read)
         start_growth(&o, r.sim);
     r.last = r.first + o.frames - 1;
+    /* --measure-after: a restart past T continues the checkpoint's
+     * averages (its run made the reset); a T past the last frame would
+     * measure nothing. */
+    r.measuring = !(o.measure_after > 0.0) || (r.sim && ds_time(r.sim) >= o.measure_after);
+    if (!r.measuring) {
+        const double dt = r.sim ? ds_dt(r.sim) : p.dt > 0.0 ? p.dt : 0.001; /* 0: the default */
+        const double end = (double)((uint64_t)r.last * o.steps_per_frame) * dt;
+        if (o.measure_after > end)
+            die(EXIT_USAGE, "--measure-after %g is past the run's last frame, at t = %g",
+                o.measure_after, end);
+    }
     check_other_runs(&o, r.last);
 
     make_out_dir(o.out_dir);

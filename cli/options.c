@@ -47,6 +47,9 @@ static const char *const usage_text =
     "                       (event-driven, periodic); until Z passes 1e6, or:\n"
     "  --until-eta ETA      stop growing at area fraction ETA, then run on\n"
     "  --until-z Z          stop growing, and the run, once Z passes Z (1 < Z <= 1e9)\n"
+    "  --measure-after T    discard the start: the pressures and the wall counts of\n"
+    "                       --stats and the report are averaged from the first frame\n"
+    "                       at time >= T on\n"
     "  --integrator I       step (the fixed time step, default) or event (exact\n"
     "                       event-driven dynamics)\n"
     "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
@@ -230,6 +233,11 @@ static void check_combination(const options *o, int npos, const char *system_opt
         die(EXIT_USAGE, "--grow needs --integrator event (the time step cannot grow disks)");
     if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_PERIODIC)
         die(EXIT_USAGE, "--grow needs --periodic (the compression runs in a periodic box)");
+    /* Growth measures its own Z over windows of collisions, and its
+     * pressure is not an equilibrium one to average. */
+    if (o->measure_after > 0.0 && o->grow_rate > 0.0)
+        die(EXIT_USAGE, "--measure-after cannot be given with --grow: a growing packing has no "
+                        "equilibrium to measure");
     if (npos == 1 || (npos == 0 && !o->restart_path && !o->from_path))
         die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
             npos == 0 ? "N and R" : "R");
@@ -309,7 +317,8 @@ options parse_args(int argc, char **argv)
                 MASS,
                 GROW,
                 UNTIL_ETA,
-                UNTIL_Z
+                UNTIL_Z,
+                MEASURE_AFTER
             };
             /* In the order of the enum; those that describe the system
              * with a system flag. */
@@ -321,7 +330,7 @@ options parse_args(int argc, char **argv)
                 {"--stats", 0}, {"--broadphase", 1}, {"--integrator", 1},       {"--trajectory", 0},
                 {"--box-y", 1}, {"--checkpoint", 0}, {"--checkpoint-every", 0}, {"--restart", 0},
                 {"--from", 0},  {"--mixture", 1},    {"--mass", 1},             {"--grow", 0},
-                {"--until-eta", 0}, {"--until-z", 0}};
+                {"--until-eta", 0}, {"--until-z", 0}, {"--measure-after", 0}};
             int which = -1;
             for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
                 if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
@@ -397,6 +406,9 @@ options parse_args(int argc, char **argv)
                 if (!(o.until_eta < 1.0))
                     die(EXIT_USAGE, "--until-eta must be an area fraction between 0 and 1, got '%s'",
                         value);
+                break;
+            case MEASURE_AFTER:
+                o.measure_after = positive_arg("--measure-after", value, 1e12);
                 break;
             default:
                 o.until_z = positive_arg("--until-z", value, 1e9);

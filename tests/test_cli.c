@@ -1062,6 +1062,53 @@ static void test_a_growth_stops_at_its_target_area_fraction(void **state)
     remove_tree(dir);
 }
 
+/* --measure-after T: the rows after the frame at T average from it on,
+ * to the bit what the library gives with ds_reset_observables at that
+ * step; and a restart from a checkpoint past T goes on with those
+ * averages (it does not reset again), so its last row is the whole run's. */
+static void test_measure_after_discards_the_start(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *sys = "100 5 --seed 3 --integrator event --frames 11 --measure-after 0.5 --quiet";
+    must_run(dir, "%s --out a --stats a.csv", sys);
+    ds_params p = ds_default_params(100, 5.0);
+    p.seed = 3;
+    p.integrator = DS_EVENT_DRIVEN;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    ds_run(sim, 500); /* frame 5, t = 0.5: the reset */
+    ds_reset_observables(sim);
+    ds_run(sim, 500);
+    char want[3][64];
+    snprintf(want[0], sizeof want[0], "%llu", (unsigned long long)ds_wall_count(sim));
+    snprintf(want[1], sizeof want[1], "%.17g", ds_pressure(sim));
+    snprintf(want[2], sizeof want[2], "%.17g", ds_virial_pressure(sim));
+    ds_destroy(sim);
+    char *csv = slurp_in(dir, "a.csv", NULL), *cols[16];
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_string_equal(cols[6], want[0]);
+    assert_string_equal(cols[7], want[1]);
+    assert_string_equal(cols[8], want[2]);
+    char whole[256];
+    snprintf(whole, sizeof whole, "%s,%s,%s", cols[6], cols[7], cols[8]);
+    free(csv);
+
+    must_run(dir, "100 5 --seed 3 --integrator event --frames 8 --measure-after 0.5 --quiet "
+                  "--out b --checkpoint b.ckpt");
+    must_run(dir, "--restart b.ckpt --frames 3 --measure-after 0.5 --quiet --out b --stats b.csv");
+    csv = slurp_in(dir, "b.csv", NULL);
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 16), 11);
+    char restarted[256];
+    snprintf(restarted, sizeof restarted, "%s,%s,%s", cols[6], cols[7], cols[8]);
+    assert_string_equal(restarted, whole);
+    free(csv);
+    remove_tree(dir);
+}
+
 /* --grow until it jams: the packing at the step that jammed is the run's
  * last frame (fewer frames than asked), with no overlap left (the
  * library's check when its checkpoint is read back), and the checkpoint
@@ -1336,6 +1383,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_a_mixture_run_writes_its_two_radii),
         cmocka_unit_test(test_a_growth_stops_at_its_target_area_fraction),
         cmocka_unit_test(test_a_growth_that_jams_ends_the_run_with_the_packing),
+        cmocka_unit_test(test_measure_after_discards_the_start),
     };
     for (size_t k = 0; k < sizeof survive / sizeof survive[0]; ++k)
         tests[n++] = survive[k];
