@@ -55,7 +55,12 @@ static inline double ds_wrap_counting(double u, double box, int32_t *image)
         return u;
     const double f = floor(u / box);
     u -= box * f;
-    *image = (int32_t)((uint32_t)*image + (uint32_t)(int64_t)f);
+    /* The count wraps modulo 2^32, so only f modulo 2^32 counts: fmod is
+     * exact, and keeps the conversion defined however far u was (a forged
+     * checkpoint's 1e34); a u that is not finite counts nothing. */
+    const double turns = fmod(f, 4294967296.0);
+    if (turns == turns)
+        *image = (int32_t)((uint32_t)*image + (uint32_t)(int64_t)turns);
     if (u >= box) { /* rounding reached box itself: the next box's 0 */
         *image = (int32_t)((uint32_t)*image + 1u);
         return 0.0;
