@@ -321,7 +321,8 @@ int main(int argc, char **argv)
      * measure nothing. */
     r.measuring = !(o.measure_after > 0.0) || (r.sim && ds_time(r.sim) >= o.measure_after);
     if (!r.measuring) {
-        const double dt = r.sim ? ds_dt(r.sim) : p.dt > 0.0 ? p.dt : 0.001; /* 0: the default */
+        /* The command has no --dt: a new run steps by the header's default. */
+        const double dt = r.sim ? ds_dt(r.sim) : 0.001;
         const double end = (double)((uint64_t)r.last * o.steps_per_frame) * dt;
         if (o.measure_after > end)
             die(EXIT_USAGE, "--measure-after %g is past the run's last frame, at t = %g",

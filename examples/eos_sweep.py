@@ -6,9 +6,9 @@ Each point is one disksim.Sim: event-driven, in a periodic box of aspect
 sqrt(3)/2 (1000 x 866.03), started on the triangular lattice that fits it,
 as tools/analysis/eos.sh runs its points. After RELAX time units it measures
 BLOCKS blocks of BLOCK time units; Z = P A / (N kT) is the mean of the
-blocks' canonical Z (Sim.compressibility) and its error the standard error of that mean, computed as
-tools/pressure computes them, so each row is the row tools/pressure prints
-for the same point (tools/analysis/plot_eos.plt can plot them).
+blocks' canonical Z (Sim.compressibility) and its error the standard error
+of that mean, computed as tools/pressure computes them, so each row is the
+row tools/pressure prints for the same point (tools/analysis/plot_eos.plt can plot them).
 
 The points run at once on a concurrent.futures pool of threads, as many as
 there are cores: Sim.run releases the GIL, so threads are enough, and the
