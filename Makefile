@@ -110,7 +110,8 @@ test: all $(TEST_BIN)
 # man pages render without a warning. It prints what is wrong and fails.
 .PHONY: check-docs
 check-docs: all
-	sh tests/check_docs.sh $(DISKS) $(OUT)tools/render $(OUT)tools/gr $(OUT)tools/pressure
+	sh tests/check_docs.sh $(DISKS) $(OUT)tools/render $(OUT)tools/gr $(OUT)tools/pressure \
+	    $(OUT)tools/transport
 test: check-docs
 
 # ---------------------------------------------------------------- hardening
@@ -195,9 +196,17 @@ $(OUT)tools/gr: tools/analysis/gr.c $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# tools/transport: diffusion, mean-squared displacement and velocity
+# autocorrelation of one periodic system (public API only), plotted by
+# tools/analysis/plot_transport.plt. Built by `make`.
+all: $(OUT)tools/transport
+$(OUT)tools/transport: tools/analysis/transport.c $(LIB) include/disk_sim.h
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 clean: clean-bench
 clean-bench:
-	rm -f tools/bench tools/pressure tools/gr
+	rm -f tools/bench tools/pressure tools/gr tools/transport
 
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,

@@ -527,6 +527,58 @@ double ds_compressibility(const ds_sim *sim);
 void ds_reset_observables(ds_sim *sim);
 
 /* ------------------------------------------------------------------ */
+/* Transport: displacement and velocity correlations                   */
+/* ------------------------------------------------------------------ */
+
+/* An accumulator of the mean-squared displacement and the velocity
+ * autocorrelation of n disks with multiple time origins, fed one sample
+ * at a time (observe/transport.c):
+ *   msd[k]  = < |r_i(t0 + k h) - r_i(t0)|^2 >,
+ *   vacf[k] = < v_i(t0) . v_i(t0 + k h) >,
+ * for lags k < lags, averaged over the n disks and every time origin t0
+ * seen with lag k. h is the caller's interval between samples (the
+ * accumulator never sees time: the samples must be equally spaced); every
+ * origin_every-th sample, starting with the first, is an origin (1: every
+ * sample; more saves work when samples are closer than the dynamics
+ * decorrelates). r must be unwrapped (ds_get_unwrapped) and the disks in
+ * the same order in every sample. Memory: 4 n ceil(lags / origin_every)
+ * doubles; work per sample: that many multiply-adds. */
+typedef struct ds_transport ds_transport; /* opaque */
+
+/* A new accumulator into *out. DS_ERR_ARG if out is NULL, n is 0, lags is
+ * below 2 or origin_every is 0; DS_ERR_NOMEM without memory for it. */
+ds_status ds_transport_create(size_t n, size_t lags, size_t origin_every, ds_transport **out);
+void ds_transport_destroy(ds_transport *tr); /* NULL is fine */
+/* One sample: unwrapped centres xy[2 i], xy[2 i + 1] and velocities
+ * v[2 i], v[2 i + 1] of disk i < n. DS_ERR_ARG (nothing added) if a
+ * pointer is NULL or a value is not finite. */
+ds_status ds_transport_add(ds_transport *tr, const double *xy, const double *v);
+/* The sample of sim at ds_time: ds_get_unwrapped and the velocities, in
+ * generation order. DS_ERR_ARG if a pointer is NULL or ds_count(sim) is
+ * not the accumulator's n. */
+ds_status ds_transport_sample(ds_transport *tr, const ds_sim *sim);
+size_t ds_transport_lags(const ds_transport *tr); /* 0 for NULL */
+/* The averages so far, each array of ds_transport_lags values (any of
+ * them may be NULL): msd, vacf, and origins[k], how many origins have
+ * been seen with lag k (a lag not yet reached has msd and vacf 0).
+ * DS_ERR_ARG if tr is NULL. */
+ds_status ds_transport_get(const ds_transport *tr, double *msd, double *vacf, uint64_t *origins);
+/* The self-diffusion coefficient over the window of lags [from, to]
+ * (interval h between samples), two ways that agree up to the sampling
+ * noise and the O(h^2) error of the trapezoids:
+ *   Einstein:    (msd[to] - msd[from]) / (4 (to - from) h), the slope of
+ *                msd / 4 in two dimensions;
+ *   Green-Kubo:  the mean over the window of D(t) = (1/2) int_0^t vacf,
+ *                both integrals by trapezoids on the samples.
+ * In two dimensions d msd / dt = 4 D(t) exactly, so the two are the same
+ * average of D(t), which for a fluid of disks grows like ln t (the 1/t
+ * tail of the autocorrelation, docs/physics.md): quote the window. Either
+ * pointer may be NULL. DS_ERR_ARG if tr is NULL, h is not finite and
+ * positive, from >= to, to >= lags, or no origin has reached lag to. */
+ds_status ds_transport_diffusion(const ds_transport *tr, double interval, size_t from, size_t to,
+                                 double *einstein, double *green_kubo);
+
+/* ------------------------------------------------------------------ */
 /* Order: bond-orientational order psi6                                */
 /* ------------------------------------------------------------------ */
 

@@ -35,10 +35,11 @@ export LC_ALL=C
 
 # A program path without a slash is run from here, not looked up on PATH.
 here() { case $1 in */* | '') echo "$1" ;; *) echo "./$1" ;; esac; }
-disks=$(here "${1:?usage: check_docs.sh DISKS [RENDER [GR [PRESSURE]]]}")
+disks=$(here "${1:?usage: check_docs.sh DISKS [RENDER [GR [PRESSURE [TRANSPORT]]]]}")
 render=$(here "${2:-}")
 gr=$(here "${3:-}")
 pressure=$(here "${4:-}")
+transport=$(here "${5:-}")
 
 MD_FILES="README.md CHANGELOG.md $(ls docs/*.md)"
 MAN_FILES=$(ls man/*.[0-9])
@@ -232,6 +233,10 @@ if [ -n "$pressure" ] && [ -x "$pressure" ]; then
     check_program pressure "$pressure" - docs/cli.md pressure &&
         checked_programs="$checked_programs pressure"
 fi
+if [ -n "$transport" ] && [ -x "$transport" ]; then
+    check_program transport "$transport" - docs/cli.md transport &&
+        checked_programs="$checked_programs transport"
+fi
 
 # ------------------------------------------------------------ 3. example commands
 
@@ -244,7 +249,7 @@ command_lines() {
     awk '
     FNR == 1 { fence = 0; table = 0; ex = 0; held = "" }
     function commands(text, where,    w, rest, seg, prog) {
-        while (match(text, /(^|[ \/;&|(`$])(disks-render|disks|render-osmesa|render-egl|render|gr|pressure)( |$)/)) {
+        while (match(text, /(^|[ \/;&|(`$])(disks-render|disks|render-osmesa|render-egl|render|gr|pressure|transport)( |$)/)) {
             w = substr(text, RSTART, RLENGTH); rest = substr(text, RSTART + RLENGTH)
             sub(/^[ \/;&|(`$]/, "", w); sub(/ $/, "", w)
             prog = w

@@ -1,0 +1,237 @@
+/* SPDX-License-Identifier: MIT */
+/* transport: self-diffusion of hard disks in a periodic box, with the
+ * mean-squared displacement and the velocity autocorrelation against time
+ * and the Enskog value to compare with. Public API only (ds_transport).
+ *
+ *   transport N ETA [--relax T] [--interval H] [--lags L] [--every E]
+ *             [--blocks B] [--block T] [--window A:B] [--seed S]
+ *
+ * The N disks cover the area fraction ETA of the periodic 1000 x 1000 box,
+ * event-driven. Times default to multiples of the Enskog mean free time
+ * t_E = 1 / nu_E, nu_E = (4 / sigma) (Z - 1) sqrt(kT / (pi m)) the
+ * collisions per disk per unit time at the Z of Henderson's equation of
+ * state (only to choose the defaults; what is printed is measured):
+ * relaxation 50 t_E, interval 0.1 t_E, 400 lags (to 40 t_E), an origin
+ * every 5 samples, 10 blocks each 10 times the longest lag. Each block
+ * has its own accumulator; a curve is the mean over the blocks and its
+ * error the standard error of that mean.
+ *
+ * Prints '#' lines with the system and its Enskog values,
+ *   D_0 = (1 / (2 n sigma)) sqrt(kT / (pi m))   (Gass 1971),
+ *   D_E = D_0 / g(sigma),  g(sigma) = (Z - 1) / (2 eta),
+ * with Z measured (ds_compressibility) and kT = ds_temperature, the
+ * diffusion coefficient over the window of lags A:B (default 200:399)
+ * from the Einstein slope and from Green-Kubo (ds_transport_diffusion),
+ * then one line per lag:
+ *   t t/t_c msd error C/C0 error D(t) error
+ * where t_c = 1 / nu is the measured mean free time, C/C0 the velocity
+ * autocorrelation over its value at t = 0 and D(t) = (1/2) int_0^t C. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "disk_sim.h"
+
+#define PI 3.14159265358979323846
+
+static void usage(void)
+{
+    fputs("usage: transport N ETA [--relax T] [--interval H] [--lags L] [--every E]\n"
+          "                 [--blocks B] [--block T] [--window A:B] [--seed S]\n",
+          stderr);
+    exit(2);
+}
+
+static double number(const char *s, double lo, double hi, const char *what)
+{
+    char *end;
+    const double v = strtod(s, &end);
+    if (end == s || *end || !(v >= lo && v <= hi)) {
+        fprintf(stderr, "transport: %s must be a number in [%g, %g], got '%s'\n", what, lo, hi,
+                s);
+        exit(2);
+    }
+    return v;
+}
+
+typedef struct stats {
+    double sum, sum2;
+    int count;
+} stats;
+
+static void add(stats *s, double v)
+{
+    s->sum += v;
+    s->sum2 += v * v;
+    ++s->count;
+}
+
+static double mean(const stats *s) { return s->count ? s->sum / s->count : 0.0; }
+
+static double error(const stats *s)
+{
+    const double m = mean(s), var = s->sum2 / s->count - m * m;
+    return s->count > 1 && var > 0.0 ? sqrt(var / (s->count - 1)) : 0.0;
+}
+
+static void *checked_calloc(size_t n, size_t size)
+{
+    void *p = calloc(n, size);
+    if (!p) {
+        fputs("transport: out of memory\n", stderr);
+        exit(1);
+    }
+    return p;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 3 || strcmp(argv[1], "--help") == 0)
+        usage();
+    const size_t n = (size_t)number(argv[1], 2, 1e8, "N");
+    const double eta = number(argv[2], 1e-6, 0.9, "ETA");
+    ds_params p = ds_default_params(n, 1.0);
+    p.integrator = DS_EVENT_DRIVEN;
+    p.boundary = DS_PERIODIC;
+    p.box = 1000.0;
+    p.radius = sqrt(eta * p.box * p.box / ((double)n * PI));
+    /* The defaults' clock: the Enskog collision rate at Henderson's Z,
+     * (1 + eta^2 / 8) / (1 - eta)^2, with kT / m = speed^2 / 2. */
+    const double z_guess = (1.0 + eta * eta / 8.0) / ((1.0 - eta) * (1.0 - eta));
+    const double speed = p.speed > 0.0 ? p.speed : 100.0; /* 0 means 100 */
+    const double t_guess =
+        1.0 / (2.0 / p.radius * (z_guess - 1.0) * sqrt(0.5 * speed * speed / PI));
+    double relax = 50.0 * t_guess, interval = 0.1 * t_guess, block = 0.0;
+    size_t lags = 400, every = 5, from = 0, to = 0;
+    int blocks = 10;
+    for (int i = 3; i < argc; ++i) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!v)
+            usage();
+        ++i;
+        if (strcmp(a, "--relax") == 0)
+            relax = number(v, 0.0, 1e9, "--relax");
+        else if (strcmp(a, "--interval") == 0)
+            interval = number(v, 1e-9, 1e6, "--interval");
+        else if (strcmp(a, "--lags") == 0)
+            lags = (size_t)number(v, 3, 1e6, "--lags");
+        else if (strcmp(a, "--every") == 0)
+            every = (size_t)number(v, 1, 1e6, "--every");
+        else if (strcmp(a, "--blocks") == 0)
+            blocks = (int)number(v, 2, 100000, "--blocks");
+        else if (strcmp(a, "--block") == 0)
+            block = number(v, 1e-9, 1e9, "--block");
+        else if (strcmp(a, "--window") == 0) {
+            char *colon = strchr(v, ':');
+            if (!colon)
+                usage();
+            *colon = '\0';
+            from = (size_t)number(v, 0, 1e6, "--window's A");
+            to = (size_t)number(colon + 1, 1, 1e6, "--window's B");
+        } else if (strcmp(a, "--seed") == 0)
+            p.seed = (uint64_t)number(v, 0, 9007199254740992.0, "--seed");
+        else
+            usage();
+    }
+    if (to == 0) {
+        from = lags / 2;
+        to = lags - 1;
+    }
+    if (from >= to || to >= lags) {
+        fprintf(stderr, "transport: --window A:B needs A < B < %zu (the lags)\n", lags);
+        return 2;
+    }
+    const uint64_t per_block = block > 0.0 ? (uint64_t)llround(block / interval) : 10 * lags;
+    if (per_block < lags) {
+        fprintf(stderr, "transport: a block of %llu samples is shorter than the %zu lags\n",
+                (unsigned long long)per_block, lags);
+        return 2;
+    }
+    p.dt = interval;
+    ds_sim *sim = NULL;
+    ds_params_error why;
+    ds_status st = ds_diagnose_params(&p, NULL, &why);
+    if (st == DS_OK)
+        st = ds_create(&p, &sim);
+    if (st != DS_OK) {
+        fprintf(stderr, "transport: N = %zu at area fraction %g: %s\n", n, eta,
+                why.message[0] ? why.message : ds_status_str(st));
+        return 1;
+    }
+    const double t0 = ds_now();
+    ds_run(sim, (uint64_t)llround(relax / interval));
+    ds_reset_observables(sim);
+    const uint64_t collisions0 = ds_collision_count(sim);
+    const double time0 = ds_time(sim);
+
+    stats *msd = checked_calloc(lags, sizeof *msd), *vacf = checked_calloc(lags, sizeof *vacf);
+    stats *dt_gk = checked_calloc(lags, sizeof *dt_gk);
+    stats einstein = {0, 0, 0}, green_kubo = {0, 0, 0}, ratio = {0, 0, 0}, z = {0, 0, 0};
+    double *m = checked_calloc(lags, sizeof *m), *c = checked_calloc(lags, sizeof *c);
+    const double sigma = 2.0 * p.radius, density = (double)n / (p.box * p.box);
+    double kt = 0.0;
+    for (int b = 0; b < blocks; ++b) {
+        ds_transport *tr = NULL;
+        if (ds_transport_create(n, lags, every, &tr) != DS_OK) {
+            fputs("transport: out of memory for the correlations\n", stderr);
+            return 1;
+        }
+        ds_reset_observables(sim);
+        for (uint64_t s = 0; s < per_block; ++s) {
+            if (s)
+                ds_step(sim);
+            ds_transport_sample(tr, sim);
+        }
+        ds_transport_get(tr, m, c, NULL);
+        double e, g;
+        ds_transport_diffusion(tr, interval, from, to, &e, &g);
+        ds_transport_destroy(tr);
+        kt = ds_temperature(sim); /* the same in every block: energy is conserved */
+        const double zb = ds_compressibility(sim);
+        const double d_enskog = sqrt(kt / PI) / (2.0 * density * sigma) * (2.0 * eta) / (zb - 1.0);
+        add(&z, zb);
+        add(&einstein, e);
+        add(&green_kubo, g);
+        add(&ratio, e / d_enskog);
+        double d = 0.0;
+        for (size_t k = 0; k < lags; ++k) {
+            if (k)
+                d += 0.25 * interval * (c[k - 1] + c[k]);
+            add(&msd[k], m[k]);
+            add(&vacf[k], c[k] / c[0]);
+            add(&dt_gk[k], d);
+        }
+    }
+    const double nu = 2.0 * (double)(ds_collision_count(sim) - collisions0) /
+                      ((double)n * (ds_time(sim) - time0));
+    const double zm = mean(&z), g_contact = (zm - 1.0) / (2.0 * eta);
+    const double d0 = sqrt(kt / PI) / (2.0 * density * sigma), de = d0 / g_contact;
+    printf("# transport: N %zu eta %.6g periodic event seed %llu, %d blocks of %llu samples\n", n,
+           eta, (unsigned long long)p.seed, blocks, (unsigned long long)per_block);
+    printf("# sigma %.9g n %.9g kT/m %.9g interval %.9g lags %zu every %zu\n", sigma, density, kt,
+           interval, lags, every);
+    printf("# Z %.6f +- %.6f g(sigma) %.6f nu %.6g t_c %.6g\n", zm, error(&z), g_contact, nu,
+           1.0 / nu);
+    printf("# D_0 %.6g D_E %.6g\n", d0, de);
+    printf("# window %zu:%zu (t %.6g to %.6g, %.3g to %.3g t_c): D_einstein %.6g +- %.6g"
+           " D_green_kubo %.6g +- %.6g D/D_E %.5f +- %.5f\n",
+           from, to, (double)from * interval, (double)to * interval,
+           (double)from * interval * nu, (double)to * interval * nu, mean(&einstein),
+           error(&einstein), mean(&green_kubo), error(&green_kubo), mean(&ratio), error(&ratio));
+    printf("# %llu collisions, %.1f s\n",
+           (unsigned long long)(ds_collision_count(sim) - collisions0), ds_now() - t0);
+    printf("# t t/t_c msd error C/C0 error D(t) error\n");
+    for (size_t k = 0; k < lags; ++k)
+        printf("%.9g %.6g %.9g %.3g %.9g %.3g %.9g %.3g\n", (double)k * interval,
+               (double)k * interval * nu, mean(&msd[k]), error(&msd[k]), mean(&vacf[k]),
+               error(&vacf[k]), mean(&dt_gk[k]), error(&dt_gk[k]));
+    free(msd);
+    free(vacf);
+    free(dt_gk);
+    free(m);
+    free(c);
+    ds_destroy(sim);
+    return 0;
+}
