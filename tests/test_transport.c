@@ -333,7 +333,8 @@ static void test_vacf_falls_at_the_collision_rate(void **state)
     if (getenv("DS_TEST_VERBOSE"))
         printf("-C'(0+) / (nu C(0) 2N / (2N - 1)) = %.5f +- %.5f\n", r.mean, r.error);
     assert_true(fabs(r.mean - 1.0) <= 5.0 * r.error);
-    assert_true(r.error < 0.01);
+    /* Or the check would mean little (the quick run's blocks are shorter). */
+    assert_true(r.error < (quick_mode() ? 0.05 : 0.01));
     ds_destroy(f.sim);
 }
 
@@ -344,8 +345,9 @@ static void test_vacf_falls_at_the_collision_rate(void **state)
  * ratio is bounded on both sides by physics, not by a fit:
  * - below by 1: the first Chapman-Enskog approximation is a variational
  *   lower bound on the Boltzmann-Enskog D (each Sonine term adds), and
- *   the correlated collisions the Boltzmann equation leaves out only add
- *   in two dimensions, through the positive 1/t tail;
+ *   at low density the leading effect of the correlated collisions the
+ *   Boltzmann equation leaves out is the positive 1/t tail (the
+ *   back-scattering that lowers D is of higher order in the density);
  * - above by (1 + s) (1 + (n sigma^2 / 4) ln(t_b / t_c)): s the higher
  *   Sonine terms (SONINE_BOUND) and the tail C(t) / C(0) = 1 / (8 pi n
  *   (D + nu) t) (mode coupling, docs/physics.md) integrated from one mean
@@ -353,6 +355,10 @@ static void test_vacf_falls_at_the_collision_rate(void **state)
  *   viscosity nu both D_0 at low density: d D / d ln t = (kT / m) / (8 pi
  *   n 2 D_0) = (n sigma^2 / 4) D_0;
  * each side widened by 5 standard errors over the blocks. */
+/* The converged Sonine series for the self-diffusion of disks is 1.027
+ * times the first approximation (1.024 at second order): a Monte Carlo
+ * evaluation of the Chapman-Enskog bracket integrals made for this test,
+ * which gives the known 1.019 for hard spheres. 0.03 bounds it. */
 #define SONINE_BOUND 0.03
 static void test_low_density_diffusion_is_enskogs(void **state)
 {
@@ -380,7 +386,64 @@ static void test_low_density_diffusion_is_enskogs(void **state)
         printf("eta %.2f: D / D_E = %.4f +- %.4f, bounds [1, %.4f]\n", eta, r.mean, r.error, upper);
     assert_true(r.mean >= 1.0 - 5.0 * r.error);
     assert_true(r.mean <= upper + 5.0 * r.error);
-    assert_true(r.error < 0.01); /* or the bounds would mean little */
+    /* Or the bounds would mean little (the quick run's blocks are shorter). */
+    assert_true(r.error < (quick_mode() ? 0.05 : 0.01));
+    ds_destroy(f.sim);
+}
+
+/* Intermediate density, area fraction 0.3 (A / A0 = 3.02), the window 20
+ * to 40 mean free times: D / D_E is above 1 and below what the long-time
+ * tail can add to the Boltzmann-Enskog value.
+ * - Above 1: the correlated motion that makes the tail (the vortex of
+ *   Alder and Wainwright 1970) raises D above Enskog's value at these
+ *   densities (Alder, Gass and Wainwright 1970 for disks at A / A0 >= 2;
+ *   the back-scattering that lowers it sets in near freezing).
+ * - Below (1 + s) + (kT / m) / (8 pi n (D_E + nu_E) D_E) ln(t_b / t_c):
+ *   the Sonine terms and the mode-coupling tail C(t) / C(0) = 1 / (8 pi n
+ *   (D + nu) t) integrated from one mean free time (where it cannot yet
+ *   have formed) to the window's end, with Enskog's D_E and kinematic
+ *   viscosity nu_E = eta_E / (n m), eta_E = 1.022 eta_0 (1 / g + 2 eta +
+ *   (1 + 8 / pi) eta^2 g), eta_0 = (1 / (2 sigma)) sqrt(m kT / pi) (Gass
+ *   1971), which are below the true D and nu here, so the amplitude is an
+ *   upper bound; the finite box, which cuts the tail off after L / c,
+ *   only lowers D further. Erpenbeck and Wood (1982) found the tail
+ *   itself agrees with mode coupling with Enskog's coefficients beyond 20
+ *   mean free times at these densities.
+ * Each side widened by 5 standard errors over the blocks. */
+static void test_intermediate_density_diffusion_is_above_enskog_within_the_tail(void **state)
+{
+    (void)state;
+    enum { BLOCKS = 10, LAGS = 401 };
+    const double eta = 0.3;
+    const int blocks = quick_mode() ? 3 : BLOCKS, samples = quick_mode() ? 800 : 4010;
+    fluid f = new_fluid(256, eta, 0.1, 17);
+    const double h = ds_dt(f.sim);
+    double ratio[BLOCKS], bound[BLOCKS];
+    for (int b = 0; b < blocks; ++b) {
+        ds_reset_observables(f.sim);
+        ds_transport *tr = run_block(&f, LAGS, 10, samples);
+        double d;
+        assert_int_equal(ds_transport_diffusion(tr, h, 200, 400, &d, NULL), DS_OK);
+        ds_transport_destroy(tr);
+        const double kt = ds_temperature(f.sim), z = ds_compressibility(f.sim);
+        const double g = (z - 1.0) / (2.0 * eta), n = f.density, sigma = f.sigma;
+        const double d_enskog = sqrt(kt / PI) / (2.0 * n * sigma * g);
+        const double eta_0 = sqrt(kt / PI) / (2.0 * sigma);
+        const double nu_enskog =
+            1.022 * eta_0 * (1.0 / g + 2.0 * eta + (1.0 + 8.0 / PI) * eta * eta * g) / n;
+        const double nu_c = 4.0 / sigma * (z - 1.0) * sqrt(kt / PI); /* collisions per disk */
+        const double t_b = 400 * h;
+        ratio[b] = d / d_enskog;
+        bound[b] = (1.0 + SONINE_BOUND) +
+                   kt / (8.0 * PI * n * (d_enskog + nu_enskog)) * log(t_b * nu_c) / d_enskog;
+    }
+    const block_stats r = stats_of(ratio, blocks), upper = stats_of(bound, blocks);
+    if (getenv("DS_TEST_VERBOSE"))
+        printf("eta %.2f: D / D_E = %.4f +- %.4f, bounds [1, %.4f]\n", eta, r.mean, r.error,
+               upper.mean);
+    assert_true(r.mean >= 1.0 - 5.0 * r.error);
+    assert_true(r.mean <= upper.mean + 5.0 * r.error);
+    assert_true(r.error < (quick_mode() ? 0.15 : 0.05));
     ds_destroy(f.sim);
 }
 
@@ -395,6 +458,7 @@ int main(void)
         cmocka_unit_test(test_einstein_and_green_kubo_agree_in_a_fluid),
         cmocka_unit_test(test_vacf_falls_at_the_collision_rate),
         cmocka_unit_test(test_low_density_diffusion_is_enskogs),
+        cmocka_unit_test(test_intermediate_density_diffusion_is_above_enskog_within_the_tail),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -20,12 +20,12 @@
 
 struct ds_transport {
     size_t n, lags, every, slots;
-    uint64_t samples;   /* samples added so far */
-    double *origin;     /* slots blocks of 4 n: x, y, vx, vy */
-    double *msd_sum;    /* lags sums of the per-origin mean |r - r0|^2 */
-    double *vacf_sum;   /* lags sums of the per-origin mean v . v0 */
-    uint64_t *origins;  /* lags counts of origins seen at each lag */
-    double *scratch;    /* 4 n: one sample of a sim (xy, then v) */
+    uint64_t samples;  /* samples added so far */
+    double *origin;    /* slots blocks of 4 n: x, y, vx, vy */
+    double *msd_sum;   /* lags sums of the per-origin mean |r - r0|^2 */
+    double *vacf_sum;  /* lags sums of the per-origin mean v . v0 */
+    uint64_t *origins; /* lags counts of origins seen at each lag */
+    double *scratch;   /* 4 n: one sample of a sim (xy, then v) */
 };
 
 ds_status ds_transport_create(size_t n, size_t lags, size_t origin_every, ds_transport **out)

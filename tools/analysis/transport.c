@@ -49,8 +49,7 @@ static double number(const char *s, double lo, double hi, const char *what)
     char *end;
     const double v = strtod(s, &end);
     if (end == s || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "transport: %s must be a number in [%g, %g], got '%s'\n", what, lo, hi,
-                s);
+        fprintf(stderr, "transport: %s must be a number in [%g, %g], got '%s'\n", what, lo, hi, s);
         exit(2);
     }
     return v;
@@ -217,9 +216,9 @@ int main(int argc, char **argv)
     printf("# D_0 %.6g D_E %.6g\n", d0, de);
     printf("# window %zu:%zu (t %.6g to %.6g, %.3g to %.3g t_c): D_einstein %.6g +- %.6g"
            " D_green_kubo %.6g +- %.6g D/D_E %.5f +- %.5f\n",
-           from, to, (double)from * interval, (double)to * interval,
-           (double)from * interval * nu, (double)to * interval * nu, mean(&einstein),
-           error(&einstein), mean(&green_kubo), error(&green_kubo), mean(&ratio), error(&ratio));
+           from, to, (double)from * interval, (double)to * interval, (double)from * interval * nu,
+           (double)to * interval * nu, mean(&einstein), error(&einstein), mean(&green_kubo),
+           error(&green_kubo), mean(&ratio), error(&ratio));
     printf("# %llu collisions, %.1f s\n",
            (unsigned long long)(ds_collision_count(sim) - collisions0), ds_now() - t0);
     printf("# t t/t_c msd error C/C0 error D(t) error\n");

@@ -1,0 +1,54 @@
+# SPDX-License-Identifier: MIT
+# The long-time tail of the velocity autocorrelation from tools/transport:
+# left, C(t)/C(0) against t/t_c on log-log axes with the mode-coupling
+# line amp/t and the sound traversal time L/c; right, D(t) = (1/2) int_0^t C
+# against ln t, which the 1/t tail makes a straight line.
+#
+#   tools/transport 65536 0.3 --interval 0.007 --lags 1000 --every 20 --blocks 8 > tail.dat
+#   gnuplot -e "data='tail.dat'; tc=0.01423; amp=0.00315; ts=4.96" tools/analysis/plot_transport.plt
+#
+# tc is the mean free time (tools/transport prints it, "t_c"), amp the
+# mode-coupling amplitude 1/(8 pi n (D + nu)) in time units, ts = L/c in
+# time units (docs/physics.md derives both). Writes transport_tail.png
+# (set out='name.png' to change).
+
+if (!exists("data")) data = 'tail.dat'
+if (!exists("out")) out = 'transport_tail.png'
+if (!exists("tc")) tc = 1.0
+if (!exists("amp")) amp = 0.0
+if (!exists("ts")) ts = 0.0
+
+set terminal pngcairo size 1300,560 font ',11'
+set output out
+set multiplot layout 1,2
+
+set title 'Velocity autocorrelation'
+set xlabel 't / t_c  (t_c: mean free time)'
+set ylabel 'C(t) / C(0)'
+set logscale xy
+set format y '10^{%L}'
+set xrange [0.5:*]
+set yrange [1e-5:1]
+set grid
+set key bottom left
+if (ts > 0) set arrow from ts / tc, 1e-5 to ts / tc, 1 nohead dt 3 lc rgb 'gray40'
+if (ts > 0) set label 'L/c' at ts / tc * 1.05, 0.3 tc rgb 'gray30'
+plot data using ($2):($5 > 0 ? $5 : 1/0):6 with yerrorbars pt 7 ps 0.4 lc rgb '#2a6fb0' \
+         title 'C(t)/C(0) > 0', \
+     amp > 0 ? amp / (x * tc) : 1/0 with lines lw 2 dt 2 lc rgb '#c0392b' \
+         title 'mode coupling 1/(8{/Symbol p}n(D+{/Symbol n})t)'
+
+unset arrow
+unset label
+set title 'D(t) = (1/2) \int_0^t C'
+set ylabel 'D(t)'
+set logscale x
+unset logscale y
+set format y '%g'
+set xrange [1:*]
+set yrange [*:*]
+set key bottom right
+if (ts > 0) set arrow from ts / tc, graph 0 to ts / tc, graph 1 nohead dt 3 lc rgb 'gray40'
+plot data using ($2):7:8 with yerrorbars pt 7 ps 0.3 lc rgb '#2a6fb0' title 'D(t)'
+
+unset multiplot
