@@ -185,7 +185,7 @@ bench: $(OUT)tools/bench
 # tools/pressure: Z with block-average errors for one system (public API
 # only), run by tools/analysis/pressure_vs_dt.sh and tools/analysis/eos.sh. Built by `make`.
 all: $(OUT)tools/pressure
-$(OUT)tools/pressure: tools/analysis/pressure.c $(LIB) include/disk_sim.h
+$(OUT)tools/pressure: tools/analysis/pressure.c tools/analysis/analysis_util.h $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
@@ -200,7 +200,7 @@ $(OUT)tools/gr: tools/analysis/gr.c $(LIB) include/disk_sim.h
 # autocorrelation of one periodic system (public API only), plotted by
 # tools/analysis/plot_transport.plt. Built by `make`.
 all: $(OUT)tools/transport
-$(OUT)tools/transport: tools/analysis/transport.c $(LIB) include/disk_sim.h
+$(OUT)tools/transport: tools/analysis/transport.c tools/analysis/analysis_util.h $(LIB) include/disk_sim.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 

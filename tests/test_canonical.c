@@ -19,23 +19,6 @@
 
 #define PI 3.14159265358979323846
 
-/* The mean of a run's blocks and its standard error. */
-typedef struct block_stats {
-    double mean, error; /* mean of the blocks and its standard error */
-} block_stats;
-
-static block_stats stats_of(const double *x, int n)
-{
-    double sum = 0.0, sum2 = 0.0;
-    for (int i = 0; i < n; ++i)
-        sum += x[i];
-    const double mean = sum / n;
-    for (int i = 0; i < n; ++i)
-        sum2 += (x[i] - mean) * (x[i] - mean);
-    block_stats s = {mean, sqrt(sum2 / ((double)n * (n - 1)))};
-    return s;
-}
-
 static void two_disks_give_the_exact_canonical_z(double radius)
 {
     const double box = 10.0, sigma = 2.0 * radius, area = box * box;
@@ -73,14 +56,13 @@ static void two_disks_give_the_exact_canonical_z(double radius)
     }
     const block_stats s = stats_of(z, blocks), wrong = stats_of(naive, blocks);
     if (getenv("DS_TEST_VERBOSE"))
-        printf("two disks, R = %g: Z = %.5f +- %.5f (exact %.5f), P A / K = %.5f +- %.5f\n",
-               radius, s.mean, s.error, exact, wrong.mean, wrong.error);
+        printf("two disks, R = %g: Z = %.5f +- %.5f (exact %.5f), P A / K = %.5f +- %.5f\n", radius,
+               s.mean, s.error, exact, wrong.mean, wrong.error);
     /* 5 standard errors: a correct run fails with probability 6e-7; the
      * error itself must be small enough to mean something. */
     assert_true(s.error < 0.02 * (exact - 1.0));
     if (fabs(s.mean - exact) > 5.0 * s.error)
-        fail_msg("two disks, R = %g: Z = %.5f +- %.5f, exact %.5f", radius, s.mean, s.error,
-                 exact);
+        fail_msg("two disks, R = %g: Z = %.5f +- %.5f, exact %.5f", radius, s.mean, s.error, exact);
     /* P A / K takes the virial part over K instead of N kT = 2 K_int:
      * here K = 1.095 and K_int = K - P^2 / 4 = 0.9325, so its Z - 1 comes
      * out 2 K_int / K = 1.70 times the canonical one, far off. */
@@ -133,11 +115,10 @@ static void collision_rate_gives_the_pressure(double eta)
         const uint64_t before = ds_collision_count(sim);
         ds_reset_observables(sim);
         ds_run(sim, steps);
-        const double nu =
-            2.0 * (double)(ds_collision_count(sim) - before) / ((double)n * (double)steps * ds_dt(sim));
+        const double nu = 2.0 * (double)(ds_collision_count(sim) - before) /
+                          ((double)n * (double)steps * ds_dt(sim));
         /* The measured Z - 1 over what the rate predicts: 1 in expectation */
-        r[b] = (ds_compressibility(sim) - 1.0) /
-               (nu * sigma / 4.0 * sqrt(PI / kt) / ratio);
+        r[b] = (ds_compressibility(sim) - 1.0) / (nu * sigma / 4.0 * sqrt(PI / kt) / ratio);
     }
     /* The temperature is the run's own: energy and momentum are conserved
      * to rounding, so kT of the last block is kT of the first. */
@@ -155,8 +136,7 @@ static void collision_rate_gives_the_pressure(double eta)
      * to tell the identity from a 2% miss. */
     assert_true(s.error < 0.004);
     if (fabs(s.mean - 1.0) > 5.0 * s.error)
-        fail_msg("eta %g: (Z - 1) over the rate's prediction = %.5f +- %.5f", eta, s.mean,
-                 s.error);
+        fail_msg("eta %g: (Z - 1) over the rate's prediction = %.5f +- %.5f", eta, s.mean, s.error);
     ds_destroy(sim);
 }
 

@@ -238,22 +238,6 @@ static ds_transport *run_block(const fluid *f, size_t lags, size_t every, int sa
     return tr;
 }
 
-typedef struct block_stats {
-    double mean, error;
-} block_stats;
-
-static block_stats stats_of(const double *x, int n)
-{
-    double sum = 0.0, sum2 = 0.0;
-    for (int i = 0; i < n; ++i)
-        sum += x[i];
-    const double mean = sum / n;
-    for (int i = 0; i < n; ++i)
-        sum2 += (x[i] - mean) * (x[i] - mean);
-    block_stats s = {mean, sqrt(sum2 / ((double)n * (n - 1)))};
-    return s;
-}
-
 /* Einstein and Green-Kubo from the same samples of a fluid at area
  * fraction 0.3. They estimate the same average of D(t) (the header), so
  * their difference is the trapezoids' error plus a little noise. By

@@ -42,6 +42,24 @@ static inline int quick_mode(void)
 /* Steps of a long run, a tenth of them in quick mode. */
 static inline uint64_t long_run(uint64_t steps) { return quick_mode() ? steps / 10 : steps; }
 
+/* The mean of a run's n blocks and its standard error, sqrt(var / (n - 1))
+ * with var the blocks' variance about their mean. */
+typedef struct block_stats {
+    double mean, error;
+} block_stats;
+
+static inline block_stats stats_of(const double *x, int n)
+{
+    double sum = 0.0, sum2 = 0.0;
+    for (int i = 0; i < n; ++i)
+        sum += x[i];
+    const double mean = sum / n;
+    for (int i = 0; i < n; ++i)
+        sum2 += (x[i] - mean) * (x[i] - mean);
+    block_stats s = {mean, sqrt(sum2 / ((double)n * (n - 1)))};
+    return s;
+}
+
 static inline int compare_doubles(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;

@@ -29,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "analysis_util.h"
 #include "disk_sim.h"
 
 #define PI 3.14159265358979323846
@@ -43,33 +44,7 @@ static void usage(void)
 
 static double number(const char *s, double lo, double hi, const char *what)
 {
-    char *end;
-    const double v = strtod(s, &end);
-    if (end == s || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "pressure: %s must be a number in [%g, %g], got '%s'\n", what, lo, hi, s);
-        exit(2);
-    }
-    return v;
-}
-
-typedef struct stats {
-    double sum, sum2;
-    int count;
-} stats;
-
-static void add(stats *s, double v)
-{
-    s->sum += v;
-    s->sum2 += v * v;
-    ++s->count;
-}
-
-static double mean(const stats *s) { return s->sum / s->count; }
-
-static double error(const stats *s)
-{
-    const double m = mean(s), var = s->sum2 / s->count - m * m;
-    return s->count > 1 && var > 0.0 ? sqrt(var / (s->count - 1)) : 0.0;
+    return tool_number("pressure", s, lo, hi, what);
 }
 
 int main(int argc, char **argv)

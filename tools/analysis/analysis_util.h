@@ -1,0 +1,49 @@
+/* SPDX-License-Identifier: MIT */
+/* What tools/pressure and tools/transport share: reading a number from
+ * the command line, and block averages with their standard errors. */
+#ifndef DS_ANALYSIS_UTIL_H
+#define DS_ANALYSIS_UTIL_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* s as a number in [lo, hi], or a message naming program and what, and
+ * exit status 2. */
+static inline double tool_number(const char *program, const char *s, double lo, double hi,
+                                 const char *what)
+{
+    char *end;
+    const double v = strtod(s, &end);
+    if (end == s || *end || !(v >= lo && v <= hi)) {
+        fprintf(stderr, "%s: %s must be a number in [%g, %g], got '%s'\n", program, what, lo, hi,
+                s);
+        exit(2);
+    }
+    return v;
+}
+
+/* Block values as they come: their mean and the standard error of that
+ * mean, sqrt(var / (count - 1)), honest when the blocks are longer than
+ * the time over which the quantity stays correlated. */
+typedef struct stats {
+    double sum, sum2;
+    int count;
+} stats;
+
+static inline void add(stats *s, double v)
+{
+    s->sum += v;
+    s->sum2 += v * v;
+    ++s->count;
+}
+
+static inline double mean(const stats *s) { return s->count ? s->sum / s->count : 0.0; }
+
+static inline double error(const stats *s)
+{
+    const double m = mean(s), var = s->sum2 / s->count - m * m;
+    return s->count > 1 && var > 0.0 ? sqrt(var / (s->count - 1)) : 0.0;
+}
+
+#endif
