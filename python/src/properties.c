@@ -180,6 +180,12 @@ PyGetSetDef dspy_sim_getset[] = {
      "The velocities as a new (n, 2) float64 array, row i disk i: a copy, as\n"
      "positions.",
      NULL},
+    {"unwrapped", (getter)dspy_unwrapped_property, NULL,
+     "The unwrapped centres as a new (n, 2) float64 array, row i disk i: the\n"
+     "position plus the box side times the times disk i has crossed the box that\n"
+     "way since it was placed (set_state starts them again), so displacements over\n"
+     "any time are differences of these; with walls, the positions.",
+     NULL},
     REAL(kinetic_energy, "Kinetic energy, the sum of m v^2 / 2 (masses 1 unless a mixture's)."),
     {"momentum", (getter)momentum_property, NULL,
      "Total momentum (px, py), the sum of m v. Pairs conserve it; walls do not.", NULL},

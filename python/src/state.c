@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* A Sim's state as arrays: positions and velocities out (ds_get_all, a
- * fresh copy each time), and set_state in (ds_set_all, which checks the
- * whole state before anything changes).
+/* A Sim's state as arrays: positions, velocities and unwrapped centres out
+ * (ds_get_all, ds_get_unwrapped, a fresh copy each time), and set_state in (ds_set_all, which
+ * checks the whole state before anything changes).
  *
  * Converting an argument can run Python code (an object's __array__ or
  * __float__), which could close or re-create this very Sim: the ds_sim is
@@ -55,6 +55,18 @@ PyObject *dspy_velocities_property(dspy_sim *self, void *closure)
 {
     (void)closure;
     return xy_of(self, 1);
+}
+
+PyObject *dspy_unwrapped_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    PyArrayObject *a = dspy_new_xy(ds_count(sim));
+    if (a)
+        ds_get_unwrapped(sim, (double *)PyArray_DATA(a));
+    return (PyObject *)a;
 }
 
 PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs)

@@ -105,3 +105,29 @@ def test_a_periodic_state_takes_any_centre_inside_the_box():
     s.set_state([[0, 0], [999.999, 500]])
     with pytest.raises(disksim.ArgumentError, match="outside the periodic box"):
         s.set_state([[1000, 0], [500, 500]])
+
+
+def test_unwrapped_centres_follow_a_free_disk_across_the_seams():
+    # Box 10, disk 0 from (8, 7.5) with velocity (1, -0.5): it crosses the
+    # far x edge at t = 2 and y = 0 at t = 15; disk 1 rests 3 / sqrt 5 >
+    # 2R off its line, so neither collides. Unwrapped is x0 + v t to the
+    # header's rounding bound, (s + 2) eps (box + |x|) after s steps.
+    for integrator in ("step", "event"):
+        s = disksim.Sim(2, 0.5, box=10, boundary="periodic", integrator=integrator,
+                        dt=0.01, speed=1)
+        s.set_state([[8.0, 7.5], [5.0, 2.5]], [[1.0, -0.5], [0.0, 0.0]])
+        assert np.array_equal(s.unwrapped, s.positions)
+        s.run(2000)  # t = 20
+        u = s.unwrapped
+        assert u.shape == (2, 2) and u.dtype == np.float64
+        bound = 2002 * np.finfo(float).eps * (10 + 28)
+        assert abs(u[0, 0] - 28.0) <= bound and abs(u[0, 1] - (-2.5)) <= bound
+        assert np.array_equal(u[1], [5.0, 2.5])
+        assert 0 <= s.positions[0, 0] < 10 and 0 <= s.positions[0, 1] < 10
+        assert s.collision_count == 0
+
+
+def test_unwrapped_is_the_position_with_walls():
+    s = disksim.Sim(100, 5)
+    s.run(300)
+    assert np.array_equal(s.unwrapped, s.positions)
