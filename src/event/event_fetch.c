@@ -142,6 +142,12 @@ FETCHER void fetch_radii(const ds_events *e, region g)
  * it has moved to names it again. */
 #define DROPPED UINT32_MAX
 
+/* The ring's cursors count names mod 2^32 and wrap in a long run (after
+ * some 10^9 events): they are ordered by their difference, never compared
+ * as numbers, which after a wrap made the third stage walk 4 10^9 names
+ * in one event. They stay within a ring's length of each other. */
+static int before(uint32_t a, uint32_t b) { return (uint32_t)(b - a - 1u) < 0x7fffffffu; }
+
 /* The calendar names a disk whose event comes up soon: the first stage.
  * Names come in bursts, a bucket at a time, and may outrun the events
  * (stale ones among them), so the ring can fill: then the oldest are
@@ -159,7 +165,7 @@ void ds_fetch_on_soon(void *ctx, uint32_t i, double until)
     f->ahead_tag[k] = f->events + 1;
     if (f->tail - f->third > DS_FETCH_AHEAD_MASK + 1) {
         f->third = f->tail - (DS_FETCH_AHEAD_MASK + 1);
-        if (f->second < f->third)
+        if (before(f->second, f->third))
             f->second = f->third;
     }
 }
@@ -171,7 +177,7 @@ void ds_fetch_ahead(ds_events *e)
 {
     ds_fetch *f = &e->fetch;
     const uint32_t now = ++f->events, empty = e->cells.empty;
-    while (f->third < f->second && f->ahead_tag[f->third & DS_FETCH_AHEAD_MASK] != now) {
+    while (before(f->third, f->second) && f->ahead_tag[f->third & DS_FETCH_AHEAD_MASK] != now) {
         const uint32_t k = f->third++ & DS_FETCH_AHEAD_MASK;
         if (f->ahead[k] == DROPPED)
             continue;
@@ -181,7 +187,7 @@ void ds_fetch_ahead(ds_events *e)
         if (e->radius)
             fetch_radii(e, g);
     }
-    while (f->second < f->tail && f->ahead_tag[f->second & DS_FETCH_AHEAD_MASK] != now) {
+    while (before(f->second, f->tail) && f->ahead_tag[f->second & DS_FETCH_AHEAD_MASK] != now) {
         const uint32_t k = f->second++ & DS_FETCH_AHEAD_MASK;
         const ed_disk *d = &e->disk[f->ahead[k]];
         f->ahead_tag[k] = now;
