@@ -33,8 +33,12 @@ set grid
 set key bottom left
 if (ts > 0) set arrow from ts / tc, 1e-5 to ts / tc, 1 nohead dt 3 lc rgb 'gray40'
 if (ts > 0) set label 'L/c' at ts / tc * 1.05, 0.3 tc rgb 'gray30'
-plot data using ($2):($5 > 0 ? $5 : 1/0):6 with yerrorbars pt 7 ps 0.4 lc rgb '#2a6fb0' \
-         title 'C(t)/C(0) > 0', \
+# Past a few mean free times the lags are averaged in bins of 1/20 of a
+# decade (the error of a bin's mean from its lags' errors, which are
+# correlated, so it is a lower bound): one point per bin.
+binned = "< awk '!/^#/ && $2 > 0 { b = int(log($2) / log(10) * 20 + 1000); if (b != last && k) { print t / k, c / k, sqrt(e) / k; t = c = e = k = 0 } last = b; t += $2; c += $5; e += $6 * $6; k++ } END { if (k) print t / k, c / k, sqrt(e) / k }' ".data
+plot binned using 1:($2 > 0 ? $2 : 1/0):3 with yerrorbars pt 7 ps 0.5 lc rgb '#2a6fb0' \
+         title 'C(t)/C(0)', \
      amp > 0 ? amp / (x * tc) : 1/0 with lines lw 2 dt 2 lc rgb '#c0392b' \
          title 'mode coupling 1/(8{/Symbol p}n(D+{/Symbol n})t)'
 
@@ -49,6 +53,8 @@ set xrange [1:*]
 set yrange [*:*]
 set key bottom right
 if (ts > 0) set arrow from ts / tc, graph 0 to ts / tc, graph 1 nohead dt 3 lc rgb 'gray40'
-plot data using ($2):7:8 with yerrorbars pt 7 ps 0.3 lc rgb '#2a6fb0' title 'D(t)'
+plot data using ($2):7 with lines lw 2 lc rgb '#2a6fb0' title 'D(t)', \
+     data using ($2):($7 - 2 * $8) with lines lw 1 dt 2 lc rgb '#2a6fb0' title '2 standard errors', \
+     data using ($2):($7 + 2 * $8) with lines lw 1 dt 2 lc rgb '#2a6fb0' notitle
 
 unset multiplot

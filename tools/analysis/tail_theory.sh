@@ -21,6 +21,7 @@ awk -v verbose="$verbose" '
     /^# sigma / { sigma = $3; n = $5; kt = $7 }
     /^# Z / { z = $3; g = $7; tc = $11 }
     /^# window / { for (i = 1; i <= NF; ++i) if ($i == "D_einstein") d = $(i + 1) }
+    !/^#/ && $2 > 0 { m++; tt[m] = $2; dd[m] = $7 }
     END {
         if (!sigma || !d) { print "tail_theory.sh: not a tools/transport output" > "/dev/stderr"; exit 1 }
         pi = 3.14159265358979
@@ -31,7 +32,17 @@ awk -v verbose="$verbose" '
         zp = (eta / 4) / (1 - eta) ^ 2 + 2 * (1 + eta * eta / 8) / (1 - eta) ^ 3
         c = sqrt(kt * (z + eta * zp + z * z))
         box = 1000
-        if (verbose)
+        if (verbose) {
             printf "# D %g nu_E %g 8 pi n (D + nu) %g c %g L/c %g (%g t_c)\n", d, nu, 8 * pi * n * (d + nu), c, box / c, box / c / tc
+            # D(t) against ln t from 20 t_c to half the sound traversal
+            # time: least squares, against the tail (kT / m) amp.
+            hi = box / c / tc / 2
+            for (i = 1; i <= m; ++i)
+                if (tt[i] >= 20 && tt[i] <= hi) {
+                    x = log(tt[i]); k++; sx += x; sy += dd[i]; sxx += x * x; sxy += x * dd[i]
+                }
+            if (k > 2)
+                printf "# dD/dln t from 20 to %g t_c: %g (mode coupling %g)\n", hi, (k * sxy - sx * sy) / (k * sxx - sx * sx), kt * amp
+        }
         printf "tc=%g; amp=%g; ts=%g\n", tc, amp, box / c
     }' "$1"
