@@ -123,12 +123,14 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
         if (++*c == count) { /* periodic: out at the far edge, in at 0 */
             *c = 0;
             *u -= box;
-            *image = (int32_t)((uint32_t)*image + 1u);
+            if (image) /* none with walls, where only a forged state crosses */
+                *image = (int32_t)((uint32_t)*image + 1u);
         }
     } else if (*c == 0) {
         *c = (uint16_t)(count - 1);
         *u += box;
-        *image = (int32_t)((uint32_t)*image - 1u);
+        if (image)
+            *image = (int32_t)((uint32_t)*image - 1u);
     } else {
         --*c;
     }
