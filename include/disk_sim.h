@@ -525,6 +525,22 @@ double ds_compressibility(const ds_sim *sim);
  * (not the collision count or time), so a relaxation period can be
  * discarded. */
 void ds_reset_observables(ds_sim *sim);
+/* The time integral of the pressure tensor times the area since
+ * ds_create or ds_load (ds_reset_observables leaves it), components
+ * s[0] xx, s[1] yy, s[2] xy:
+ *   s_ab = int sum_i m_i v_i,a v_i,b dt + sum over collisions of
+ *          (r_i - r_j)_a dp_i,b,
+ * the kinetic part integrated exactly between velocity changes (with
+ * the time step: over each step at the velocities it starts with), the
+ * collisions' part their impulses, r_i - r_j the nearest image. Wall
+ * impulses are not in it. The mean pressure tensor over a stretch is
+ * the change of s over A times its duration, A the area of
+ * ds_virial_pressure, whose pressure is (s_xx + s_yy) / (2 A t) since
+ * creation. Its increments are the Helfand moments of the shear
+ * viscosity: eta = lim <(s_xy(t0 + t) - s_xy(t0))^2> / (2 A kT t), and
+ * the same with (s_xx - s_yy) / 2 (observe/observables.c says why).
+ * DS_ERR_ARG if sim or s is NULL. */
+ds_status ds_stress_integral(const ds_sim *sim, double s[3]);
 
 /* ------------------------------------------------------------------ */
 /* Transport: displacement and velocity correlations                   */

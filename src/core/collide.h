@@ -7,6 +7,42 @@
 
 #include "core/core.h"
 
+/* What a collision adds to the pressure tensor's parts, mu = 2 ma mb /
+ * (ma + mb) (1 for equal masses), s = approach / r^2 < 0, dv = v_b - v_a
+ * before: the virial tensor (r_a - r_b)_a dp_a,b = -mu s r_a r_b (its
+ * trace -mu approach is the virial's), and the change of the kinetic
+ * tensor sum m v_a v_b of the two disks, from v_a' = v_a + (mb / M) 2 s r
+ * and v_b' = v_b - (ma / M) 2 s r: mu (2 s^2 r_a r_b - s (r_a dv_b + r_b
+ * dv_a)). Energy is conserved, so the change of yy is minus that of xx. */
+static inline void ds_collide_stress(double rx, double ry, double s, double mu, double dvx,
+                                     double dvy, ds_tally *t)
+{
+    const double sx = s * rx, sy = s * ry;
+    t->stress_virial[0] -= mu * sx * rx;
+    t->stress_virial[1] -= mu * sy * ry;
+    t->stress_virial[2] -= mu * sx * ry;
+    const double kxx = mu * (2.0 * sx * sx - 2.0 * sx * dvx);
+    t->kinetic[0] += kxx;
+    t->kinetic[1] -= kxx;
+    t->kinetic[2] += mu * (2.0 * sx * sy - sx * dvy - sy * dvx);
+}
+
+/* The kinetic tensor's time integral carried over span of unchanged
+ * velocities. */
+static inline void ds_tally_flight(ds_tally *t, double span)
+{
+    t->kinetic_integral[0] += t->kinetic[0] * span;
+    t->kinetic_integral[1] += t->kinetic[1] * span;
+    t->kinetic_integral[2] += t->kinetic[2] * span;
+}
+
+/* A wall turn of a disk of mass m and velocity (vx, vy) before it: one
+ * component changes sign, so only m vx vy does. */
+static inline void ds_tally_wall_turn(ds_tally *t, double m, double vx, double vy)
+{
+    t->kinetic[2] -= 2.0 * m * vx * vy;
+}
+
 /* Disks a and b with velocities (*avx, *avy) and (*bvx, *bvy), b seen
  * from a at (rx, ry), and approach = (v_b - v_a) . r < 0: equal masses
  * exchange the velocity components along the line of centres n = r/|r|;
@@ -16,6 +52,7 @@ static inline void ds_collide(double rx, double ry, double approach, double *avx
                               double *bvx, double *bvy, ds_tally *t)
 {
     const double s = approach / (rx * rx + ry * ry);
+    ds_collide_stress(rx, ry, s, 1.0, *bvx - *avx, *bvy - *avy, t);
     *avx += s * rx;
     *avy += s * ry;
     *bvx -= s * rx;
@@ -36,6 +73,7 @@ static inline void ds_collide_masses(double rx, double ry, double approach, doub
 {
     const double s = approach / (rx * rx + ry * ry), total = ma + mb;
     const double ka = 2.0 * mb / total, kb = 2.0 * ma / total;
+    ds_collide_stress(rx, ry, s, ma * ka, *bvx - *avx, *bvy - *avy, t);
     *avx += ka * s * rx;
     *avy += ka * s * ry;
     *bvx -= kb * s * rx;

@@ -42,6 +42,14 @@ typedef struct ds_tally {
      * centre reaches (0 for one kind: wall_impulse / L then). */
     double wall_reach;
     double virial; /* sum over collisions of r_ij . dp_i since the reset */
+    /* The pressure tensor's parts, components xx, yy, xy, never reset
+     * (ds_stress_integral): the collisions' virial tensor, sum of
+     * (r_i - r_j)_a dp_i,b; the kinetic tensor sum m v_a v_b as a run
+     * goes (ds_tally_start_stress at its start, then every collision and
+     * wall turn changes it, collide.h); and the kinetic tensor's time
+     * integral, which has reached the integrator's time stress_clock. */
+    double stress_virial[3], kinetic[3], kinetic_integral[3];
+    double stress_clock;
 } ds_tally;
 
 typedef struct ds_integrator_ops ds_integrator_ops;

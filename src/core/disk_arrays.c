@@ -138,3 +138,17 @@ void ds_disks_rebuild_slots(ds_disks *d)
     for (size_t k = 0; k < d->n; ++k)
         d->slot[d->id[k]] = (uint32_t)k;
 }
+
+void ds_disks_kinetic_tensor(const ds_disks *d, double k[3])
+{
+    double xx = 0.0, yy = 0.0, xy = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0, vx = d->vx[i], vy = d->vy[i];
+        xx += m * vx * vx;
+        yy += m * vy * vy;
+        xy += m * vx * vy;
+    }
+    k[0] = xx;
+    k[1] = yy;
+    k[2] = xy;
+}

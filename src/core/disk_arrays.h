@@ -79,6 +79,10 @@ ds_status ds_disks_permute(ds_disks *d, const uint32_t *order);
 /* slot[] from id[], after the slots moved. */
 void ds_disks_rebuild_slots(ds_disks *d);
 
+/* The kinetic tensor sum m v_a v_b over the disks: k[0] xx, k[1] yy,
+ * k[2] xy (m = 1 without a mixture's masses). */
+void ds_disks_kinetic_tensor(const ds_disks *d, double k[3]);
+
 /* A mixture's arrays move with the disk; whether they exist does not
  * change during a run, so the branches on it are always predicted. */
 static inline ds_disk_record ds_disks_load(const ds_disks *d, size_t k)

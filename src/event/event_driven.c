@@ -58,8 +58,17 @@ static inline double nearest(double r, double box, int periodic)
     return periodic ? ds_nearest(r, box) : r;
 }
 
+/* The kinetic tensor's integral brought to integrator time t, before a
+ * velocity changes there. */
+static inline void flight_to(ds_tally *tally, double t)
+{
+    ds_tally_flight(tally, t - tally->stress_clock);
+    tally->stress_clock = t;
+}
+
 static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t)
 {
+    flight_to(tally, t);
     if (e->growth.rate > 0.0) {
         ds_ed_collide_growing(tally, e, i, j, t);
         return;
@@ -88,6 +97,8 @@ static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, in
 {
     ed_disk *d = &e->disk[i];
     ds_ed_advance(d, t);
+    flight_to(tally, t);
+    ds_tally_wall_turn(tally, e->mass ? e->mass[i] : 1.0, d->vx, d->vy);
     double *u = axis_y ? &d->y : &d->x, *v = axis_y ? &d->vy : &d->vx;
     /* Snap to the wall line (a mixture's disk: its own): rounding must not
      * let it creep. */
@@ -210,7 +221,8 @@ static void run(ds_sim *sim, uint64_t steps)
 {
     ds_events *e = sim->state;
     ds_timer_start(&sim->collision_timer);
-    double target = 0.0;
+    double target = (double)sim->steps * sim->world.dt - e->epoch;
+    sim->tally.stress_clock = target;
     for (uint64_t s = 0; s < steps; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
@@ -228,9 +240,11 @@ static void run(ds_sim *sim, uint64_t steps)
             handle_event(&sim->tally, e, i, t);
         }
         ++sim->steps;
+        flight_to(&sim->tally, target);
         if (target >= e->rebase_time) {
             rebase(e, sim->world.n, target);
             target = 0.0;
+            sim->tally.stress_clock = 0.0;
         }
         /* Growing: cells wide enough for the next step's contacts, or the
          * state made again (it then starts at the present time, 0). */
@@ -241,6 +255,7 @@ static void run(ds_sim *sim, uint64_t steps)
                 break; /* no memory: the growth stopped, the state as it was */
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
+            sim->tally.stress_clock = target; /* the state made again has its own clock */
         }
     }
     ds_timer_stop(&sim->collision_timer);

@@ -123,9 +123,14 @@ static double window_z(const ds_sim *sim, const ds_growth *g, double t)
 /* The heat growth added, out: every velocity scaled at once back to the
  * kinetic energy growth started with (which keeps a zero momentum zero);
  * the caller predicts every disk again. */
-static void heat_out(ds_events *e, size_t n, ds_growth *g, double t)
+static void heat_out(ds_tally *tally, ds_events *e, size_t n, ds_growth *g, double t)
 {
     const double factor = g->kinetic > 0.0 ? sqrt(g->kinetic_target / g->kinetic) : 1.0;
+    /* The kinetic tensor's integral to t, at the velocities before. */
+    ds_tally_flight(tally, t - tally->stress_clock);
+    tally->stress_clock = t;
+    for (int c = 0; c < 3; ++c)
+        tally->kinetic[c] *= factor * factor;
     for (size_t k = 0; k < n; ++k) {
         ds_ed_advance(&e->disk[k], t);
         e->disk[k].vx *= factor;
@@ -141,7 +146,7 @@ int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
     const size_t n = sim->world.n;
     if (t >= g->stop_time) { /* the target area fraction, at its own time */
         g->stopped = 1;
-        heat_out(e, n, g, g->stop_time);
+        heat_out(&sim->tally, e, n, g, g->stop_time);
         ds_ed_restart_at(e, n, g->stop_time, 0.0);
         return 1;
     }
@@ -160,7 +165,7 @@ int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
          * 1024 disks from 0.476 at rate 0.01 (docs/physics.md). Donev,
          * Torquato and Stillinger 2005 slow down likewise. */
         const double rate = z > GROWTH_SLOWS_AT_Z ? g->asked * GROWTH_SLOWS_AT_Z / z : g->asked;
-        heat_out(e, n, g, t);
+        heat_out(&sim->tally, e, n, g, t);
         g->window = 0;
         g->window_start = t;
         g->window_virial = sim->tally.virial;

@@ -146,3 +146,20 @@ void ds_reset_observables(ds_sim *sim)
     sim->tally.virial = 0.0;
     sim->observables_since_step = sim->steps;
 }
+
+/* The kinetic part is the tally's integral, which the integrators carry
+ * to the end of each run (sim->tally.stress_clock); the collisions' part
+ * is their virial tensor (core/collide.h). In an isotropic fluid the
+ * integrated correlations of the pressure tensor are (kT / A) (eta
+ * (d_ac d_bd + d_ad d_bc) + (zeta - eta) d_ab d_cd) in two dimensions
+ * (zeta the bulk viscosity), so P_xy and (P_xx - P_yy) / 2 both have eta
+ * as their Green-Kubo integral, and their time integrals s the Helfand
+ * (Einstein) form of it. */
+ds_status ds_stress_integral(const ds_sim *sim, double s[3])
+{
+    if (!sim || !s)
+        return DS_ERR_ARG;
+    for (int c = 0; c < 3; ++c)
+        s[c] = sim->tally.kinetic_integral[c] + sim->tally.stress_virial[c];
+    return DS_OK;
+}

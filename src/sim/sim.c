@@ -84,6 +84,10 @@ void ds_run(ds_sim *sim, uint64_t steps)
 {
     if (!sim || steps == 0)
         return;
+    /* The kinetic tensor the run changes collision by collision
+     * (collide.h), from the disks as they are now: whatever set them
+     * since the last run is in it. */
+    ds_disks_kinetic_tensor(&sim->disks, sim->tally.kinetic);
     sim->integrator->run(sim, steps);
 }
 

@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "core/boundary.h"
+#include "core/collide.h"
 #include "timestep/timestep.h"
 
 /* A mixture: each disk turns at its own radius, and hands the walls 2 m
@@ -22,12 +23,14 @@ static void move_and_reflect_mixture(ds_disks *d, const ds_world *w, ds_tally *t
         d->x[k] = px;
         d->y[k] = py;
         if ((px < r && d->vx[k] < 0.0) || (px > w->box - r && d->vx[k] > 0.0)) {
+            ds_tally_wall_turn(t, m, d->vx[k], d->vy[k]);
             impulse += 2.0 * m * fabs(d->vx[k]);
             reach += 2.0 * m * fabs(d->vx[k]) / perimeter;
             d->vx[k] = -d->vx[k];
             ++hits;
         }
         if ((py < r && d->vy[k] < 0.0) || (py > w->box_y - r && d->vy[k] > 0.0)) {
+            ds_tally_wall_turn(t, m, d->vx[k], d->vy[k]);
             impulse += 2.0 * m * fabs(d->vy[k]);
             reach += 2.0 * m * fabs(d->vy[k]) / perimeter;
             d->vy[k] = -d->vy[k];
@@ -61,11 +64,13 @@ void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
          * out. The seed's literal rule also re-inverts a disk still outside
          * after its reflection, sending it back out: it sticks to the wall. */
         if ((px < lo && vx[k] < 0.0) || (px > hi_x && vx[k] > 0.0)) {
+            ds_tally_wall_turn(t, 1.0, vx[k], vy[k]);
             impulse += 2.0 * fabs(vx[k]);
             vx[k] = -vx[k];
             ++hits;
         }
         if ((py < lo && vy[k] < 0.0) || (py > hi_y && vy[k] > 0.0)) {
+            ds_tally_wall_turn(t, 1.0, vx[k], vy[k]);
             impulse += 2.0 * fabs(vy[k]);
             vy[k] = -vy[k];
             ++hits;

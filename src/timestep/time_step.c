@@ -64,6 +64,8 @@ static void run(ds_sim *sim, uint64_t steps)
     const ds_pair_fn on_pair = periodic ? resolve_pair_periodic : resolve_pair;
     pair_context ctx = {&sim->tally, w->box, w->box_y};
     for (uint64_t s = 0; s < steps; ++s) {
+        /* The step's flight is at the velocities its start has. */
+        ds_tally_flight(&sim->tally, w->dt);
         if (periodic)
             ds_move_and_wrap(&sim->disks, w);
         else
