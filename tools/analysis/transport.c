@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* transport: self-diffusion of hard disks in a periodic box, with the
- * mean-squared displacement and the velocity autocorrelation against time
- * and the Enskog value to compare with. Public API only (ds_transport).
+/* transport: self-diffusion and shear viscosity of hard disks in a
+ * periodic box, with the mean-squared displacement, the velocity
+ * autocorrelation and the Helfand moment of the stress against time, and
+ * the Enskog values to compare with. Public API only (ds_transport,
+ * ds_stress_integral).
  *
  *   transport N ETA [--lattice] [--relax T] [--interval H] [--lags L]
  *             [--every E] [--blocks B] [--block T] [--window A:B] [--seed S]
@@ -12,10 +14,9 @@
  * collisions per disk per unit time at the Z of Henderson's equation of
  * state (only to choose the defaults; what is printed is measured):
  * relaxation 50 t_E (1000 t_E from a lattice, --lattice, which dense
- * systems need: random placement stops near area fraction 0.54), interval 0.1 t_E, 400 lags (to 40 t_E), an origin
- * every 5 samples, 10 blocks each 10 times the longest lag. Each block
- * has its own accumulator; a curve is the mean over the blocks and its
- * error the standard error of that mean.
+ * systems need: random placement stops near area fraction 0.54), interval 0.1 t_E, 400 lags (to 40
+ * t_E), an origin every 5 samples, 10 blocks each 10 times the longest lag. Each block has its own
+ * accumulator; a curve is the mean over the blocks and its error the standard error of that mean.
  *
  * Prints '#' lines with the system and its Enskog values,
  *   D_0 = (1 / (2 n sigma)) sqrt(kT / (pi m))   (Gass 1971),
@@ -23,10 +24,17 @@
  * with Z measured (ds_compressibility) and kT = ds_temperature, the
  * diffusion coefficient over the window of lags A:B (default 200:399)
  * from the Einstein slope and from Green-Kubo (ds_transport_diffusion),
+ * the shear viscosity over the same window from the Helfand moments of
+ * s_xy and (s_xx - s_yy) / 2 (ds_stress_integral), slope / (2 A kT),
+ * against Enskog's (Gass 1971, with his Sonine factor 1.022)
+ *   eta_E = 1.022 eta_0 (1 / g + 2 eta + (1 + 8 / pi) eta^2 g),
+ *   eta_0 = (1 / (2 sigma)) sqrt(m kT / pi),
  * then one line per lag:
- *   t t/t_c msd error C/C0 error D(t) error
+ *   t t/t_c msd error C/C0 error D(t) error eta(t) error
  * where t_c = 1 / nu is the measured mean free time, C/C0 the velocity
- * autocorrelation over its value at t = 0 and D(t) = (1/2) int_0^t C. */
+ * autocorrelation over its value at t = 0, D(t) = (1/2) int_0^t C and
+ * eta(t) = <(s(t0 + t) - s(t0))^2> / (2 A kT t), the Helfand moment's
+ * running estimate (the mean of the two shear components). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -49,6 +57,14 @@ static void usage(void)
 static double number(const char *s, double lo, double hi, const char *what)
 {
     return tool_number("transport", s, lo, hi, what);
+}
+
+/* Enskog's shear viscosity of disks at area fraction eta and contact
+ * value g (Gass 1971, his second Sonine approximation's factor 1.022). */
+static double enskog_viscosity(double kt, double sigma, double eta, double g)
+{
+    const double eta_0 = sqrt(kt / PI) / (2.0 * sigma);
+    return 1.022 * eta_0 * (1.0 / g + 2.0 * eta + (1.0 + 8.0 / PI) * eta * eta * g);
 }
 
 static void *checked_calloc(size_t n, size_t size)
@@ -94,8 +110,7 @@ int main(int argc, char **argv)
         if (strcmp(a, "--relax") == 0) {
             relax = number(v, 0.0, 1e9, "--relax");
             relax_given = 1;
-        }
-        else if (strcmp(a, "--interval") == 0)
+        } else if (strcmp(a, "--interval") == 0)
             interval = number(v, 1e-9, 1e6, "--interval");
         else if (strcmp(a, "--lags") == 0)
             lags = (size_t)number(v, 3, 1e6, "--lags");
@@ -151,14 +166,21 @@ int main(int argc, char **argv)
     const double time0 = ds_time(sim);
 
     stats *msd = checked_calloc(lags, sizeof *msd), *vacf = checked_calloc(lags, sizeof *vacf);
-    stats *dt_gk = checked_calloc(lags, sizeof *dt_gk);
+    stats *dt_gk = checked_calloc(lags, sizeof *dt_gk),
+          *eta_t = checked_calloc(lags, sizeof *eta_t);
     stats einstein = {0, 0, 0}, green_kubo = {0, 0, 0}, ratio = {0, 0, 0}, z = {0, 0, 0};
+    stats viscosity = {0, 0, 0}, viscosity_ratio = {0, 0, 0};
     double *m = checked_calloc(lags, sizeof *m), *c = checked_calloc(lags, sizeof *c);
+    double *h = checked_calloc(lags, sizeof *h);
+    const double area = p.box * p.box;
     const double sigma = 2.0 * p.radius, density = (double)n / (p.box * p.box);
     double kt = 0.0;
     for (int b = 0; b < blocks; ++b) {
-        ds_transport *tr = NULL;
-        if (ds_transport_create(n, lags, every, &tr) != DS_OK) {
+        /* The stress is one collective quantity, cheap to correlate: an
+         * origin at every sample. */
+        ds_transport *tr = NULL, *stress = NULL;
+        if (ds_transport_create(n, lags, every, &tr) != DS_OK ||
+            ds_transport_create(1, lags, 1, &stress) != DS_OK) {
             fputs("transport: out of memory for the correlations\n", stderr);
             return 1;
         }
@@ -167,11 +189,18 @@ int main(int argc, char **argv)
             if (s)
                 ds_step(sim);
             ds_transport_sample(tr, sim);
+            double si[3];
+            ds_stress_integral(sim, si);
+            const double shear[2] = {si[2], 0.5 * (si[0] - si[1])}, unused[2] = {0.0, 0.0};
+            ds_transport_add(stress, shear, unused);
         }
         ds_transport_get(tr, m, c, NULL);
-        double e, g;
+        ds_transport_get(stress, h, NULL, NULL);
+        double e, g, helfand;
         ds_transport_diffusion(tr, interval, from, to, &e, &g);
+        ds_transport_diffusion(stress, interval, from, to, &helfand, NULL);
         ds_transport_destroy(tr);
+        ds_transport_destroy(stress);
         kt = ds_temperature(sim); /* the same in every block: energy is conserved */
         const double zb = ds_compressibility(sim);
         const double d_enskog = sqrt(kt / PI) / (2.0 * density * sigma) * (2.0 * eta) / (zb - 1.0);
@@ -179,6 +208,11 @@ int main(int argc, char **argv)
         add(&einstein, e);
         add(&green_kubo, g);
         add(&ratio, e / d_enskog);
+        /* The Einstein slope over 4 of the two components' sum is the
+         * mean component's slope over 2: eta A kT. */
+        const double visc = helfand / (area * kt), gb = (zb - 1.0) / (2.0 * eta);
+        add(&viscosity, visc);
+        add(&viscosity_ratio, visc / enskog_viscosity(kt, sigma, eta, gb));
         double d = 0.0;
         for (size_t k = 0; k < lags; ++k) {
             if (k)
@@ -186,6 +220,7 @@ int main(int argc, char **argv)
             add(&msd[k], m[k]);
             add(&vacf[k], c[k] / c[0]);
             add(&dt_gk[k], d);
+            add(&eta_t[k], k ? h[k] / (4.0 * area * kt * (double)k * interval) : 0.0);
         }
     }
     const double nu = 2.0 * (double)(ds_collision_count(sim) - collisions0) /
@@ -204,13 +239,21 @@ int main(int argc, char **argv)
            from, to, (double)from * interval, (double)to * interval, (double)from * interval * nu,
            (double)to * interval * nu, mean(&einstein), error(&einstein), mean(&green_kubo),
            error(&green_kubo), mean(&ratio), error(&ratio));
+    printf("# viscosity over the window: eta %.6g +- %.6g eta_0 %.6g eta_E %.6g eta/eta_E %.5f +- "
+           "%.5f\n",
+           mean(&viscosity), error(&viscosity), sqrt(kt / PI) / (2.0 * sigma),
+           enskog_viscosity(kt, sigma, eta, g_contact), mean(&viscosity_ratio),
+           error(&viscosity_ratio));
     printf("# %llu collisions, %.1f s\n",
            (unsigned long long)(ds_collision_count(sim) - collisions0), ds_now() - t0);
-    printf("# t t/t_c msd error C/C0 error D(t) error\n");
+    printf("# t t/t_c msd error C/C0 error D(t) error eta(t) error\n");
     for (size_t k = 0; k < lags; ++k)
-        printf("%.9g %.6g %.9g %.3g %.9g %.3g %.9g %.3g\n", (double)k * interval,
+        printf("%.9g %.6g %.9g %.3g %.9g %.3g %.9g %.3g %.9g %.3g\n", (double)k * interval,
                (double)k * interval * nu, mean(&msd[k]), error(&msd[k]), mean(&vacf[k]),
-               error(&vacf[k]), mean(&dt_gk[k]), error(&dt_gk[k]));
+               error(&vacf[k]), mean(&dt_gk[k]), error(&dt_gk[k]), mean(&eta_t[k]),
+               error(&eta_t[k]));
+    free(eta_t);
+    free(h);
     free(msd);
     free(vacf);
     free(dt_gk);
