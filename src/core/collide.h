@@ -36,6 +36,14 @@ static inline void ds_tally_flight(ds_tally *t, double span)
     t->kinetic_integral[2] += t->kinetic[2] * span;
 }
 
+/* The same from the integrator time tally->stress_clock to t, which it
+ * then is: before a velocity changes at t. */
+static inline void ds_tally_flight_to(ds_tally *t, double to)
+{
+    ds_tally_flight(t, to - t->stress_clock);
+    t->stress_clock = to;
+}
+
 /* A wall turn of a disk of mass m and velocity (vx, vy) before it: one
  * component changes sign, so only m vx vy does. */
 static inline void ds_tally_wall_turn(ds_tally *t, double m, double vx, double vy)

@@ -45,7 +45,7 @@ typedef struct ds_tally {
     /* The pressure tensor's parts, components xx, yy, xy, never reset
      * (ds_stress_integral): the collisions' virial tensor, sum of
      * (r_i - r_j)_a dp_i,b; the kinetic tensor sum m v_a v_b as a run
-     * goes (ds_tally_start_stress at its start, then every collision and
+     * goes (ds_run computes it at the start, then every collision and
      * wall turn changes it, collide.h); and the kinetic tensor's time
      * integral, which has reached the integrator's time stress_clock. */
     double stress_virial[3], kinetic[3], kinetic_integral[3];

@@ -58,17 +58,9 @@ static inline double nearest(double r, double box, int periodic)
     return periodic ? ds_nearest(r, box) : r;
 }
 
-/* The kinetic tensor's integral brought to integrator time t, before a
- * velocity changes there. */
-static inline void flight_to(ds_tally *tally, double t)
-{
-    ds_tally_flight(tally, t - tally->stress_clock);
-    tally->stress_clock = t;
-}
-
 static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t)
 {
-    flight_to(tally, t);
+    ds_tally_flight_to(tally, t);
     if (e->growth.rate > 0.0) {
         ds_ed_collide_growing(tally, e, i, j, t);
         return;
@@ -97,7 +89,7 @@ static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, in
 {
     ed_disk *d = &e->disk[i];
     ds_ed_advance(d, t);
-    flight_to(tally, t);
+    ds_tally_flight_to(tally, t);
     ds_tally_wall_turn(tally, e->mass ? e->mass[i] : 1.0, d->vx, d->vy);
     double *u = axis_y ? &d->y : &d->x, *v = axis_y ? &d->vy : &d->vx;
     /* Snap to the wall line (a mixture's disk: its own): rounding must not
@@ -240,7 +232,7 @@ static void run(ds_sim *sim, uint64_t steps)
             handle_event(&sim->tally, e, i, t);
         }
         ++sim->steps;
-        flight_to(&sim->tally, target);
+        ds_tally_flight_to(&sim->tally, target);
         if (target >= e->rebase_time) {
             rebase(e, sim->world.n, target);
             target = 0.0;

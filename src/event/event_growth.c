@@ -127,8 +127,7 @@ static void heat_out(ds_tally *tally, ds_events *e, size_t n, ds_growth *g, doub
 {
     const double factor = g->kinetic > 0.0 ? sqrt(g->kinetic_target / g->kinetic) : 1.0;
     /* The kinetic tensor's integral to t, at the velocities before. */
-    ds_tally_flight(tally, t - tally->stress_clock);
-    tally->stress_clock = t;
+    ds_tally_flight_to(tally, t);
     for (int c = 0; c < 3; ++c)
         tally->kinetic[c] *= factor * factor;
     for (size_t k = 0; k < n; ++k) {
