@@ -221,12 +221,15 @@ static void run(ds_sim *sim, uint64_t steps)
         for (;;) {
             const uint32_t i = ds_eq_first(e->queue);
             const double t = e->disk[i].next;
+            /* Growing: first the checks that may stop it (and predict
+             * every disk again) before this event, or before the step's
+             * end if no event comes first: the target's time is an event
+             * of its own, which a sparse system's next collision may be
+             * steps after. */
+            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t, target))
+                continue;
             if (!(t < target))
                 break;
-            /* Growing: first the checks that may stop it (and predict
-             * every disk again) before this event. */
-            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t))
-                continue;
             if (e->fetching)
                 ds_fetch_ahead(e);
             handle_event(&sim->tally, e, i, t);

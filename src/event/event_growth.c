@@ -139,17 +139,21 @@ static void heat_out(ds_tally *tally, ds_events *e, size_t n, ds_growth *g, doub
     g->momentum_energy *= factor * factor;
 }
 
-int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
+int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t, double end)
 {
     ds_growth *g = &e->growth;
     const size_t n = sim->world.n;
-    if (t >= g->stop_time) { /* the target area fraction, at its own time */
+    /* The target area fraction, at its own time, whether an event comes
+     * before it in this step or not: the step that holds it (its end
+     * included) ends with the radii of the target. */
+    if (g->stop_time <= t && g->stop_time <= end) {
         g->stopped = 1;
         heat_out(&sim->tally, e, n, g, g->stop_time);
         ds_ed_restart_at(e, n, g->stop_time, 0.0);
         return 1;
     }
-    if (g->window >= 2 * n) {
+    /* Z is watched before events, not at a step's end. */
+    if (t < end && g->window >= 2 * n) {
         const double z = window_z(sim, g, t);
         g->last_z = z;
         const int jammed = z >= g->until_z;
