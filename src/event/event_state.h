@@ -89,6 +89,10 @@ struct ds_events {
      * wrap of showing adds (ds_ed_show_at). Outside the 64-byte record:
      * only a crossing of the box edge writes them. NULL with walls. */
     int32_t *image;
+    /* n predicted times waiting to be filed (ds_ed_schedule_all), kept
+     * with the state so that predicting everyone again, which a growth's
+     * restart does in the middle of a run, needs no memory. */
+    double *times;
     ds_growth growth;
 };
 typedef struct ds_events ds_events;
@@ -140,7 +144,7 @@ static inline void ds_ed_advance(ed_disk *d, double t)
  * (event_driven.c): what a restart at one instant needs. */
 ds_status ds_ed_create(ds_sim *sim);
 void ds_ed_destroy(ds_sim *sim);
-ds_status ds_ed_schedule_all(ds_events *e, size_t n);
+void ds_ed_schedule_all(ds_events *e, size_t n);
 
 /* Growth (event_growth.c). A disk's next event with growing radii; the
  * collision of a growing pair; every disk taken to integrator time t and
