@@ -201,7 +201,9 @@ void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t)
 /* Installs growth at integrator time now in a state without it (the
  * disks' radii in sim->disks.r, the records at their times): asked is
  * relative to the radii at the ask, scale of now over those, speed the
- * one to go on at (asked, or less once Z slowed it). */
+ * one to go on at (asked, or less once Z slowed it). Only the array of
+ * the radii it grows from can fail, if the state has none yet: then
+ * nothing has changed. */
 static ds_status install(ds_sim *sim, ds_events *e, double now, double asked, double scale,
                          double speed, double until_eta, double until_z)
 {
@@ -325,17 +327,26 @@ ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double un
         ds_ed_show_radii(sim, e, now);
         return DS_OK;
     }
-    /* The radii of now, in an array of the disks' own (one kind has none
-     * until it grows). */
-    if (e->growth.rate > 0.0)
-        ds_ed_growth_go_on(e, n, now);
-    ds_ed_show_radii(sim, e, now);
+    /* The memory growth needs first, so that without it nothing has
+     * changed: the radii it grows from, and an array of the disks' own
+     * radii (one kind has none until it grows). */
+    double *base = e->growth.base ? NULL : malloc(n * sizeof *base);
+    if (!e->growth.base && !base)
+        return DS_ERR_NOMEM;
     if (!sim->disks.r) {
-        if (ds_disks_add_mixture(&sim->disks, 1, 0) != DS_OK)
+        if (ds_disks_add_mixture(&sim->disks, 1, 0) != DS_OK) {
+            free(base);
             return DS_ERR_NOMEM;
+        }
         for (size_t k = 0; k <= n; ++k)
             sim->disks.r[k] = k < n ? sim->world.radius : 0.0;
     }
+    /* The radii of now (of a growth going on: base is then its own). */
+    if (e->growth.rate > 0.0)
+        ds_ed_growth_go_on(e, n, now);
+    ds_ed_show_radii(sim, e, now);
+    if (!e->growth.base)
+        e->growth.base = base;
     return install(sim, e, now, rate, 1.0, rate, until_eta, until_z);
 }
 
