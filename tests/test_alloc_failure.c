@@ -298,8 +298,8 @@ static void assert_sound(const ds_sim *sim, const char *what, unsigned long k)
         const ds_disk d = s.disk[i];
         const double r = s.radius[i];
         const int inside = periodic ? d.x >= 0.0 && d.x < bx && d.y >= 0.0 && d.y < by
-                                    : d.x >= r - past && d.x <= bx - r + past &&
-                                          d.y >= r - past && d.y <= by - r + past;
+                                    : d.x >= r - past && d.x <= bx - r + past && d.y >= r - past &&
+                                          d.y <= by - r + past;
         if (!isfinite(d.vx) || !isfinite(d.vy) || !inside)
             fail_msg("%s, allocation %lu failing: disk %zu at (%g, %g) is not in the box", what, k,
                      i, d.x, d.y);
@@ -380,12 +380,12 @@ static void test_a_plain_run_allocates_nothing(void **state)
 static void test_predicting_everyone_again_allocates_nothing(void **state)
 {
     (void)state;
-    const config c = {"event periodic brute", DS_EVENT_DRIVEN, DS_PERIODIC, DS_BRUTE_FORCE,
-                      DS_RANDOM, 0};
+    const config c = {"event periodic brute", DS_EVENT_DRIVEN, DS_PERIODIC,
+                      DS_BRUTE_FORCE,         DS_RANDOM,       0};
     ds_sim *sim = created(&c);
     assert_int_equal(ds_set_growth(sim, 0.05, 0.5, 0.0), DS_OK);
     arm(0, 0);
-    ds_run(sim, 2000); /* to about 0.4, through windows of 2 n collisions */
+    ds_run(sim, 2000);                   /* to about 0.4, through windows of 2 n collisions */
     assert_true(ds_growth_z(sim) > 1.0); /* a window was watched */
     assert_int_equal(ds_set(sim, 0, ds_get(sim, 0)), DS_OK);
     assert_int_equal(ds_scale_velocities(sim, 1.01), DS_OK);
@@ -417,7 +417,8 @@ static void check_loading(ds_sim *source, const char *what)
         ds_state_error err;
         rewind(f);
         arm(0, 0);
-        assert_int_equal(from_file ? ds_load_state(f, &sim, &err) : ds_parse_state(b.p, b.len, &sim, &err),
+        assert_int_equal(from_file ? ds_load_state(f, &sim, &err)
+                                   : ds_parse_state(b.p, b.len, &sim, &err),
                          DS_OK);
         const unsigned long calls = calls_counted();
         ds_destroy(sim);

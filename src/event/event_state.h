@@ -160,7 +160,6 @@ void ds_ed_collide_growing(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j
 void ds_ed_restart_at(ds_events *e, size_t n, double t, double speed);
 void ds_ed_growth_go_on(ds_events *e, size_t n, double t);
 int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t, double end);
-void ds_ed_growth_after_collision(ds_sim *sim, ds_events *e, double t);
 ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next);
 void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t);
 ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
