@@ -569,10 +569,11 @@ static void test_starting_growth_survives_every_failed_allocation(void **state)
  * so, and the run goes on at fixed radii: every step taken, no disk out
  * of the box or overlapping, the heat out (the kinetic energy of the
  * call, to rounding: the energy growth tracks through the collisions
- * since it last measured it, 1e-16 each), the energy
- * conserved from then on (elastic collisions, 1e-12 over the run). Or the
- * run is the one without the failure. Growing runs are saved and loaded
- * with the same failures (the growth's part of a checkpoint). */
+ * since it last measured it, 1e-16 each), the energy conserved from then
+ * on (elastic collisions, 1e-12 over the run), and its checkpoint going
+ * on as it does. Or the run is the one without the failure. Growing runs
+ * are saved and loaded with the same failures (the growth's part of a
+ * checkpoint). */
 static void test_a_growing_run_survives_every_failed_allocation(void **state)
 {
     (void)state;
@@ -610,7 +611,10 @@ static void test_a_growing_run_survives_every_failed_allocation(void **state)
                 ++stopped;
                 assert_true(fabs(ds_kinetic_energy(sim) / energy - 1.0) < 1e-12);
                 const double eta = ds_area_fraction(sim);
+                /* A state a checkpoint holds, and goes on from to the bit. */
+                const shown through_checkpoint = shown_after(sim, 300);
                 ds_run(sim, 300);
+                assert_shows(sim, &through_checkpoint, growing[c].name, k);
                 assert_sound(sim, growing[c].name, k);
                 assert_true(fabs(ds_kinetic_energy(sim) / energy - 1.0) < 1e-12);
                 assert_true(ds_area_fraction(sim) == eta);
