@@ -86,6 +86,15 @@ $(BUILD)/tests/%: tests/%.c tests/test_util.h $(LIB) $(LIB_HDR)
 	$(CC) $(WARN) $(CPPFLAGS) $(TEST_DEFS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
+# test_alloc_failure counts the library's allocations and fails each in
+# turn through the linker (--wrap, GNU ld and lld): its own link flags.
+ALLOC_WRAP := -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=posix_memalign \
+              -Wl,--wrap=aligned_alloc
+$(BUILD)/tests/test_alloc_failure: tests/test_alloc_failure.c tests/test_util.h $(LIB) $(LIB_HDR)
+	@mkdir -p $(BUILD)/tests
+	$(CC) $(WARN) $(CPPFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) $(ALLOC_WRAP) -o $@ $< \
+	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
+
 # After the C programs: the equation-of-state sweep's scripts on a small
 # sweep (tests/eos_sweep.sh, a second), and the Python module's pytest
 # suite (python-test, below), which says in one line what it lacks instead

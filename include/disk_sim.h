@@ -319,7 +319,11 @@ double ds_area_fraction(const ds_sim *sim);
 ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
 
 typedef enum ds_growth_state {
-    DS_GROWTH_NONE = 0,    /* never grown, or stopped with rate 0 */
+    /* Never grown, stopped with rate 0, or stopped by ds_run at a step's
+     * end for want of memory for the wider cells growth needed there
+     * (the run goes on at the radii of then, every step taken, the heat
+     * out; ds_run returns no status in 2.x). */
+    DS_GROWTH_NONE = 0,
     DS_GROWING,            /* growing */
     DS_GROWTH_REACHED_ETA, /* stopped at until_eta */
     DS_GROWTH_JAMMED       /* stopped when Z passed until_z */

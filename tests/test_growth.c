@@ -120,6 +120,81 @@ static void test_a_mixture_grows_to_its_target_without_overlap(void **state)
     ds_destroy(sim);
 }
 
+/* Grows sim at rate (relative) to until_eta step by step, and checks the
+ * stop against the target's time t*, when the area fraction eta0 of now
+ * grows to until_eta as eta0 (1 + rate (t - t0))^2: every step that ends
+ * before t* ends growing and below the target, and the step that holds
+ * t* (its end included) ends at the target, reached. "At the target" is
+ * to rounding, u = DBL_EPSILON / 2, relative: the stop time comes from
+ * the area fraction at growth's last restart (n squares summed, the
+ * constant, the box's area: (n + 4) u), a quotient and a square root (3 u
+ * in its square); the factor from the stop time has five roundings of
+ * numbers no larger than itself and those of the integrator's times
+ * (the stop time's sum, and the shifts when the epoch moves), u rate |t|
+ * each with |t| below two rebase periods (box / speed = 10) and rate at
+ * most 0.05 here (rate |t| <= 1): below 8 u, 16 u in its square; and the
+ * area fraction shown sums n squares of the radii times the factor again
+ * ((n + 6) u). In all below (2 n + 29) u < (n + 16) DBL_EPSILON. */
+static void assert_growth_stops_in_the_step_of_its_target(ds_sim *sim, double rate,
+                                                          double until_eta)
+{
+    const double n = (double)ds_count(sim), dt = ds_dt(sim);
+    const double t0 = ds_time(sim), eta0 = ds_area_fraction(sim);
+    const double t_star = t0 + (sqrt(until_eta / eta0) - 1.0) / rate;
+    const double k_star = ceil(t_star / dt); /* the step that holds t* ends at k_star dt */
+    /* Not within rounding of a step's end, where the step would be moot. */
+    assert_true(fabs(t_star / dt - round(t_star / dt)) > 1e-6);
+    const double slack = (n + 16.0) * DBL_EPSILON;
+    assert_int_equal(ds_set_growth(sim, rate, until_eta, 0.0), DS_OK);
+    while ((double)ds_steps(sim) < k_star - 0.5) {
+        ds_step(sim);
+        if ((double)ds_steps(sim) < k_star - 0.5) {
+            assert_int_equal(ds_growth_state_of(sim), DS_GROWING);
+            assert_true(ds_area_fraction(sim) <= until_eta * (1.0 + slack));
+        }
+    }
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_REACHED_ETA);
+    if (!(fabs(ds_area_fraction(sim) / until_eta - 1.0) <= slack))
+        fail_msg("stopped at t = %.6f (t* = %.6f) at area fraction %.17g, not %.17g", ds_time(sim),
+                 t_star, ds_area_fraction(sim), until_eta);
+    /* And stays there. */
+    ds_run(sim, 10);
+    assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_REACHED_ETA);
+    assert_true(fabs(ds_area_fraction(sim) / until_eta - 1.0) <= slack);
+}
+
+static ds_sim *sparse(size_t n, uint64_t seed)
+{
+    ds_params p = ds_default_params(n, 5.0);
+    p.boundary = DS_PERIODIC;
+    p.integrator = DS_EVENT_DRIVEN;
+    p.seed = seed;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    return sim;
+}
+
+/* A sparse system's next event may be steps after the target's time (two
+ * disks in a box 1000 wide: about one collision in 3000 time units): the
+ * growth stops at that time all the same, not at the next event, and
+ * never overshoots; so with 20 disks, and a mixture of 200. */
+static void test_growth_stops_at_its_target_even_with_no_event_near(void **state)
+{
+    (void)state;
+    ds_sim *sim = sparse(2, 4);
+    ds_run(sim, 5);
+    assert_growth_stops_in_the_step_of_its_target(sim, 0.05, 0.001); /* t* = 30.4677 */
+    ds_destroy(sim);
+    sim = sparse(20, 4);
+    ds_run(sim, 5);
+    assert_growth_stops_in_the_step_of_its_target(sim, 0.05, 0.005);
+    ds_destroy(sim);
+    sim = mixture(200, 0.05, 4);
+    ds_run(sim, 5);
+    assert_growth_stops_in_the_step_of_its_target(sim, 0.05, 0.06);
+    ds_destroy(sim);
+}
+
 /* Compressed to jamming (Z past 10^6): the growth stops, the packing
  * holds (no overlap), its area fraction is that of the 1:1.4 mixture's
  * jamming (O'Hern et al. 2003: 0.84; 0.80 to 0.87 for one small packing),
@@ -330,6 +405,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_two_growing_disks_meet_on_time_and_part_at_twice_the_growth_speed),
         cmocka_unit_test(test_a_mixture_grows_to_its_target_without_overlap),
+        cmocka_unit_test(test_growth_stops_at_its_target_even_with_no_event_near),
         cmocka_unit_test(test_a_compression_to_jamming_stops_with_an_isostatic_packing),
         cmocka_unit_test(test_a_growing_run_saved_and_loaded_goes_on_bit_for_bit),
         cmocka_unit_test(test_growth_is_refused_where_it_cannot_run),

@@ -221,12 +221,15 @@ static void run(ds_sim *sim, uint64_t steps)
         for (;;) {
             const uint32_t i = ds_eq_first(e->queue);
             const double t = e->disk[i].next;
+            /* Growing: first the checks that may stop it (and predict
+             * every disk again) before this event, or before the step's
+             * end if no event comes first: the target's time is an event
+             * of its own, which a sparse system's next collision may be
+             * steps after. */
+            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t, target))
+                continue;
             if (!(t < target))
                 break;
-            /* Growing: first the checks that may stop it (and predict
-             * every disk again) before this event. */
-            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t))
-                continue;
             if (e->fetching)
                 ds_fetch_ahead(e);
             handle_event(&sim->tally, e, i, t);
@@ -239,12 +242,12 @@ static void run(ds_sim *sim, uint64_t steps)
             sim->tally.stress_clock = 0.0;
         }
         /* Growing: cells wide enough for the next step's contacts, or the
-         * state made again (it then starts at the present time, 0). */
+         * state made again (it then starts at the present time, 0), or
+         * without memory for that the growth stopped and the steps go on. */
         if (e->growth.rate > 0.0) {
             sim->tally.pairs_tested += e->tested;
             e->tested = 0;
-            if (ds_ed_growth_step_end(sim, target + sim->world.dt) != DS_OK)
-                break; /* no memory: the growth stopped, the state as it was */
+            (void)ds_ed_growth_step_end(sim, target + sim->world.dt); /* no memory: it stopped */
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
             sim->tally.stress_clock = target; /* the state made again has its own clock */
@@ -270,11 +273,16 @@ static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_b
     return sizeof(ds_events) + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
 }
 
-static size_t bytes(const ds_world *w)
+/* What events read and write (fetching ahead pays once it outgrows the
+ * caches), and all the state holds: that and the times waiting to be
+ * filed (ds_ed_schedule_all). */
+static size_t event_bytes(const ds_world *w)
 {
     return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase) +
            (w->boundary == DS_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
 }
+
+static size_t bytes(const ds_world *w) { return event_bytes(w) + w->n * sizeof(double); }
 
 void ds_ed_destroy(ds_sim *sim)
 {
@@ -282,6 +290,7 @@ void ds_ed_destroy(ds_sim *sim)
     if (!e)
         return;
     free(e->growth.base);
+    free(e->times);
     free(e->image);
     ds_eq_destroy(e->queue);
     ds_cells_free(&e->cells);
@@ -319,18 +328,13 @@ static ds_status sort_slots_by_cell(ds_disks *disks, const ds_cells *cells)
  * (it sizes its buckets from them). Until then every disk's time is
  * +infinity, so no pair is skipped for its partner's earlier event: the
  * times wait in an array of their own. */
-ds_status ds_ed_schedule_all(ds_events *e, size_t n)
+void ds_ed_schedule_all(ds_events *e, size_t n)
 {
-    double *times = malloc((n ? n : 1) * sizeof *times);
-    if (!times)
-        return DS_ERR_NOMEM;
     for (size_t k = 0; k < n; ++k)
-        times[k] = ds_ed_predict(e, (uint32_t)k);
+        e->times[k] = ds_ed_predict(e, (uint32_t)k);
     for (size_t k = 0; k < n; ++k)
-        e->disk[k].next = times[k];
-    free(times);
+        e->disk[k].next = e->times[k];
     e->tested = 0; /* the first predictions are not the run's tests */
-    return DS_OK;
 }
 
 ds_status ds_ed_alloc(ds_sim *sim)
@@ -358,7 +362,8 @@ ds_status ds_ed_alloc(ds_sim *sim)
     e->growth.stop_time = INFINITY;
     e->growth.scale = 1.0;
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
-    ds_status st = e->disk ? DS_OK : DS_ERR_NOMEM;
+    e->times = malloc((n ? n : 1) * sizeof *e->times);
+    ds_status st = e->disk && e->times ? DS_OK : DS_ERR_NOMEM;
     if (st == DS_OK && e->periodic && !(e->image = calloc(2 * (n ? n : 1), sizeof *e->image)))
         st = DS_ERR_NOMEM;
     if (st == DS_OK)
@@ -370,7 +375,7 @@ ds_status ds_ed_alloc(ds_sim *sim)
      * work for nothing. Measured at area fraction 0.5 (median of 3, ns per
      * collision, off / on): 10^4 disks 870 / 995, 3 10^4 992 / 1093,
      * 10^5 2064 / 1188, 3 10^5 1882 / 1279. */
-    e->fetching = bytes(w) > DS_FETCH_AHEAD_BYTES;
+    e->fetching = event_bytes(w) > DS_FETCH_AHEAD_BYTES;
     return st; /* on failure the table's destroy frees what was made */
 }
 
@@ -413,10 +418,9 @@ ds_status ds_ed_create(ds_sim *sim)
             e->image[2 * k + 1] = disks->iy[k];
         }
     }
-    st = ds_ed_schedule_all(e, n);
-    if (st == DS_OK)
-        ds_ed_start(e, 0.0);
-    return st;
+    ds_ed_schedule_all(e, n);
+    ds_ed_start(e, 0.0);
+    return DS_OK;
 }
 
 /* Whether disk k (record p) at time now is closer to (x, y) than the

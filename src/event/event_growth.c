@@ -139,17 +139,21 @@ static void heat_out(ds_tally *tally, ds_events *e, size_t n, ds_growth *g, doub
     g->momentum_energy *= factor * factor;
 }
 
-int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t)
+int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t, double end)
 {
     ds_growth *g = &e->growth;
     const size_t n = sim->world.n;
-    if (t >= g->stop_time) { /* the target area fraction, at its own time */
+    /* The target area fraction, at its own time, whether an event comes
+     * before it in this step or not: the step that holds it (its end
+     * included) ends with the radii of the target. */
+    if (g->stop_time <= t && g->stop_time <= end) {
         g->stopped = 1;
         heat_out(&sim->tally, e, n, g, g->stop_time);
         ds_ed_restart_at(e, n, g->stop_time, 0.0);
         return 1;
     }
-    if (g->window >= 2 * n) {
+    /* Z is watched before events, not at a step's end. */
+    if (t < end && g->window >= 2 * n) {
         const double z = window_z(sim, g, t);
         g->last_z = z;
         const int jammed = z >= g->until_z;
@@ -197,7 +201,9 @@ void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t)
 /* Installs growth at integrator time now in a state without it (the
  * disks' radii in sim->disks.r, the records at their times): asked is
  * relative to the radii at the ask, scale of now over those, speed the
- * one to go on at (asked, or less once Z slowed it). */
+ * one to go on at (asked, or less once Z slowed it). Only the array of
+ * the radii it grows from can fail, if the state has none yet: then
+ * nothing has changed. */
 static ds_status install(ds_sim *sim, ds_events *e, double now, double asked, double scale,
                          double speed, double until_eta, double until_z)
 {
@@ -225,41 +231,77 @@ static ds_status install(ds_sim *sim, ds_events *e, double now, double asked, do
     return DS_OK;
 }
 
+/* The disks of state e at integrator time now, in fresh's own arrays
+ * (fresh a copy of the simulation whose state e is, without its state or
+ * arrays), and a state of fresh's own for them, its cells for radii 5%
+ * larger than now: a new state every 5% of growth, not every step. */
+static ds_status build_again(const ds_sim *sim, ds_events *e, ds_sim *fresh, double now)
+{
+    const size_t n = sim->world.n;
+    ds_disks *d = &fresh->disks;
+    ds_status st = ds_disks_alloc(d, n);
+    if (st == DS_OK)
+        st = ds_disks_add_mixture(d, 1, sim->disks.m != NULL);
+    if (st == DS_OK && sim->disks.ix)
+        st = ds_disks_add_images(d);
+    if (st != DS_OK)
+        return st;
+    memcpy(d->id, sim->disks.id, n * sizeof *d->id);
+    if (d->m)
+        memcpy(d->m, sim->disks.m, n * sizeof *d->m);
+    ds_disks_rebuild_slots(d);
+    ds_ed_show_at(d, e, now); /* with the image counts */
+    ds_ed_show_radii(fresh, e, now);
+    const double radius_max = fresh->world.radius_max;
+    fresh->world.radius_max *= 1.05;
+    st = ds_ed_create(fresh);
+    fresh->world.radius_max = radius_max;
+    return st;
+}
+
 /* The cells must be wider than every contact distance of the next step;
- * when growth passes that, the state is made again from the disks at this
- * step's end, with cells for the radii of now, and the growth goes on. */
+ * when growth passes that, a new state is built from the disks at this
+ * step's end, with wider cells, and swapped in once it stands, the growth
+ * going on in it. Without memory for it the state stays as it was and the
+ * growth stops now, its heat out, since its cells cannot hold the next
+ * step's contacts: DS_ERR_NOMEM, and ds_growth_state_of says
+ * DS_GROWTH_NONE (ds_run, which returns nothing in 2.x, goes on). */
 ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next)
 {
     ds_events *e = sim->state;
     ds_growth *g = &e->growth;
+    const size_t n = sim->world.n;
     double largest = 0.0;
-    for (size_t k = 0; k < sim->world.n; ++k)
+    for (size_t k = 0; k < n; ++k)
         largest = fmax(largest, g->base[k]);
     const double widest = 2.0 * largest * factor_at(g, target_next);
     if (widest < fmin(e->cells.wx, e->cells.wy) * (1.0 - 1e-9))
         return DS_OK;
     const double now = (double)sim->steps * sim->world.dt - e->epoch;
     const double f = factor_at(g, now);
-    const double speed = g->rate * g->scale, asked = g->asked, scale = g->scale * f,
-                 until_eta = g->until_eta, until_z = g->until_z;
-    const double kinetic_target = g->kinetic_target;
-    /* The disks of now into the arrays, then a state of their own. */
-    for (size_t k = 0; k < sim->world.n; ++k)
+    for (size_t k = 0; k < n; ++k)
         ds_ed_advance(&e->disk[k], now);
-    ds_ed_show_at(&sim->disks, e, now); /* with the image counts */
-    ds_ed_show_radii(sim, e, now);
-    /* Cells for radii 5% larger than now: a new state every 5% of growth,
-     * not every step. */
-    const double radius_max = sim->world.radius_max;
-    sim->world.radius_max *= 1.05;
-    ds_ed_destroy(sim);
-    ds_status st = ds_ed_create(sim);
-    sim->world.radius_max = radius_max;
+    ds_sim fresh = *sim;
+    fresh.state = NULL;
+    memset(&fresh.disks, 0, sizeof fresh.disks);
+    ds_status st = build_again(sim, e, &fresh, now);
     if (st == DS_OK)
-        st = install(sim, sim->state, 0.0, asked, scale, speed, until_eta, until_z);
-    if (st == DS_OK) /* the energy growth started with, not this step's */
-        ((ds_events *)sim->state)->growth.kinetic_target = kinetic_target;
-    return st;
+        st = install(&fresh, fresh.state, 0.0, g->asked, g->scale * f, g->rate * g->scale,
+                     g->until_eta, g->until_z);
+    if (st != DS_OK) {
+        ds_ed_destroy(&fresh);
+        ds_disks_free(&fresh.disks);
+        heat_out(&sim->tally, e, n, g, now);
+        ds_ed_restart_at(e, n, now, 0.0);
+        g->stopped = 0;
+        return st;
+    }
+    /* The energy growth started with, not this step's. */
+    ((ds_events *)fresh.state)->growth.kinetic_target = g->kinetic_target;
+    ds_ed_destroy(sim);
+    ds_disks_free(&sim->disks);
+    *sim = fresh;
+    return DS_OK;
 }
 
 int ds_ed_growth_state(const ds_sim *sim, double *z)
@@ -285,17 +327,26 @@ ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double un
         ds_ed_show_radii(sim, e, now);
         return DS_OK;
     }
-    /* The radii of now, in an array of the disks' own (one kind has none
-     * until it grows). */
-    if (e->growth.rate > 0.0)
-        ds_ed_growth_go_on(e, n, now);
-    ds_ed_show_radii(sim, e, now);
+    /* The memory growth needs first, so that without it nothing has
+     * changed: the radii it grows from, and an array of the disks' own
+     * radii (one kind has none until it grows). */
+    double *base = e->growth.base ? NULL : malloc(n * sizeof *base);
+    if (!e->growth.base && !base)
+        return DS_ERR_NOMEM;
     if (!sim->disks.r) {
-        if (ds_disks_add_mixture(&sim->disks, 1, 0) != DS_OK)
+        if (ds_disks_add_mixture(&sim->disks, 1, 0) != DS_OK) {
+            free(base);
             return DS_ERR_NOMEM;
+        }
         for (size_t k = 0; k <= n; ++k)
             sim->disks.r[k] = k < n ? sim->world.radius : 0.0;
     }
+    /* The radii of now (of a growth going on: base is then its own). */
+    if (e->growth.rate > 0.0)
+        ds_ed_growth_go_on(e, n, now);
+    ds_ed_show_radii(sim, e, now);
+    if (!e->growth.base)
+        e->growth.base = base;
     return install(sim, e, now, rate, 1.0, rate, until_eta, until_z);
 }
 

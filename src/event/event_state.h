@@ -89,6 +89,10 @@ struct ds_events {
      * wrap of showing adds (ds_ed_show_at). Outside the 64-byte record:
      * only a crossing of the box edge writes them. NULL with walls. */
     int32_t *image;
+    /* n predicted times waiting to be filed (ds_ed_schedule_all), kept
+     * with the state so that predicting everyone again, which a growth's
+     * restart does in the middle of a run, needs no memory. */
+    double *times;
     ds_growth growth;
 };
 typedef struct ds_events ds_events;
@@ -140,21 +144,22 @@ static inline void ds_ed_advance(ed_disk *d, double t)
  * (event_driven.c): what a restart at one instant needs. */
 ds_status ds_ed_create(ds_sim *sim);
 void ds_ed_destroy(ds_sim *sim);
-ds_status ds_ed_schedule_all(ds_events *e, size_t n);
+void ds_ed_schedule_all(ds_events *e, size_t n);
 
 /* Growth (event_growth.c). A disk's next event with growing radii; the
  * collision of a growing pair; every disk taken to integrator time t and
  * predicted again there, growth going on at speed (relative to the radii
  * it was asked at; 0: stopped), or as it was going (go_on); the checks
- * before each event (the target area fraction, Z) and at each step's end
+ * before each event at t of a step that ends at end (the target area
+ * fraction, which may come before t and stop growth at its own time, and
+ * Z), which return whether they restarted it, and at each step's end
  * (cells wide enough for the next step), which may restart it; the table's
  * set_growth and scale_velocities. */
 double ds_ed_predict_growing(ds_events *e, uint32_t i);
 void ds_ed_collide_growing(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t);
 void ds_ed_restart_at(ds_events *e, size_t n, double t, double speed);
 void ds_ed_growth_go_on(ds_events *e, size_t n, double t);
-int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t);
-void ds_ed_growth_after_collision(ds_sim *sim, ds_events *e, double t);
+int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t, double end);
 ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next);
 void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t);
 ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
