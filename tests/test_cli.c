@@ -224,6 +224,9 @@ static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *dro
         } else if (strcmp(step, "dir") == 0) {
             if (mkdir(path, 0755) != 0)
                 return -1;
+        } else if (strcmp(step, "fifo") == 0) {
+            if (mkfifo(path, 0644) != 0)
+                return -1;
         } else if (strcmp(step, "link") == 0 || strcmp(step, "hardlink") == 0) {
             /* NAME=TARGET: TARGET as written (relative to NAME's directory
              * for a symbolic link, to the case directory for a hard one). */
