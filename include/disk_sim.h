@@ -689,16 +689,25 @@ void ds_frame_free(ds_frame *frame);
 /* One frame of an extended XYZ trajectory; frames written one after
  * another to the same file make the trajectory. A frame is the disk count
  * on a line, the comment line
- *   Lattice="L 0 0 0 L 0 0 0 2R" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
  *   Time=T pbc="F F F"
- * (one line; L the box side, T the simulated time with 6 decimals), then
- * one line per disk in generation order,
- *   X x y 0 R vx vy 0
- * with x, y, vx, vy written like frames (6 decimals) and R in the shortest
- * form that reads back exactly. The 2D box is written as a cell of height
- * 2R with every disk at z = 0; "X" is a dummy species. ASE reads positions,
- * arrays "radius" and "velo" and info "Time"; OVITO maps the columns to
- * Particle Type, Position, Radius and Velocity.
+ * with walls, or in a periodic box
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3:image:I:2
+ *   Time=T pbc="T T F"
+ * (one line; Lx and Ly the box's sides, ds_box and ds_box_y, and H twice
+ * the largest radius, ds_radius_max, each in the shortest form that reads
+ * back exactly; T the simulated time with 6 decimals), then one line per
+ * disk in generation order,
+ *   X x y 0 r vx vy 0         with walls
+ *   X x y 0 r vx vy 0 ix iy   in a periodic box
+ * with x, y, vx, vy written like frames (6 decimals), r the disk's own
+ * radius (ds_radius_of) in the shortest form that reads back exactly, and
+ * ix, iy its image counts (ds_get_images), so x + ix Lx, y + iy Ly is its
+ * unwrapped centre. The 2D box is written as a cell of height H with every
+ * disk at z = 0, periodic along x and y only; "X" is a dummy species. ASE
+ * reads positions, cell and pbc, arrays "radius", "velo" and "image" and
+ * info "Time"; OVITO maps the columns to Particle Type, Position, Radius
+ * and Velocity.
  * ds_format_xyz_frame works like ds_format_frame: with cap too small it
  * returns DS_ERR_ARG, *len receives the bytes needed either way (buf NULL
  * with cap 0 asks only for the size), and ds_xyz_frame_size() is always
