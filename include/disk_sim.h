@@ -403,8 +403,9 @@ ds_status ds_get_unwrapped(const ds_sim *sim, double *xy);
 
 /* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, a
  * velocity component exceeds 1e12 in magnitude, or the centre is outside
- * the box: [R, box - R] x [R, box_y - R] with walls, [0, box) x [0, box_y)
- * in a periodic box. The time step does not check overlaps (its next step
+ * the box: [r, box - r] x [r, box_y - r] with walls, r the disk's own
+ * radius (ds_radius_of: R with one kind of disk, each disk's own in a
+ * mixture), [0, box) x [0, box_y) in a periodic box. The time step does not check overlaps (its next step
  * resolves them); the event-driven integrator refuses a centre that
  * overlaps another (see DS_CONTACT_TOLERANCE) with DS_ERR_OVERLAP, the
  * state unchanged: exact dynamics has no meaning for overlapping hard
