@@ -428,7 +428,11 @@ typedef struct ds_state_error {
  * from the new state (the event-driven one predicts every event again);
  * the time, the step count and the observables' accumulators go on; the
  * periodic image counts start again at 0 (the new centres are in the
- * box, so ds_get_unwrapped starts from them). */
+ * box, so ds_get_unwrapped starts from them). A growth (ds_set_growth)
+ * ends: the radii stay as grown by now, ds_growth_state_of says
+ * DS_GROWTH_NONE and ds_growth_z 0 (a growth that had reached its target
+ * or jammed is forgotten too), and the velocities are the ones given, not
+ * scaled back as the end of a growth otherwise scales them. */
 ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
 
 /* ------------------------------------------------------------------ */
