@@ -405,13 +405,14 @@ ds_status ds_get_unwrapped(const ds_sim *sim, double *xy);
  * velocity component exceeds 1e12 in magnitude, or the centre is outside
  * the box: [r, box - r] x [r, box_y - r] with walls, r the disk's own
  * radius (ds_radius_of: R with one kind of disk, each disk's own in a
- * mixture), [0, box) x [0, box_y) in a periodic box. The time step does not check overlaps (its next step
- * resolves them); the event-driven integrator refuses a centre that
- * overlaps another (see DS_CONTACT_TOLERANCE) with DS_ERR_OVERLAP, the
- * state unchanged: exact dynamics has no meaning for overlapping hard
- * disks. Moving many disks one by one can fail where the new state is
- * fine (a disk's new place overlaps a disk not yet moved): use
- * ds_set_all. The disk's periodic image counts stay (ds_get_images). */
+ * mixture), [0, box) x [0, box_y) in a periodic box. The time step does
+ * not check overlaps (its next step resolves them); the event-driven
+ * integrator refuses a centre that overlaps another (see
+ * DS_CONTACT_TOLERANCE) with DS_ERR_OVERLAP, the state unchanged: exact
+ * dynamics has no meaning for overlapping hard disks. Moving many disks
+ * one by one can fail where the new state is fine (a disk's new place
+ * overlaps a disk not yet moved): use ds_set_all. The disk's periodic
+ * image counts stay (ds_get_images). */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
 
 /* Why a whole state was refused (ds_set_all, ds_load_state). */
