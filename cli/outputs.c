@@ -230,8 +230,8 @@ static void check_output_dir(const named *f, const char *out_canon)
         die(EXIT_RUN, "cannot write %s %s: '%s' is not a directory", f->option, f->path, dir);
     split_path(f->canon, dir, sizeof dir, &base);
     if (!dir_usable(dir, dir, out_canon))
-        die(EXIT_RUN, "cannot write %s %s: it leads to %s, and '%s' is not a directory",
-            f->option, f->path, f->canon, dir);
+        die(EXIT_RUN, "cannot write %s %s: it leads to %s, and '%s' is not a directory", f->option,
+            f->path, f->canon, dir);
 }
 
 void check_paths(const options *o)
@@ -281,8 +281,8 @@ void check_paths(const options *o)
             if (strcmp(a->path, b->path) == 0)
                 die(EXIT_USAGE, "%s and %s both name %s: give each its own file", a->option,
                     b->option, b->path);
-            die(EXIT_USAGE, "%s %s and %s %s name the same file: give each its own file",
-                a->option, a->path, b->option, b->path);
+            die(EXIT_USAGE, "%s %s and %s %s name the same file: give each its own file", a->option,
+                a->path, b->option, b->path);
         }
     for (size_t i = 0; i < count; ++i)
         if (files[i].path && files[i].output)

@@ -413,10 +413,10 @@ static void test_set_keeps_a_mixture_disk_its_own_radius_from_the_walls(void **s
         ds_sim *sim = NULL;
         assert_int_equal(ds_create_mixture(&p, &mix, &sim), DS_OK);
         put(sim, 0, 100.0, 75.0, 1.0, 0.0); /* out of the way, in the middle */
-        const ds_disk inside[4] = {{7.0, 40.0, 0, 0}, {193.0, 40.0, 0, 0}, {40.0, 7.0, 0, 0},
-                                   {40.0, 143.0, 0, 0}};
-        const ds_disk within_r_not_7[4] = {{5.0, 40.0, 0, 0}, {195.0, 40.0, 0, 0},
-                                           {40.0, 5.0, 0, 0}, {40.0, 145.0, 0, 0}};
+        const ds_disk inside[4] = {
+            {7.0, 40.0, 0, 0}, {193.0, 40.0, 0, 0}, {40.0, 7.0, 0, 0}, {40.0, 143.0, 0, 0}};
+        const ds_disk within_r_not_7[4] = {
+            {5.0, 40.0, 0, 0}, {195.0, 40.0, 0, 0}, {40.0, 5.0, 0, 0}, {40.0, 145.0, 0, 0}};
         for (int k = 0; k < 4; ++k) {
             assert_int_equal(ds_set(sim, 1, inside[k]), DS_OK);
             assert_int_equal(ds_set(sim, 1, within_r_not_7[k]), DS_ERR_ARG);
