@@ -35,7 +35,7 @@ typedef enum ds_status {
     DS_ERR_NOMEM,     /* an allocation failed or would not fit in memory */
     DS_ERR_PLACEMENT, /* the disks cannot be placed (see DS_RANDOM, DS_LATTICE) */
     DS_ERR_IO,        /* a read or write failed */
-    DS_ERR_FORMAT,    /* a frame file is malformed (see ds_frame_error) */
+    DS_ERR_FORMAT,    /* a frame or checkpoint is malformed (ds_frame_error, ds_state_error) */
     DS_ERR_OVERLAP    /* ds_set or ds_set_all would make two disks overlap */
 } ds_status;
 
