@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* The paths a run names, checked before any work (docs/cli.md, "Nothing
- * lost, nothing mixed"): no two files the same, no output over a frame,
- * every output in a directory that exists or that --out will make; the
- * --out directory made; and the frames an earlier run left there. */
+ * lost, nothing mixed"): no two files the same, no output over a frame
+ * (judged by what the paths name, not how they are spelt: links, hard or
+ * symbolic, dangling or not), every output in a directory that exists or
+ * that --out will make; the --out directory made; and the frames an
+ * earlier run left there. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>
