@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* The paths a run names, checked before any work (docs/cli.md, "Nothing
- * lost, nothing mixed"): no two files the same, no output over a frame,
- * every output in a directory that exists or that --out will make; the
- * --out directory made; and the frames an earlier run left there. */
-/* realpath() is X/Open. */
-#define _XOPEN_SOURCE 700
+ * lost, nothing mixed"): no two files the same, no output over a frame
+ * (judged by what the paths name, not how they are spelt: links, hard or
+ * symbolic, dangling or not), every output in a directory that exists or
+ * that --out will make; the --out directory made; and the frames an
+ * earlier run left there. */
+#define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
@@ -15,41 +16,65 @@
 
 #include "cli.h"
 
-/* The absolute path a name means, symbolic links resolved as far as the
- * name exists; the rest, which a run will create, is added as written
- * ("." and ".." resolved). Two names of one file give the same string. */
-static void canonical(const char *path, char *out, size_t cap)
+/* Symbolic links followed in one path before the rest is taken as
+ * written: the kernel's own limit (Linux's MAXSYMLINKS), past which
+ * opening the path fails anyway. */
+#define LINKS_MAX 40
+
+/* The absolute location a path names, found as the kernel finds it:
+ * component by component, every symbolic link followed, and "." and ".."
+ * taken on the links' targets. realpath() stops at the first name that
+ * does not exist, but an output is written through a dangling link (to
+ * its target) and a frame file or a directory --out makes does not exist
+ * yet: past such a name the rest is added as written, so two names of one
+ * future file give one string. */
+static void resolve(const char *path, char *out, size_t cap)
 {
-    char resolved[PATH_CAP * 2];
-    if (strlen(path) < PATH_CAP && realpath(path, resolved)) {
-        path_printf(out, cap, "%s", resolved);
-        return;
+    char todo[PATH_CAP], rest[PATH_CAP], done[PATH_CAP] = "", next[PATH_CAP];
+    path_printf(todo, sizeof todo, "%s", path);
+    if (todo[0] != '/' && !getcwd(done, sizeof done))
+        die(EXIT_RUN, "cannot resolve '%s': the current directory: %s", path, strerror(errno));
+    if (strcmp(done, "/") == 0)
+        done[0] = '\0'; /* done holds no trailing '/': "" is the root */
+    int links = 0;
+    const char *p = todo;
+    for (;;) {
+        p += strspn(p, "/");
+        if (!*p)
+            break;
+        const size_t len = strcspn(p, "/");
+        const char *after = p + len;
+        if (len == 1 && p[0] == '.') {
+            p = after;
+            continue;
+        }
+        if (len == 2 && p[0] == '.' && p[1] == '.') {
+            char *slash = strrchr(done, '/');
+            if (slash)
+                *slash = '\0';
+            p = after;
+            continue;
+        }
+        path_printf(next, sizeof next, "%s/%.*s", done, (int)len, p);
+        struct stat st;
+        char target[PATH_CAP];
+        ssize_t got;
+        if (links < LINKS_MAX && lstat(next, &st) == 0 && S_ISLNK(st.st_mode) &&
+            (got = readlink(next, target, sizeof target - 1)) > 0) {
+            /* The link's target, then what followed the link. */
+            target[got] = '\0';
+            ++links;
+            path_printf(rest, sizeof rest, "%s/%s", target, after);
+            memcpy(todo, rest, strlen(rest) + 1);
+            if (target[0] == '/')
+                done[0] = '\0';
+            p = todo;
+            continue;
+        }
+        memcpy(done, next, strlen(next) + 1);
+        p = after;
     }
-    char copy[PATH_CAP];
-    snprintf(copy, sizeof copy, "%s", path);
-    size_t len = strlen(copy);
-    while (len > 1 && copy[len - 1] == '/')
-        copy[--len] = '\0';
-    char dir[PATH_CAP], parent[PATH_CAP];
-    const char *base;
-    split_path(copy, dir, sizeof dir, &base);
-    if (strcmp(dir, copy) == 0 || !*base) { /* "/" or a name realpath could not reach */
-        snprintf(out, cap, "%s", copy);
-        return;
-    }
-    canonical(dir, parent, sizeof parent);
-    if (strcmp(base, ".") == 0) {
-        snprintf(out, cap, "%s", parent);
-    } else if (strcmp(base, "..") == 0) {
-        char *slash = strrchr(parent, '/');
-        if (slash && slash != parent)
-            *slash = '\0';
-        else
-            snprintf(parent, sizeof parent, "/");
-        snprintf(out, cap, "%s", parent);
-    } else {
-        path_printf(out, cap, "%s%s%s", parent, strcmp(parent, "/") == 0 ? "" : "/", base);
-    }
+    path_printf(out, cap, "%s", *done ? done : "/");
 }
 
 int frame_number(const char *base)
@@ -102,44 +127,125 @@ static void check_out_dir(const char *path)
     }
 }
 
+/* A path the run is given, and what it names: the file by device and
+ * inode if one is there now (through every link: each name of a file,
+ * hard link or symbolic, gives the same pair), and its resolved location,
+ * which is all a file the run will make has. */
 typedef struct named {
     const char *option;
     const char *path;
     int output; /* written by the run; else read (--restart, --from) */
     char canon[PATH_CAP];
+    int exists;
+    dev_t dev;
+    ino_t ino;
+    nlink_t links;
 } named;
 
-/* Outputs whose directory is missing are fine if --out makes it: the
- * directory is --out or one of the parents it creates. */
+static void look_up(named *f)
+{
+    resolve(f->path, f->canon, sizeof f->canon);
+    struct stat st;
+    f->exists = stat(f->path, &st) == 0;
+    if (f->exists) {
+        f->dev = st.st_dev;
+        f->ino = st.st_ino;
+        f->links = st.st_nlink;
+    }
+}
+
+static int same_file(const named *a, const named *b)
+{
+    return strcmp(a->canon, b->canon) == 0 ||
+           (a->exists && b->exists && a->dev == b->dev && a->ino == b->ino);
+}
+
+/* /dev/null takes any number of outputs, by whatever name. */
+static int is_dev_null(const named *f)
+{
+    struct stat st;
+    return strcmp(f->canon, "/dev/null") == 0 ||
+           (f->exists && stat("/dev/null", &st) == 0 && st.st_dev == f->dev && st.st_ino == f->ino);
+}
+
+/* dir/name, with no "//" when dir ends with '/'. */
+static void join(char *out, size_t cap, const char *dir, const char *name)
+{
+    const size_t l = strlen(dir);
+    path_printf(out, cap, "%s%s%s", dir, l && dir[l - 1] == '/' ? "" : "/", name);
+}
+
+/* The frame file of --out that f names, by its location or as another
+ * name (a hard link) of a frame file there now; its name into frame.
+ * Returns 0 if it names none. The run writes frame_kkkk.txt for any k
+ * its --frames and a restart allow, so every such name counts. */
+static int names_a_frame(const named *f, const char *out_dir, const char *out_canon, char *frame,
+                         size_t cap)
+{
+    char dir[PATH_CAP];
+    const char *base;
+    split_path(f->canon, dir, sizeof dir, &base);
+    if (strcmp(dir, out_canon) == 0 && frame_number(base) >= 0) {
+        path_printf(frame, cap, "%s", base);
+        return 1;
+    }
+    if (!f->exists || f->links < 2)
+        return 0; /* one name only: its location said it all */
+    DIR *d = opendir(out_dir);
+    int found = 0;
+    for (struct dirent *e; d && !found && (e = readdir(d));) {
+        char path[PATH_CAP];
+        struct stat st;
+        if (frame_number(e->d_name) < 0)
+            continue;
+        join(path, sizeof path, out_dir, e->d_name);
+        found = stat(path, &st) == 0 && st.st_dev == f->dev && st.st_ino == f->ino;
+        if (found)
+            path_printf(frame, cap, "%s", e->d_name);
+    }
+    if (d)
+        closedir(d);
+    return found;
+}
+
+/* An output's directory exists, or --out makes it: it is --out or one of
+ * the parents --out creates. */
+static int dir_usable(const char *dir, const char *dir_canon, const char *out_canon)
+{
+    struct stat st;
+    if (stat(dir, &st) == 0)
+        return S_ISDIR(st.st_mode);
+    const size_t l = strlen(dir_canon);
+    return strcmp(dir_canon, out_canon) == 0 ||
+           (strncmp(out_canon, dir_canon, l) == 0 && out_canon[l] == '/');
+}
+
+/* The directory as written, then the one a symbolic link leads to (an
+ * output is written through the link). */
 static void check_output_dir(const named *f, const char *out_canon)
 {
     char dir[PATH_CAP], dir_canon[PATH_CAP];
     const char *base;
     split_path(f->path, dir, sizeof dir, &base);
-    struct stat st;
-    if (stat(dir, &st) == 0) {
-        if (!S_ISDIR(st.st_mode))
-            die(EXIT_RUN, "cannot write %s %s: '%s' is not a directory", f->option, f->path, dir);
-        return;
-    }
-    canonical(dir, dir_canon, sizeof dir_canon);
-    size_t l = strlen(dir_canon);
-    if (strcmp(dir_canon, out_canon) == 0 ||
-        (strncmp(out_canon, dir_canon, l) == 0 && out_canon[l] == '/'))
-        return;
-    die(EXIT_RUN, "cannot write %s %s: '%s' is not a directory", f->option, f->path, dir);
+    resolve(dir, dir_canon, sizeof dir_canon);
+    if (!dir_usable(dir, dir_canon, out_canon))
+        die(EXIT_RUN, "cannot write %s %s: '%s' is not a directory", f->option, f->path, dir);
+    split_path(f->canon, dir, sizeof dir, &base);
+    if (!dir_usable(dir, dir, out_canon))
+        die(EXIT_RUN, "cannot write %s %s: it leads to %s, and '%s' is not a directory", f->option,
+            f->path, f->canon, dir);
 }
 
 void check_paths(const options *o)
 {
     check_out_dir(o->out_dir);
-    char out_canon[PATH_CAP];
-    canonical(o->out_dir, out_canon, sizeof out_canon);
-    named files[] = {{"--stats", o->stats_path, 1, ""},
-                     {"--trajectory", o->trajectory_path, 1, ""},
-                     {"--checkpoint", o->checkpoint_path, 1, ""},
-                     {"--restart", o->restart_path, 0, ""},
-                     {"--from", o->from_path, 0, ""}};
+    char out_canon[PATH_CAP], frame[PATH_CAP];
+    resolve(o->out_dir, out_canon, sizeof out_canon);
+    named files[] = {{"--stats", o->stats_path, 1, "", 0, 0, 0, 0},
+                     {"--trajectory", o->trajectory_path, 1, "", 0, 0, 0, 0},
+                     {"--checkpoint", o->checkpoint_path, 1, "", 0, 0, 0, 0},
+                     {"--restart", o->restart_path, 0, "", 0, 0, 0, 0},
+                     {"--from", o->from_path, 0, "", 0, 0, 0, 0}};
     const size_t count = sizeof files / sizeof files[0];
     for (size_t i = 0; i < count; ++i) {
         named *f = &files[i];
@@ -147,24 +253,21 @@ void check_paths(const options *o)
             continue;
         if (f->output && is_dir(f->path))
             die(EXIT_USAGE, "%s needs a file name, got directory '%s'", f->option, f->path);
-        canonical(f->path, f->canon, sizeof f->canon);
+        look_up(f);
         if (strcmp(f->canon, out_canon) == 0)
             die(EXIT_USAGE, "%s %s is the --out directory: give it a file name", f->option,
                 f->path);
-        char dir[PATH_CAP];
-        const char *base;
-        split_path(f->canon, dir, sizeof dir, &base);
-        if (strcmp(*dir ? dir : "/", out_canon) == 0 && frame_number(base) >= 0) {
-            if (f->output)
-                die(EXIT_USAGE,
-                    "%s %s would replace a frame file in the --out directory '%s': choose "
-                    "another name",
-                    f->option, f->path, o->out_dir);
+        if (!names_a_frame(f, o->out_dir, out_canon, frame, sizeof frame))
+            continue;
+        if (f->output)
             die(EXIT_USAGE,
-                "%s %s is a frame file in the --out directory '%s', which this run writes: "
-                "copy it elsewhere first",
-                f->option, f->path, o->out_dir);
-        }
+                "%s %s would replace the frame file %s in the --out directory '%s': choose "
+                "another name",
+                f->option, f->path, frame, o->out_dir);
+        die(EXIT_USAGE,
+            "%s %s is the frame file %s in the --out directory '%s', which this run writes: "
+            "copy it elsewhere first",
+            f->option, f->path, frame, o->out_dir);
     }
     /* Two names of one file: the later write would replace the earlier, or
      * an output its own input. --restart and --checkpoint may be the same
@@ -173,13 +276,15 @@ void check_paths(const options *o)
     for (size_t i = 0; i < count; ++i)
         for (size_t j = i + 1; j < count; ++j) {
             const named *a = &files[i], *b = &files[j];
-            if (!a->path || !b->path || strcmp(a->canon, b->canon) != 0 ||
-                strcmp(a->canon, "/dev/null") == 0)
+            if (!a->path || !b->path || !same_file(a, b) || is_dev_null(a))
                 continue;
             if (strcmp(a->option, "--checkpoint") == 0 && strcmp(b->option, "--restart") == 0)
                 continue;
-            die(EXIT_USAGE, "%s and %s both name %s: give each its own file", a->option, b->option,
-                b->path);
+            if (strcmp(a->path, b->path) == 0)
+                die(EXIT_USAGE, "%s and %s both name %s: give each its own file", a->option,
+                    b->option, b->path);
+            die(EXIT_USAGE, "%s %s and %s %s name the same file: give each its own file", a->option,
+                a->path, b->option, b->path);
         }
     for (size_t i = 0; i < count; ++i)
         if (files[i].path && files[i].output)

@@ -134,10 +134,13 @@ ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture)
 }
 
 /* A whole regular file in memory (a checkpoint or a frame is read to its
- * end: a device or a pipe could have none). */
+ * end: a device or a pipe could have none). Opened without blocking, since
+ * opening a named pipe waits for a writer, possibly forever; then what was
+ * opened is judged, so nothing can replace it between a check and the
+ * open; then reads block again. */
 static char *read_input(const char *option, const char *path, size_t *len)
 {
-    int fd = open(path, O_RDONLY);
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
     struct stat st;
     if (fd < 0 || fstat(fd, &st) != 0)
         die(EXIT_RUN, "cannot read %s %s: %s", option, path, strerror(errno));
@@ -145,6 +148,9 @@ static char *read_input(const char *option, const char *path, size_t *len)
         die(EXIT_RUN, "cannot read %s %s: %s", option, path, strerror(EISDIR));
     if (!S_ISREG(st.st_mode))
         die(EXIT_RUN, "cannot read %s %s: not a regular file", option, path);
+    const int flags = fcntl(fd, F_GETFL);
+    if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0)
+        die(EXIT_RUN, "cannot read %s %s: %s", option, path, strerror(errno));
     size_t cap = (size_t)st.st_size + 1, got = 0;
     char *data = malloc(cap);
     if (!data)

@@ -35,7 +35,7 @@ typedef enum ds_status {
     DS_ERR_NOMEM,     /* an allocation failed or would not fit in memory */
     DS_ERR_PLACEMENT, /* the disks cannot be placed (see DS_RANDOM, DS_LATTICE) */
     DS_ERR_IO,        /* a read or write failed */
-    DS_ERR_FORMAT,    /* a frame file is malformed (see ds_frame_error) */
+    DS_ERR_FORMAT,    /* a frame or checkpoint is malformed (ds_frame_error, ds_state_error) */
     DS_ERR_OVERLAP    /* ds_set or ds_set_all would make two disks overlap */
 } ds_status;
 
@@ -407,14 +407,16 @@ ds_status ds_get_unwrapped(const ds_sim *sim, double *xy);
 
 /* Replaces disk i. DS_ERR_ARG if i >= n, a value is not finite, a
  * velocity component exceeds 1e12 in magnitude, or the centre is outside
- * the box: [R, box - R] x [R, box_y - R] with walls, [0, box) x [0, box_y)
- * in a periodic box. The time step does not check overlaps (its next step
- * resolves them); the event-driven integrator refuses a centre that
- * overlaps another (see DS_CONTACT_TOLERANCE) with DS_ERR_OVERLAP, the
- * state unchanged: exact dynamics has no meaning for overlapping hard
- * disks. Moving many disks one by one can fail where the new state is
- * fine (a disk's new place overlaps a disk not yet moved): use
- * ds_set_all. The disk's periodic image counts stay (ds_get_images). */
+ * the box: [r, box - r] x [r, box_y - r] with walls, r the disk's own
+ * radius (ds_radius_of: R with one kind of disk, each disk's own in a
+ * mixture), [0, box) x [0, box_y) in a periodic box. The time step does
+ * not check overlaps (its next step resolves them); the event-driven
+ * integrator refuses a centre that overlaps another (see
+ * DS_CONTACT_TOLERANCE) with DS_ERR_OVERLAP, the state unchanged: exact
+ * dynamics has no meaning for overlapping hard disks. Moving many disks
+ * one by one can fail where the new state is fine (a disk's new place
+ * overlaps a disk not yet moved): use ds_set_all. The disk's periodic
+ * image counts stay (ds_get_images). */
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d);
 
 /* Why a whole state was refused (ds_set_all, ds_load_state). */
@@ -431,7 +433,11 @@ typedef struct ds_state_error {
  * from the new state (the event-driven one predicts every event again);
  * the time, the step count and the observables' accumulators go on; the
  * periodic image counts start again at 0 (the new centres are in the
- * box, so ds_get_unwrapped starts from them). */
+ * box, so ds_get_unwrapped starts from them). A growth (ds_set_growth)
+ * ends: the radii stay as grown by now, ds_growth_state_of says
+ * DS_GROWTH_NONE and ds_growth_z 0 (a growth that had reached its target
+ * or jammed is forgotten too), and the velocities are the ones given, not
+ * scaled back as the end of a growth otherwise scales them. */
 ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
 
 /* ------------------------------------------------------------------ */
@@ -693,16 +699,25 @@ void ds_frame_free(ds_frame *frame);
 /* One frame of an extended XYZ trajectory; frames written one after
  * another to the same file make the trajectory. A frame is the disk count
  * on a line, the comment line
- *   Lattice="L 0 0 0 L 0 0 0 2R" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
  *   Time=T pbc="F F F"
- * (one line; L the box side, T the simulated time with 6 decimals), then
- * one line per disk in generation order,
- *   X x y 0 R vx vy 0
- * with x, y, vx, vy written like frames (6 decimals) and R in the shortest
- * form that reads back exactly. The 2D box is written as a cell of height
- * 2R with every disk at z = 0; "X" is a dummy species. ASE reads positions,
- * arrays "radius" and "velo" and info "Time"; OVITO maps the columns to
- * Particle Type, Position, Radius and Velocity.
+ * with walls, or in a periodic box
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3:image:I:2
+ *   Time=T pbc="T T F"
+ * (one line; Lx and Ly the box's sides, ds_box and ds_box_y, and H twice
+ * the largest radius, ds_radius_max, each in the shortest form that reads
+ * back exactly; T the simulated time with 6 decimals), then one line per
+ * disk in generation order,
+ *   X x y 0 r vx vy 0         with walls
+ *   X x y 0 r vx vy 0 ix iy   in a periodic box
+ * with x, y, vx, vy written like frames (6 decimals), r the disk's own
+ * radius (ds_radius_of) in the shortest form that reads back exactly, and
+ * ix, iy its image counts (ds_get_images), so x + ix Lx, y + iy Ly is its
+ * unwrapped centre. The 2D box is written as a cell of height H with every
+ * disk at z = 0, periodic along x and y only; "X" is a dummy species. ASE
+ * reads positions, cell and pbc, arrays "radius", "velo" and "image" and
+ * info "Time"; OVITO maps the columns to Particle Type, Position, Radius
+ * and Velocity.
  * ds_format_xyz_frame works like ds_format_frame: with cap too small it
  * returns DS_ERR_ARG, *len receives the bytes needed either way (buf NULL
  * with cap 0 asks only for the size), and ds_xyz_frame_size() is always

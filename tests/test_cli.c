@@ -224,6 +224,20 @@ static int apply_setup(const cli_case *c, const char *dir, long *fsize, int *dro
         } else if (strcmp(step, "dir") == 0) {
             if (mkdir(path, 0755) != 0)
                 return -1;
+        } else if (strcmp(step, "fifo") == 0) {
+            if (mkfifo(path, 0644) != 0)
+                return -1;
+        } else if (strcmp(step, "link") == 0 || strcmp(step, "hardlink") == 0) {
+            /* NAME=TARGET: TARGET as written (relative to NAME's directory
+             * for a symbolic link, to the case directory for a hard one). */
+            if (!eq)
+                return -1;
+            const char *target = strchr(arg, '=') + 1;
+            char target_path[PATH_MAX];
+            snprintf(target_path, sizeof target_path, "%s/%s", dir, target);
+            if (strcmp(step, "link") == 0 ? symlink(target, path) != 0
+                                          : link(target_path, path) != 0)
+                return -1;
         } else if (strcmp(step, "readonly") == 0 || strcmp(step, "unreadable") == 0) {
             if (mkdir(path, 0) != 0 || chmod(path, strcmp(step, "readonly") == 0 ? 0555 : 0))
                 return -1;

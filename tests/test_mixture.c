@@ -396,6 +396,43 @@ static void test_a_bad_mixture_is_refused_with_its_reason(void **state)
     assert_non_null(strstr(why.message, "radii 6 to 8.4"));
 }
 
+/* With walls a disk's centre stays its own radius from each wall, as
+ * ds_set's contract says: a large disk of a mixture is refused where a
+ * small one (of the reference R) is taken, on each side and with either
+ * integrator, and ds_set_all names the radius. */
+static void test_set_keeps_a_mixture_disk_its_own_radius_from_the_walls(void **state)
+{
+    (void)state;
+    const double r[2] = {3.0, 7.0};
+    for (int integrator = DS_TIME_STEP; integrator <= DS_EVENT_DRIVEN; ++integrator) {
+        ds_params p = ds_default_params(2, r[0]);
+        p.integrator = (ds_integrator)integrator;
+        p.box = 200.0;
+        p.box_y = 150.0;
+        ds_mixture mix = {0, NULL, r, NULL, DS_MASS_EQUAL};
+        ds_sim *sim = NULL;
+        assert_int_equal(ds_create_mixture(&p, &mix, &sim), DS_OK);
+        put(sim, 0, 100.0, 75.0, 1.0, 0.0); /* out of the way, in the middle */
+        const ds_disk inside[4] = {
+            {7.0, 40.0, 0, 0}, {193.0, 40.0, 0, 0}, {40.0, 7.0, 0, 0}, {40.0, 143.0, 0, 0}};
+        const ds_disk within_r_not_7[4] = {
+            {5.0, 40.0, 0, 0}, {195.0, 40.0, 0, 0}, {40.0, 5.0, 0, 0}, {40.0, 145.0, 0, 0}};
+        for (int k = 0; k < 4; ++k) {
+            assert_int_equal(ds_set(sim, 1, inside[k]), DS_OK);
+            assert_int_equal(ds_set(sim, 1, within_r_not_7[k]), DS_ERR_ARG);
+            put(sim, 1, 150.0, 75.0, 0.0, 1.0);
+            /* The small disk, of R = 3, fits there. */
+            put(sim, 0, within_r_not_7[k].x, within_r_not_7[k].y, 0.0, 0.0);
+            put(sim, 0, 100.0, 75.0, 1.0, 0.0);
+        }
+        ds_disk all[2] = {{100.0, 75.0, 1.0, 0.0}, within_r_not_7[0]};
+        ds_state_error why;
+        assert_int_equal(ds_set_all(sim, all, &why), DS_ERR_ARG);
+        assert_non_null(strstr(why.message, "[7, 193] x [7, 143]"));
+        ds_destroy(sim);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -407,6 +444,7 @@ int main(void)
         cmocka_unit_test(test_energy_is_conserved_over_a_million_collisions_with_unequal_masses),
         cmocka_unit_test(test_one_kind_is_the_plain_simulation_to_the_bit),
         cmocka_unit_test(test_a_random_mixture_is_placed_inside_and_apart),
+        cmocka_unit_test(test_set_keeps_a_mixture_disk_its_own_radius_from_the_walls),
         cmocka_unit_test(test_a_bad_mixture_is_refused_with_its_reason),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -169,13 +169,32 @@ static void test_null_simulation_is_harmless(void **state)
 static void test_every_status_has_a_description(void **state)
 {
     (void)state;
-    for (int s = DS_OK; s <= DS_ERR_FORMAT; ++s) {
+    for (int s = DS_OK; s <= DS_ERR_OVERLAP; ++s) {
         const char *text = ds_status_str((ds_status)s);
         assert_non_null(text);
         assert_true(strlen(text) > 0);
         assert_string_not_equal(text, "unknown status");
     }
     assert_string_equal(ds_version(), DS_VERSION_STRING);
+}
+
+/* DS_ERR_FORMAT comes back for a malformed frame and for a malformed
+ * checkpoint: its description, which a caller prints when there is no
+ * reason in the error struct, names both. */
+static void test_the_format_status_describes_frames_and_checkpoints(void **state)
+{
+    (void)state;
+    static const char not_a_checkpoint[] = "DSIMSTAX and then nothing of a checkpoint";
+    ds_sim *sim = NULL;
+    const ds_status from_state =
+        ds_parse_state(not_a_checkpoint, sizeof not_a_checkpoint, &sim, NULL);
+    assert_int_equal(from_state, DS_ERR_FORMAT);
+    assert_null(sim);
+    ds_frame frame;
+    const ds_status from_frame = ds_parse_frame("1 2 x\n", 6, &frame, NULL);
+    assert_int_equal(from_frame, DS_ERR_FORMAT);
+    assert_non_null(strstr(ds_status_str(from_state), "checkpoint"));
+    assert_non_null(strstr(ds_status_str(from_frame), "frame"));
 }
 
 static void test_tunneling_warning_for_tiny_radius(void **state)
@@ -205,6 +224,7 @@ int main(void)
         cmocka_unit_test(test_collision_timer_and_counters_advance),
         cmocka_unit_test(test_null_simulation_is_harmless),
         cmocka_unit_test(test_every_status_has_a_description),
+        cmocka_unit_test(test_the_format_status_describes_frames_and_checkpoints),
         cmocka_unit_test(test_tunneling_warning_for_tiny_radius),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* A whole state at once: ds_set_all takes every disk together where disk
  * by disk fails, refuses an overlapping or outside state naming the disks
- * and changing nothing, and the run goes on from the new state. */
+ * and changing nothing, ends a growth keeping its radii, and the run goes
+ * on from the new state. */
 #include "test_util.h"
 
 static ds_sim *dense_periodic(ds_integrator integrator)
@@ -153,12 +154,67 @@ static void test_the_run_goes_on_from_the_new_state(void **state)
     }
 }
 
+/* ds_set_all ends a growth, as its contract says: the radii stay as grown
+ * (to the bit, and for the rest of the run), the state says no growth and
+ * no Z, the velocities are the ones given; and a growth that had reached
+ * its target is forgotten too. */
+static void test_set_all_ends_a_growth_keeping_the_grown_radii(void **state)
+{
+    (void)state;
+    enum { N = 30 };
+    for (int reached = 0; reached < 2; ++reached) {
+        ds_params p = ds_default_params(N, 5.0);
+        p.boundary = DS_PERIODIC;
+        p.integrator = DS_EVENT_DRIVEN;
+        p.seed = 3;
+        ds_sim *sim = NULL;
+        assert_int_equal(ds_create(&p, &sim), DS_OK);
+        ds_run(sim, 10);
+        const double eta0 = ds_area_fraction(sim);
+        if (reached) {
+            assert_int_equal(ds_set_growth(sim, 0.5, 0.03, 0.0), DS_OK);
+            for (int k = 0; k < 100000 && ds_growth_state_of(sim) == DS_GROWING; ++k)
+                ds_run(sim, 1);
+            assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_REACHED_ETA);
+        } else {
+            assert_int_equal(ds_set_growth(sim, 0.05, 0.0, 0.0), DS_OK);
+            ds_run(sim, 100000); /* t = 100: radii 6x, windows of 2 N collisions done */
+            assert_int_equal(ds_growth_state_of(sim), DS_GROWING);
+            assert_true(ds_growth_z(sim) > 0.0);
+        }
+        const double eta = ds_area_fraction(sim);
+        assert_true(eta > 2.0 * eta0);
+        double grown[N], after[N];
+        assert_int_equal(ds_get_radii(sim, grown, NULL), DS_OK);
+        ds_disk d[N], got[N];
+        assert_int_equal(ds_get_all(sim, d), DS_OK);
+        for (size_t i = 0; i < N; ++i) { /* another kinetic energy than growth's */
+            d[i].vx *= 0.5;
+            d[i].vy *= 0.5;
+        }
+        assert_int_equal(ds_set_all(sim, d, NULL), DS_OK);
+        assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_NONE);
+        assert_true(ds_growth_z(sim) == 0.0);
+        assert_int_equal(ds_get_all(sim, got), DS_OK);
+        assert_memory_equal(got, d, sizeof d); /* as given, not scaled */
+        for (int k = 0; k < 2; ++k) {
+            assert_int_equal(ds_get_radii(sim, after, NULL), DS_OK);
+            assert_memory_equal(after, grown, sizeof grown);
+            assert_true(ds_area_fraction(sim) == eta);
+            ds_run(sim, 2000); /* and they do not grow on */
+        }
+        assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_NONE);
+        ds_destroy(sim);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_all_moves_every_disk_where_one_by_one_fails),
         cmocka_unit_test(test_set_all_refuses_an_overlap_and_changes_nothing),
         cmocka_unit_test(test_set_all_refuses_a_disk_outside_the_box_or_not_finite),
+        cmocka_unit_test(test_set_all_ends_a_growth_keeping_the_grown_radii),
         cmocka_unit_test(test_the_run_goes_on_from_the_new_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -19,10 +19,13 @@
 /* A strict reader of the frames we write                              */
 /* ------------------------------------------------------------------ */
 
+/* One frame as the header's comment on ds_format_xyz_frame describes it. */
 typedef struct xyz_frame {
     size_t count;
-    double time, box, height;
+    double time, box, box_y, height;
+    int periodic;         /* pbc="T T F", and each line ends with ix iy */
     ds_frame_disk *disks; /* x, y, r, vx, vy */
+    long *image;          /* ix, iy of each disk when periodic, else NULL */
 } xyz_frame;
 
 /* Reads one number followed by a space or a newline; fails the test if
@@ -37,6 +40,14 @@ static double number(const char **p)
     return v;
 }
 
+/* A whole number, as number() reads one. */
+static long integer(const char **p)
+{
+    const double v = number(p);
+    assert_true(v == floor(v));
+    return (long)v;
+}
+
 static void expect(const char **p, const char *text)
 {
     if (strncmp(*p, text, strlen(text)) != 0)
@@ -44,7 +55,16 @@ static void expect(const char **p, const char *text)
     *p += strlen(text);
 }
 
-/* Parses every frame of text; returns how many (at most max). */
+static int next_is(const char **p, const char *text)
+{
+    if (strncmp(*p, text, strlen(text)) != 0)
+        return 0;
+    *p += strlen(text);
+    return 1;
+}
+
+/* Parses every frame of text, strictly in the form the header documents
+ * (nothing else is accepted); returns how many (at most max). */
 static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
 {
     const char *p = text;
@@ -56,14 +76,23 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
         expect(&p, "Lattice=\"");
         f->box = number(&p);
         expect(&p, "0 0 0 ");
-        assert_true(number(&p) == f->box); /* square */
+        f->box_y = number(&p);
         expect(&p, "0 0 0 ");
         f->height = number(&p);
-        expect(&p, "\" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3 Time=");
+        expect(&p, "\" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3");
+        const int images = next_is(&p, ":image:I:2");
+        expect(&p, " Time=");
         f->time = number(&p);
-        expect(&p, "pbc=\"F F F\"\n");
+        expect(&p, "pbc=\"");
+        f->periodic = next_is(&p, "T T F");
+        if (!f->periodic)
+            expect(&p, "F F F");
+        expect(&p, "\"\n");
+        assert_int_equal(images, f->periodic); /* the image column iff periodic */
         f->disks = malloc(f->count * sizeof *f->disks);
         assert_non_null(f->disks);
+        f->image = f->periodic ? malloc(2 * f->count * sizeof *f->image) : NULL;
+        assert_true(!f->periodic || f->image);
         for (size_t i = 0; i < f->count; ++i) {
             ds_frame_disk *d = &f->disks[i];
             expect(&p, "X ");
@@ -74,6 +103,10 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
             d->vx = number(&p);
             d->vy = number(&p);
             assert_true(number(&p) == 0.0); /* vz */
+            if (f->periodic) {
+                f->image[2 * i] = integer(&p);
+                f->image[2 * i + 1] = integer(&p);
+            }
             assert_true(p[-1] == '\n');
         }
     }
@@ -82,8 +115,10 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
 
 static void free_frames(xyz_frame *frames, size_t n)
 {
-    for (size_t k = 0; k < n; ++k)
+    for (size_t k = 0; k < n; ++k) {
         free(frames[k].disks);
+        free(frames[k].image);
+    }
 }
 
 /* The rest of f from where it is, NUL-terminated; closes f. */
@@ -125,8 +160,9 @@ static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
     xyz_frame f;
     assert_int_equal(parse_trajectory(buf, &f, 1), 1);
     assert_int_equal(f.count, 300);
-    assert_true(f.box == 1000.0);
+    assert_true(f.box == 1000.0 && f.box_y == 1000.0);
     assert_true(f.height == 8.0); /* 2R: the flat layer the disks fill */
+    assert_false(f.periodic);
     assert_true(within_six_decimals(f.time, 0.5));
     ds_disk want[300];
     assert_int_equal(ds_get_all(sim, want), DS_OK);
@@ -140,6 +176,63 @@ static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
     free_frames(&f, 1);
     free(buf);
     ds_destroy(sim);
+}
+
+/* The header's comment on ds_format_xyz_frame, claim by claim, on what
+ * it must describe beyond one square box of one radius: a mixture in a
+ * box taller than wide, with walls and periodic, after the disks have
+ * crossed the periodic box's sides. The parser above accepts only the
+ * documented form; here each number is checked against the simulation. */
+static void test_the_documented_xyz_form_is_what_is_written(void **state)
+{
+    (void)state;
+    enum { N = 24 };
+    const ds_species kinds[2] = {{12, 3.0, 0.0}, {12, 4.5, 0.0}};
+    const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
+    for (int periodic = 0; periodic < 2; ++periodic) {
+        ds_params p = ds_default_params(N, 3.0);
+        p.box = 160.0;
+        p.box_y = 230.0;
+        p.seed = 5;
+        p.boundary = periodic ? DS_PERIODIC : DS_WALLS;
+        ds_sim *sim = NULL;
+        assert_int_equal(ds_create_mixture(&p, &mixture, &sim), DS_OK);
+        ds_run(sim, 3000); /* t = 3: at speeds near 100 many disks cross a side */
+        size_t cap = ds_xyz_frame_size(sim), len = 0;
+        char *buf = malloc(cap + 1);
+        assert_non_null(buf);
+        assert_int_equal(ds_format_xyz_frame(sim, buf, cap, &len), DS_OK);
+        buf[len] = '\0';
+        xyz_frame f;
+        assert_int_equal(parse_trajectory(buf, &f, 1), 1);
+        assert_int_equal(f.count, N);
+        assert_int_equal(f.periodic, periodic);
+        /* Lx, Ly and H = 2 r_max in the shortest text that reads back. */
+        assert_true(f.box == ds_box(sim) && f.box_y == ds_box_y(sim));
+        assert_true(f.height == 2.0 * ds_radius_max(sim) && f.height == 9.0);
+        assert_true(within_six_decimals(f.time, ds_time(sim)));
+        ds_disk want[N];
+        int32_t image[2 * N];
+        assert_int_equal(ds_get_all(sim, want), DS_OK);
+        assert_int_equal(ds_get_images(sim, image), DS_OK);
+        int crossed = 0;
+        for (size_t i = 0; i < N; ++i) {
+            assert_true(f.disks[i].r == ds_radius_of(sim, i)); /* each its own, exactly */
+            assert_true(within_six_decimals(f.disks[i].x, want[i].x));
+            assert_true(within_six_decimals(f.disks[i].y, want[i].y));
+            assert_true(within_six_decimals(f.disks[i].vx, want[i].vx));
+            assert_true(within_six_decimals(f.disks[i].vy, want[i].vy));
+            if (periodic) {
+                assert_int_equal(f.image[2 * i], image[2 * i]);
+                assert_int_equal(f.image[2 * i + 1], image[2 * i + 1]);
+                crossed += image[2 * i] != 0 || image[2 * i + 1] != 0;
+            }
+        }
+        assert_true(!periodic || crossed > 0); /* the image column was put to the test */
+        free_frames(&f, 1);
+        free(buf);
+        ds_destroy(sim);
+    }
 }
 
 static void test_frames_written_one_after_another_make_a_trajectory(void **state)
@@ -372,6 +465,7 @@ int main(void)
 {
     const struct CMUnitTest library[] = {
         cmocka_unit_test(test_an_xyz_frame_reads_back_as_the_simulation),
+        cmocka_unit_test(test_the_documented_xyz_form_is_what_is_written),
         cmocka_unit_test(test_frames_written_one_after_another_make_a_trajectory),
         cmocka_unit_test(test_formatting_reports_the_bytes_needed),
         cmocka_unit_test(test_bad_arguments_and_a_full_disk_are_errors),

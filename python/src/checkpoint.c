@@ -8,9 +8,11 @@
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 /* A new instance of type (Sim or a subclass) owning sim. */
 static PyObject *new_sim(PyTypeObject *type, ds_sim *sim, const ds_params *params, unsigned unknown,
@@ -89,7 +91,8 @@ const char dspy_load_doc[] =
     "placement: the loaded Sim's params leave them out and its placement is None.\n"
     "FormatError (a ValueError) for a truncated, corrupted, foreign or newer\n"
     "checkpoint, with the library's reason; FileError (an OSError) if it cannot be\n"
-    "read or is not a regular file (a device such as /dev/zero would never end).";
+    "read or is not a regular file (a device such as /dev/zero would never end; a\n"
+    "named pipe is refused at once, not waited on for a writer).";
 
 PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
 {
@@ -106,17 +109,27 @@ PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
     int errnum = 0;
     Py_BEGIN_ALLOW_THREADS
     errno = 0;
-    FILE *f = fopen(name, "rb");
+    /* ds_load_state reads to the end of the file: from a device such as
+     * /dev/zero that is never, so only regular files are read. Opened
+     * without blocking, since opening a named pipe waits for a writer,
+     * possibly forever; then what was opened is judged (no other file can
+     * take its name between a check and the open); then reads block. */
+    const int fd = open(name, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat info;
-    if (!f) {
+    int flags = -1;
+    FILE *f = NULL;
+    if (fd < 0) {
         st = DS_ERR_IO;
         errnum = errno;
-    } else if (fstat(fileno(f), &info) != 0 || !S_ISREG(info.st_mode)) {
-        /* ds_load_state reads to the end of the file: from a device such as
-         * /dev/zero that is never, so only regular files are read. */
+    } else if (fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
         st = DS_ERR_IO;
         snprintf(err.message, sizeof err.message, "not a regular file");
-        fclose(f);
+        close(fd);
+    } else if ((flags = fcntl(fd, F_GETFL)) < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0 ||
+               !(f = fdopen(fd, "rb"))) {
+        st = DS_ERR_IO;
+        errnum = errno;
+        close(fd);
     } else {
         st = ds_load_state(f, &sim, &err);
         errnum = st == DS_ERR_IO ? errno : 0;

@@ -12,6 +12,13 @@
 
 int dspy_uint64_arg(PyObject *value, const char *field, int is_count, uint64_t *out)
 {
+    /* A bool is an int to Python, but True for n or a seed is a slip, not a
+     * count: refused as numpy refuses np.zeros(True). */
+    if (PyBool_Check(value) || PyArray_IsScalar(value, Bool)) {
+        PyErr_Format(PyExc_TypeError, "%s must be an int, not %.100s", field,
+                     Py_TYPE(value)->tp_name);
+        return -1;
+    }
     if (!PyIndex_Check(value)) {
         PyErr_Format(PyExc_TypeError, "%s must be an int, not %.100s", field,
                      Py_TYPE(value)->tp_name);

@@ -9,6 +9,7 @@
  *   ArgumentError  (Error, ValueError)   DS_ERR_ARG, DS_ERR_PLACEMENT,
  *                                        DS_ERR_OVERLAP: a value refused
  *   FormatError    (Error, ValueError)   DS_ERR_FORMAT: a malformed frame
+ *                                        or checkpoint
  *   FileError      (Error, OSError)      DS_ERR_IO: a file not read or written
  *   NoMemoryError  (Error, MemoryError)  DS_ERR_NOMEM, or more than the
  *                                        machine's memory asked for
@@ -36,8 +37,9 @@ static const char argument_error_doc[] =
     "(DS_ERR_OVERLAP), a packing that cannot be placed (DS_ERR_PLACEMENT).\n"
     "Also a ValueError. (An argument of the wrong type raises TypeError.)";
 static const char format_error_doc[] =
-    "A malformed frame file (DS_ERR_FORMAT); line is the 1-based line at fault\n"
-    "(0 if not about one line), path the file. Also a ValueError.";
+    "A malformed frame file or checkpoint (DS_ERR_FORMAT); line is the 1-based\n"
+    "line at fault of a frame (0 if not about one line), path the file. Also a\n"
+    "ValueError.";
 static const char file_error_doc[] =
     "A file that cannot be read or written (DS_ERR_IO); errno, strerror and\n"
     "filename as for any OSError, of which it is a subclass.";

@@ -5,6 +5,7 @@ checkpoint goes on bit for bit as the saved one would have."""
 import copy
 import os
 import pickle
+import threading
 
 import numpy as np
 import pytest
@@ -112,3 +113,31 @@ def test_a_checkpoint_is_read_from_a_regular_file_only():
         disksim.load("/dev/zero")
     with pytest.raises(disksim.FileError, match="not a regular file"):
         disksim.load("/")
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no named pipes")
+def test_a_named_pipe_is_refused_without_waiting_for_a_writer(tmp_path):
+    # Opening a named pipe for reading waits for a writer: load() must not
+    # open it that way. The load runs in a thread so that a regression fails
+    # here instead of hanging the suite: after the guard's time a writer
+    # opens and closes the pipe, which lets a blocked open() go on.
+    fifo = tmp_path / "c.ckpt"
+    os.mkfifo(fifo)
+    outcome = []
+
+    def load():
+        try:
+            outcome.append(disksim.load(fifo))
+        except Exception as e:  # judged below, in the test's own thread
+            outcome.append(e)
+
+    reader = threading.Thread(target=load, daemon=True)
+    reader.start()
+    reader.join(timeout=20)  # a hang guard, not a timing: the refusal is immediate
+    blocked = reader.is_alive()
+    if blocked:
+        os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK))
+        reader.join(timeout=20)
+    assert not blocked, "disksim.load blocked in open() on a named pipe with no writer"
+    assert isinstance(outcome[0], disksim.FileError), outcome
+    assert "not a regular file" in str(outcome[0])

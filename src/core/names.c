@@ -17,7 +17,7 @@ const char *ds_status_str(ds_status status)
     case DS_ERR_IO:
         return "input/output error";
     case DS_ERR_FORMAT:
-        return "malformed frame";
+        return "malformed frame or checkpoint";
     case DS_ERR_OVERLAP:
         return "the disk would overlap another";
     }
