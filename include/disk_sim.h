@@ -269,14 +269,15 @@ typedef struct ds_mixture {
     size_t species;          /* kinds, or 0 for radii per disk */
     const ds_species *kinds; /* species entries */
     const double *radii;     /* per disk: n radii, in generation order */
-    const double *masses;    /* per disk: n masses, or NULL for the rule */
+    const double *masses;    /* per disk: n masses, or NULL for the rule (species: NULL) */
     ds_mass_rule mass_rule;  /* for masses not given (0 or NULL) */
 } ds_mixture;
 
 /* ds_diagnose_params, ds_memory_needed and ds_create for a mixture; a
  * NULL mixture is ds_params alone. A refusal of the mixture names the
  * field "mixture" (a count that does not add up, a radius or mass that is
- * not a positive finite number, an unknown rule) or a field of params. */
+ * not a positive finite number, an unknown rule, species with radii or
+ * masses per disk) or a field of params. */
 ds_status ds_diagnose_mixture(const ds_params *params, const ds_mixture *mixture,
                               unsigned *warnings, ds_params_error *err);
 ds_status ds_memory_needed_mixture(const ds_params *params, const ds_mixture *mixture,

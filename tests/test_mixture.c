@@ -380,6 +380,17 @@ static void test_a_bad_mixture_is_refused_with_its_reason(void **state)
     mix.mass_rule = DS_MASS_AREA;
     assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_OK);
     const double radii[10] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    /* Masses per disk beside species were ignored without a word: each
+     * species gives its mass. */
+    const double masses[10] = {1, 1, 1, 1, 1, 2, 2, 2, 2, 2};
+    mix.masses = masses;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    assert_string_equal(why.field, "mixture");
+    assert_non_null(strstr(why.message, "masses per disk go with radii per disk"));
+    ds_sim *refused = (ds_sim *)1;
+    assert_int_equal(ds_create_mixture(&p, &mix, &refused), DS_ERR_ARG);
+    assert_null(refused);
+    mix.masses = NULL;
     mix.radii = radii; /* both forms */
     assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
     ds_mixture per_disk = {0, NULL, radii, NULL, DS_MASS_EQUAL};

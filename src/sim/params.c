@@ -83,6 +83,10 @@ static ds_status check_mixture(const ds_mixture *m, double reference, ds_world *
         return ds_refuse(err, DS_ERR_ARG, "mixture",
                          "mixture: give either species (kinds, with their count) or radii per "
                          "disk, not both and not neither");
+    if (m->species > 0 && m->masses)
+        return ds_refuse(err, DS_ERR_ARG, "mixture",
+                         "mixture: masses per disk go with radii per disk; species give each "
+                         "kind's mass in ds_species.mass");
     if (m->kinds) {
         size_t total = 0;
         for (size_t k = 0; k < m->species; ++k) {
