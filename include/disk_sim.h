@@ -116,8 +116,10 @@ typedef enum ds_placement {
     /* Random sequential: the seed's, up to area fraction 0.54. In a
      * periodic box (with more than one disk) the mean velocity is taken
      * out and the speeds scaled back to the same kinetic energy,
-     * n speed^2 / 2, so the centre of mass stands still; with walls the
-     * velocities are the seed's. */
+     * n speed^2 / 2, so the centre of mass stands still, at any speed
+     * and masses (if rounding leaves every disk the same velocity, as it
+     * can below the smallest normal speed, 2.2e-308, they start at
+     * rest); with walls the velocities are the seed's. */
     DS_RANDOM = 0,
     /* A triangular lattice of m rows of c sites (c m >= n, empty sites
      * spread evenly), the (c, m) whose closest sites are farthest apart;
