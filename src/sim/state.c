@@ -335,31 +335,19 @@ static ds_status read_world(ds_reader *r, ds_world *w, ds_state_error *err)
     return DS_OK;
 }
 
-/* The disks in their slots: finite, inside the box up to the rounding of
- * a flight (a centre shown at a time a hair past its wall turn), each
- * generation index once. */
 /* A mixture's radii (after read_disks): the world's smallest, largest and
- * covered area from them, the largest held to what ds_check_params holds
- * a radius to. */
+ * covered area from them as creation computed them, the largest held to
+ * what ds_check_params holds a radius to. */
 static ds_status mixture_world(ds_sim *sim, ds_state_error *err)
 {
     ds_world *w = &sim->world;
     if (!sim->disks.r)
         return DS_OK;
-    double lo = INFINITY, hi = 0.0, covered = 0.0;
-    for (size_t k = 0; k < sim->disks.n; ++k) {
-        const double r = sim->disks.r[k];
-        lo = fmin(lo, r);
-        hi = fmax(hi, r);
-        covered += DS_TWO_PI * 0.5 * r * r;
-    }
+    ds_world_take_radii(w, &sim->disks);
     const double most = (w->boundary == DS_PERIODIC ? 0.25 : 0.5) * fmin(w->box, w->box_y);
-    if (!(hi < most))
+    if (!(w->radius_max < most))
         return ds_state_refuse(err, DS_ERR_FORMAT, "its largest radius %g does not fit its box",
-                               hi);
-    w->radius_min = lo;
-    w->radius_max = hi;
-    w->covered = covered;
+                               w->radius_max);
     return DS_OK;
 }
 
