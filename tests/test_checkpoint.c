@@ -280,6 +280,70 @@ static void test_forged_checkpoints_never_crash_the_loader(void **state)
     }
 }
 
+/* The bytes of a double, to find a saved value in a checkpoint. */
+static size_t replace_double(uint8_t *buf, size_t len, double was, double now)
+{
+    uint8_t from[8], to[8];
+    memcpy(from, &was, 8); /* the file is little-endian, as this test's machines */
+    memcpy(to, &now, 8);
+    size_t found = 0;
+    for (size_t at = 40; at + 8 <= len - 8; ++at)
+        if (memcmp(buf + at, from, 8) == 0) {
+            memcpy(buf + at, to, 8);
+            ++found;
+        }
+    return found;
+}
+
+/* A loader checks every disk as ds_set does (finite, no velocity
+ * component beyond 1e12, in the box): a forged checkpoint (its checksum
+ * made again) with a disk too fast was loaded by the time step, which
+ * then ran a disk out of the walls; a periodic centre at box itself, which
+ * ds_set refuses, was taken too. Both integrators; the limit itself loads. */
+static void test_a_forged_disk_is_refused_as_ds_set_refuses_it(void **state)
+{
+    (void)state;
+    for (int integrator = DS_TIME_STEP; integrator <= DS_EVENT_DRIVEN; ++integrator)
+        for (int boundary = DS_WALLS; boundary <= DS_PERIODIC; ++boundary) {
+            const combination c = {(ds_integrator)integrator, DS_AUTO, (ds_boundary)boundary};
+            ds_sim *a = make(&c);
+            ds_run(a, 20);
+            const ds_disk d = ds_get(a, 7);
+            size_t len = 0;
+            uint8_t *buf = saved(a, &len);
+            uint8_t *bad = malloc(len);
+            assert_non_null(bad);
+            const double too_fast[] = {1e77, 1.5e12, -1.0000000000000002e12};
+            for (size_t k = 0; k < sizeof too_fast / sizeof too_fast[0]; ++k) {
+                memcpy(bad, buf, len);
+                /* The arrays' copy, and the event-driven record's. */
+                assert_true(replace_double(bad, len, d.vx, too_fast[k]) >= 1);
+                fix_checksum(bad, len);
+                assert_refused(bad, len, "beyond 1e12");
+            }
+            if (boundary == DS_PERIODIC && integrator == DS_TIME_STEP) {
+                memcpy(bad, buf, len);
+                assert_int_equal(replace_double(bad, len, d.x, ds_box(a)), 1);
+                fix_checksum(bad, len);
+                assert_refused(bad, len, "outside the periodic box");
+            }
+            /* ds_set's own limit is a state a run may have. */
+            ds_disk fast = d;
+            fast.vx = d.vx < 0.0 ? -1e12 : 1e12;
+            if (integrator == DS_TIME_STEP) {
+                assert_int_equal(ds_set(a, 7, fast), DS_OK);
+                free(buf);
+                buf = saved(a, &len);
+                ds_sim *b = NULL;
+                assert_int_equal(ds_parse_state(buf, len, &b, NULL), DS_OK);
+                ds_destroy(b);
+            }
+            free(bad);
+            free(buf);
+            ds_destroy(a);
+        }
+}
+
 /* A stream without end (/dev/zero) is read as far as a header could be,
  * not to its end: refused at once, no memory grown for ever. */
 static void test_a_stream_without_end_is_refused_at_once(void **state)
@@ -318,6 +382,7 @@ int main(void)
         cmocka_unit_test(test_a_state_set_by_hand_is_saved_exactly),
         cmocka_unit_test(test_a_bad_checkpoint_is_refused_with_a_reason),
         cmocka_unit_test(test_forged_checkpoints_never_crash_the_loader),
+        cmocka_unit_test(test_a_forged_disk_is_refused_as_ds_set_refuses_it),
         cmocka_unit_test(test_a_stream_without_end_is_refused_at_once),
         cmocka_unit_test(test_null_arguments_are_refused),
     };

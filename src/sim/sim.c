@@ -173,7 +173,7 @@ ds_status ds_get_unwrapped(const ds_sim *sim, double *xy)
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
 {
     if (!sim || i >= sim->world.n ||
-        ds_check_disk(&sim->world, i, ds_radius_of(sim, i), d, NULL) != DS_OK)
+        ds_check_disk(&sim->world, i, ds_radius_of(sim, i), 0.0, d, NULL) != DS_OK)
         return DS_ERR_ARG;
     return sim->integrator->set(sim, sim->disks.slot[i], d);
 }

@@ -11,7 +11,8 @@
 #include "core/overlap.h"
 #include "sim/sim.h"
 
-ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, ds_state_error *err)
+ds_status ds_check_disk(const ds_world *w, size_t i, double radius, double past, ds_disk d,
+                        ds_state_error *err)
 {
     if (!isfinite(d.x) || !isfinite(d.y) || !isfinite(d.vx) || !isfinite(d.vy))
         return ds_state_refuse(err, DS_ERR_ARG, "disk %zu has a value that is not a finite number",
@@ -20,22 +21,23 @@ ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, d
         return ds_state_refuse(err, DS_ERR_ARG,
                                "disk %zu moves at (%g, %g): a velocity component beyond 1e12", i,
                                d.vx, d.vy);
-    /* With walls the centre stays R from each wall; a periodic box takes
-     * any point of [0, box) x [0, box_y), as its frames show them. */
+    /* With walls the centre stays R from each wall (past that by past); a
+     * periodic box takes any point of [0, box) x [0, box_y), as its
+     * frames show them. */
     if (w->boundary == DS_PERIODIC) {
         if (!(d.x >= 0.0 && d.x < w->box && d.y >= 0.0 && d.y < w->box_y))
             return ds_state_refuse(err, DS_ERR_ARG,
                                    "disk %zu at (%g, %g) is outside the periodic box [0, %g) x "
                                    "[0, %g)",
                                    i, d.x, d.y, w->box, w->box_y);
-    } else if (!(d.x >= radius && d.x <= w->box - radius && d.y >= radius &&
-                 d.y <= w->box_y - radius)) {
+        return DS_OK;
+    }
+    const double lo = radius - past, hi_x = w->box - radius + past, hi_y = w->box_y - radius + past;
+    if (!(d.x >= lo && d.x <= hi_x && d.y >= lo && d.y <= hi_y))
         return ds_state_refuse(err, DS_ERR_ARG,
                                "disk %zu at (%g, %g) is outside [%g, %g] x [%g, %g], where the "
                                "centre of a disk of radius %g stays between the walls",
-                               i, d.x, d.y, radius, w->box - radius, radius, w->box_y - radius,
-                               radius);
-    }
+                               i, d.x, d.y, lo, hi_x, lo, hi_y, radius);
     return DS_OK;
 }
 
@@ -87,7 +89,7 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
     }
     ds_status st = DS_OK;
     for (size_t i = 0; i < w->n && st == DS_OK; ++i)
-        st = ds_check_disk(w, i, radii ? radii[i] : w->radius, disks[i], err);
+        st = ds_check_disk(w, i, radii ? radii[i] : w->radius, 0.0, disks[i], err);
     if (st == DS_OK)
         st = check_overlaps(w, disks, radii, err);
     if (st != DS_OK) {
@@ -351,34 +353,30 @@ static ds_status mixture_world(ds_sim *sim, ds_state_error *err)
     return DS_OK;
 }
 
-/* Where a centre may be. Walls: inside the band a disk's radius from
- * them, less rounding; the time step turns a disk after it has moved, so
- * its centre may be past the band by what it moves in a step, and a
+/* How far past the band a radius from the walls a saved centre may be:
+ * rounding, and the time step turns a disk after it has moved, so its
+ * centre may be past the band by what it moves in a step, and a
  * collision in that step may send it out again once more: twice the
- * fastest disk's step. Periodic: inside the box. */
-static ds_status check_positions(const ds_sim *sim, ds_state_error *err)
+ * fastest disk's step. (A periodic box's centres are in the box: ds_wrap
+ * leaves every one in [0, box).) */
+static double past_the_walls(const ds_sim *sim)
 {
     const ds_world *w = &sim->world;
     const ds_disks *d = &sim->disks;
-    const int periodic = w->boundary == DS_PERIODIC;
     double past = 1e-9 * fmax(w->box, w->box_y);
-    if (!periodic && w->integrator == DS_TIME_STEP) {
+    if (w->boundary == DS_WALLS && w->integrator == DS_TIME_STEP) {
         double fastest = 0.0;
         for (size_t k = 0; k < d->n; ++k)
             fastest = fmax(fastest, hypot(d->vx[k], d->vy[k]));
         past += 2.0 * fastest * w->dt;
     }
-    for (size_t k = 0; k < d->n; ++k) {
-        const double radius = d->r ? d->r[k] : w->radius;
-        const double lo = periodic ? 0.0 : radius - past;
-        const double hi_x = periodic ? w->box : w->box - radius + past;
-        const double hi_y = periodic ? w->box_y : w->box_y - radius + past;
-        if (!(d->x[k] >= lo && d->x[k] <= hi_x && d->y[k] >= lo && d->y[k] <= hi_y))
-            return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
-    }
-    return DS_OK;
+    return past;
 }
 
+/* The disks in their slots: each generation index once, radii and masses
+ * numbers > 0, and every disk one ds_set would take (finite, no faster
+ * than DS_VELOCITY_MAX, in the box up to past_the_walls): the same check,
+ * so a forged file cannot start a run no caller could. */
 static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_state_error *err)
 {
     const ds_world *w = &sim->world;
@@ -403,14 +401,17 @@ static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_state_erro
         if (!(radius > 0.0) || !isfinite(radius) || (d->m && !(d->m[k] > 0.0 && isfinite(d->m[k]))))
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu's radius or mass is no number > 0",
                                    k);
-        if (!isfinite(d->x[k]) || !isfinite(d->y[k]) || !isfinite(d->vx[k]) ||
-            !isfinite(d->vy[k]) || !(fabs(d->vx[k]) < 1e300 && fabs(d->vy[k]) < 1e300) ||
-            d->id[k] >= d->n || d->slot[d->id[k]] != UINT32_MAX)
+        if (d->id[k] >= d->n || d->slot[d->id[k]] != UINT32_MAX)
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
         d->slot[d->id[k]] = (uint32_t)k; /* seen */
     }
-    const ds_status st = check_positions(sim, err);
-    return st != DS_OK ? st : mixture_world(sim, err);
+    const double past = past_the_walls(sim);
+    for (size_t k = 0; k < d->n; ++k) {
+        const ds_disk disk = {d->x[k], d->y[k], d->vx[k], d->vy[k]};
+        if (ds_check_disk(w, d->id[k], d->r ? d->r[k] : w->radius, past, disk, err) != DS_OK)
+            return DS_ERR_FORMAT;
+    }
+    return mixture_world(sim, err);
 }
 
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err)
