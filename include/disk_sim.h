@@ -466,9 +466,16 @@ ds_status ds_save_state(const ds_sim *sim, FILE *out);
 /* A simulation from a checkpoint of len bytes: on DS_OK *out owns it.
  * A truncated, corrupted, foreign or future-version checkpoint is
  * DS_ERR_FORMAT with the reason in err (if not NULL), never a crash;
- * DS_ERR_NOMEM without memory for it. */
+ * so is one (its checksum forged) with a disk ds_set would refuse: not
+ * finite, a velocity component beyond 1e12, outside the box (with
+ * walls, up to what a saved run may be past the band a radius from
+ * them: 1e-9 of the box, and with the time step two steps of its
+ * fastest disk). DS_ERR_NOMEM without memory for it. */
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err);
-/* The same from a file read to its end (DS_ERR_IO if reading fails). */
+/* The same from a stream, read as far as its header announces and one
+ * byte more (DS_ERR_IO if reading fails). Memory grows with the bytes
+ * read, so a length beyond the end of the file is DS_ERR_FORMAT
+ * ("truncated"), whatever it announces. */
 ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err);
 
 /* The seed's timing measure, summed over all steps. DS_TIME_STEP: seconds

@@ -344,6 +344,37 @@ static void test_a_forged_disk_is_refused_as_ds_set_refuses_it(void **state)
         }
 }
 
+/* A length field that announces more than the file holds is a truncated
+ * checkpoint (DS_ERR_FORMAT, as ds_parse_state says), not a lack of
+ * memory: the loader reads in chunks up to what the header announces, so
+ * its memory follows the bytes present (2^42 was allocated first, and
+ * AddressSanitizer aborted on it). */
+static void test_a_length_field_past_the_file_is_a_truncated_checkpoint(void **state)
+{
+    (void)state;
+    const combination c = {DS_TIME_STEP, DS_SAP, DS_WALLS};
+    ds_sim *a = make(&c);
+    size_t len = 0;
+    uint8_t *buf = saved(a, &len);
+    const uint64_t lengths[] = {(uint64_t)1 << 42, (uint64_t)1 << 33, (uint64_t)len};
+    for (size_t k = 0; k < sizeof lengths / sizeof lengths[0]; ++k) {
+        for (int b = 0; b < 8; ++b)
+            buf[32 + b] = (uint8_t)(lengths[k] >> (8 * b));
+        FILE *f = tmpfile();
+        assert_non_null(f);
+        assert_int_equal(fwrite(buf, 1, len, f), len);
+        rewind(f);
+        ds_sim *b = (ds_sim *)1;
+        ds_state_error why;
+        assert_int_equal(ds_load_state(f, &b, &why), DS_ERR_FORMAT);
+        assert_null(b);
+        assert_non_null(strstr(why.message, "truncated"));
+        fclose(f);
+    }
+    free(buf);
+    ds_destroy(a);
+}
+
 /* A stream without end (/dev/zero) is read as far as a header could be,
  * not to its end: refused at once, no memory grown for ever. */
 static void test_a_stream_without_end_is_refused_at_once(void **state)
@@ -383,6 +414,7 @@ int main(void)
         cmocka_unit_test(test_a_bad_checkpoint_is_refused_with_a_reason),
         cmocka_unit_test(test_forged_checkpoints_never_crash_the_loader),
         cmocka_unit_test(test_a_forged_disk_is_refused_as_ds_set_refuses_it),
+        cmocka_unit_test(test_a_length_field_past_the_file_is_a_truncated_checkpoint),
         cmocka_unit_test(test_a_stream_without_end_is_refused_at_once),
         cmocka_unit_test(test_null_arguments_are_refused),
     };

@@ -478,6 +478,36 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     return DS_OK;
 }
 
+/* The rest of a stream after the len bytes of head, up to want bytes in
+ * all, into a buffer that grows (doubling) as the bytes arrive: a length
+ * field forged to 2^42 costs what the stream holds, not what it says. */
+static ds_status read_up_to(FILE *in, const uint8_t *head, size_t len, size_t want, uint8_t **out,
+                            size_t *got)
+{
+    size_t cap = want < ((size_t)1 << 16) ? want : (size_t)1 << 16;
+    cap = cap > len ? cap : len;
+    uint8_t *buf = malloc(cap ? cap : 1);
+    if (!buf)
+        return DS_ERR_NOMEM;
+    memcpy(buf, head, len);
+    for (;;) {
+        len += fread(buf + len, 1, cap - len, in);
+        if (len < cap || cap >= want)
+            break; /* the stream ended, or all that was wanted is here */
+        const size_t next = cap > want / 2 ? want : 2 * cap;
+        uint8_t *more = realloc(buf, next);
+        if (!more) {
+            free(buf);
+            return DS_ERR_NOMEM;
+        }
+        buf = more;
+        cap = next;
+    }
+    *out = buf;
+    *got = len;
+    return DS_OK;
+}
+
 ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err)
 {
     if (err)
@@ -502,12 +532,9 @@ ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err)
                                    (unsigned long long)payload);
         total = HEADER_BYTES + (size_t)payload + CHECKSUM_BYTES;
     }
-    uint8_t *buf = malloc(total + 1);
-    if (!buf)
+    uint8_t *buf = NULL;
+    if (read_up_to(in, head, len, total > len ? total + 1 : len, &buf, &len) != DS_OK)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to read the state");
-    memcpy(buf, head, len);
-    if (total > len)
-        len += fread(buf + len, 1, total + 1 - len, in);
     if (ferror(in)) {
         free(buf);
         return ds_state_refuse(err, DS_ERR_IO, "the state could not be read");
