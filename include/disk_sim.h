@@ -441,10 +441,12 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
  * the time and step count, every disk's position and velocity to the bit
  * (in the order the broad phase keeps them), the observables'
  * accumulators (wall impulse and count, virial, collision and test
- * counts, the collision timer) and the integrator's own state (the time
- * step's strips; the event-driven records, cells and clock). A loaded
+ * counts, the collision timer, the pressure tensor's parts of
+ * ds_stress_integral) and the integrator's own state (the time step's
+ * strips; the event-driven records, cells and clock). A loaded
  * simulation goes on bit for bit as the saved one would have, for both
- * integrators, both boundaries and every broad phase.
+ * integrators, both boundaries and every broad phase; its area fraction
+ * is the same double.
  *
  * The format (docs/library.md): the 8 bytes "DSIMSTAT", the format
  * version (32 bits, DS_STATE_FORMAT_VERSION), a byte order mark
@@ -452,8 +454,10 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
  * text), the length of the payload (64 bits), the payload, and an FNV-1a
  * 64-bit checksum of all that precedes it. Every integer and double (by
  * its IEEE 754 bits) is little-endian whatever the machine, so a file
- * moves between machines. */
-#define DS_STATE_FORMAT_VERSION 1
+ * moves between machines. This library writes version 2 and reads 1 and
+ * 2; version 1 lacks the stress integral's parts (a run loaded from it
+ * starts ds_stress_integral at 0). */
+#define DS_STATE_FORMAT_VERSION 2
 
 /* Bytes ds_format_state writes for sim (0 for NULL). */
 size_t ds_state_size(const ds_sim *sim);
@@ -536,8 +540,9 @@ double ds_compressibility(const ds_sim *sim);
  * discarded. */
 void ds_reset_observables(ds_sim *sim);
 /* The time integral of the pressure tensor times the area since
- * ds_create or ds_load (ds_reset_observables leaves it), components
- * s[0] xx, s[1] yy, s[2] xy:
+ * ds_create (ds_reset_observables leaves it; a checkpoint carries it,
+ * and one of format version 1, which did not, starts it at 0 at the
+ * load), components s[0] xx, s[1] yy, s[2] xy:
  *   s_ab = int sum_i m_i v_i,a v_i,b dt + sum over collisions of
  *          (r_i - r_j)_a dp_i,b,
  * the kinetic part integrated exactly between velocity changes (with
@@ -549,6 +554,9 @@ void ds_reset_observables(ds_sim *sim);
  * creation. Its increments are the Helfand moments of the shear
  * viscosity: eta = lim <(s_xy(t0 + t) - s_xy(t0))^2> / (2 A kT t), and
  * the same with (s_xx - s_yy) / 2 (observe/observables.c says why).
+ * Each ds_run sums the kinetic tensor afresh from the disks (so that
+ * whatever set them between runs is in it): runs split into other
+ * ds_run calls agree to rounding, the same calls to the bit.
  * DS_ERR_ARG if sim or s is NULL. */
 ds_status ds_stress_integral(const ds_sim *sim, double s[3]);
 

@@ -135,7 +135,11 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
 /* ------------------------------------------------------------------ */
 
 #define MAGIC "DSIMSTAT"
-#define FORMAT_VERSION 1u
+/* Version 2 added the pressure tensor's parts of the tally (after the
+ * collision timer); a file of version 1 is read with them 0: its stress
+ * integral starts at the load. */
+#define FORMAT_VERSION ((uint32_t)DS_STATE_FORMAT_VERSION)
+#define OLDEST_FORMAT_VERSION 1u
 #define BYTE_ORDER_MARK 0x01020304u
 #define HEADER_BYTES 40 /* magic, version, byte order, library version, payload length */
 #define CHECKSUM_BYTES 8
@@ -149,6 +153,37 @@ static uint64_t checksum(const uint8_t *p, size_t len)
         h *= 1099511628211ull;
     }
     return h;
+}
+
+/* The pressure tensor's parts (ds_stress_integral), since version 2. */
+static void put_stress(const ds_tally *t, ds_writer *w)
+{
+    for (int c = 0; c < 3; ++c)
+        ds_put_f64(w, t->stress_virial[c]);
+    for (int c = 0; c < 3; ++c)
+        ds_put_f64(w, t->kinetic[c]);
+    for (int c = 0; c < 3; ++c)
+        ds_put_f64(w, t->kinetic_integral[c]);
+    ds_put_f64(w, t->stress_clock);
+}
+
+static int get_stress(ds_reader *r, ds_tally *t)
+{
+    int finite = 1;
+    for (int c = 0; c < 3; ++c) {
+        t->stress_virial[c] = ds_get_f64(r);
+        finite &= isfinite(t->stress_virial[c]);
+    }
+    for (int c = 0; c < 3; ++c) {
+        t->kinetic[c] = ds_get_f64(r);
+        finite &= isfinite(t->kinetic[c]);
+    }
+    for (int c = 0; c < 3; ++c) {
+        t->kinetic_integral[c] = ds_get_f64(r);
+        finite &= isfinite(t->kinetic_integral[c]);
+    }
+    t->stress_clock = ds_get_f64(r);
+    return finite && isfinite(t->stress_clock);
 }
 
 static void put_payload(const ds_sim *sim, ds_writer *w)
@@ -177,6 +212,7 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
     ds_put_f64(w, sim->tally.wall_reach);
     ds_put_f64(w, sim->tally.virial);
     ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
+    put_stress(&sim->tally, w);
     const ds_disks *d = &sim->disks;
     for (size_t k = 0; k < d->n; ++k) {
         ds_put_f64(w, d->x[k]);
@@ -261,8 +297,9 @@ ds_status ds_save_state(const ds_sim *sim, FILE *out)
 }
 
 /* The frame of the file: magic, version, byte order, length, checksum.
- * On DS_OK, *payload spans the payload. */
-static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, ds_state_error *err)
+ * On DS_OK, *payload spans the payload and *version is the format's. */
+static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload,
+                             uint32_t *version_out, ds_state_error *err)
 {
     if (len < 8 || memcmp(p, MAGIC, 8) != 0)
         return ds_state_refuse(err, DS_ERR_FORMAT, "not a disksim state file (no %s at its start)",
@@ -281,11 +318,12 @@ static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, d
                                "the byte order mark is 0x%08x, not 0x%08x: not a state this "
                                "library wrote",
                                (unsigned)mark, BYTE_ORDER_MARK);
-    if (version != FORMAT_VERSION)
+    if (version < OLDEST_FORMAT_VERSION || version > FORMAT_VERSION)
         return ds_state_refuse(err, DS_ERR_FORMAT,
                                "format version %u (written by disksim %s); this library (%s) "
-                               "reads version %u",
-                               (unsigned)version, made_by, DS_VERSION_STRING, FORMAT_VERSION);
+                               "reads versions %u to %u",
+                               (unsigned)version, made_by, DS_VERSION_STRING, OLDEST_FORMAT_VERSION,
+                               FORMAT_VERSION);
     if (bytes > len - HEADER_BYTES || len - HEADER_BYTES - bytes < CHECKSUM_BYTES)
         return ds_state_refuse(err, DS_ERR_FORMAT,
                                "truncated: %zu bytes, where the header announces %llu", len,
@@ -300,6 +338,7 @@ static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, d
     payload->at = p + HEADER_BYTES;
     payload->end = p + HEADER_BYTES + bytes;
     payload->failed = 0;
+    *version_out = version;
     return DS_OK;
 }
 
@@ -424,7 +463,8 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     if (!data && len)
         return ds_state_refuse(err, DS_ERR_ARG, "no data (NULL)");
     ds_reader r;
-    ds_status st = check_frame(data, len, &r, err);
+    uint32_t version = 0;
+    ds_status st = check_frame(data, len, &r, &version, err);
     ds_world w;
     if (st == DS_OK)
         st = read_world(&r, &w, err);
@@ -456,10 +496,12 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     sim->tally.virial = ds_get_f64(&r);
     ds_timer_reset(&sim->collision_timer);
     sim->collision_timer.total = ds_get_f64(&r);
-    if (st == DS_OK && (r.failed || sim->observables_since_step > sim->steps ||
-                        !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.wall_reach) ||
-                        !isfinite(sim->tally.virial) || !(sim->collision_timer.total >= 0.0) ||
-                        !((double)sim->steps * w.dt < 1e300)))
+    const int stress = version < 2 || get_stress(&r, &sim->tally); /* else 0, from calloc */
+    if (st == DS_OK &&
+        (r.failed || sim->observables_since_step > sim->steps ||
+         !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.wall_reach) ||
+         !isfinite(sim->tally.virial) || !stress || !(sim->collision_timer.total >= 0.0) ||
+         !((double)sim->steps * w.dt < 1e300)))
         st = ds_state_refuse(err, DS_ERR_FORMAT, "its clock or tally is not a run's");
     for (size_t k = 0; st == DS_OK && k < w.n; ++k)
         sim->disks.slot[k] = UINT32_MAX;
