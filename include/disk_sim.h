@@ -116,8 +116,10 @@ typedef enum ds_placement {
     /* Random sequential: the seed's, up to area fraction 0.54. In a
      * periodic box (with more than one disk) the mean velocity is taken
      * out and the speeds scaled back to the same kinetic energy,
-     * n speed^2 / 2, so the centre of mass stands still; with walls the
-     * velocities are the seed's. */
+     * n speed^2 / 2, so the centre of mass stands still, at any speed
+     * and masses (if rounding leaves every disk the same velocity, as it
+     * can below the smallest normal speed, 2.2e-308, they start at
+     * rest); with walls the velocities are the seed's. */
     DS_RANDOM = 0,
     /* A triangular lattice of m rows of c sites (c m >= n, empty sites
      * spread evenly), the (c, m) whose closest sites are farthest apart;
@@ -269,14 +271,15 @@ typedef struct ds_mixture {
     size_t species;          /* kinds, or 0 for radii per disk */
     const ds_species *kinds; /* species entries */
     const double *radii;     /* per disk: n radii, in generation order */
-    const double *masses;    /* per disk: n masses, or NULL for the rule */
+    const double *masses;    /* per disk: n masses, or NULL for the rule (species: NULL) */
     ds_mass_rule mass_rule;  /* for masses not given (0 or NULL) */
 } ds_mixture;
 
 /* ds_diagnose_params, ds_memory_needed and ds_create for a mixture; a
  * NULL mixture is ds_params alone. A refusal of the mixture names the
  * field "mixture" (a count that does not add up, a radius or mass that is
- * not a positive finite number, an unknown rule) or a field of params. */
+ * not a positive finite number, an unknown rule, species with radii or
+ * masses per disk) or a field of params. */
 ds_status ds_diagnose_mixture(const ds_params *params, const ds_mixture *mixture,
                               unsigned *warnings, ds_params_error *err);
 ds_status ds_memory_needed_mixture(const ds_params *params, const ds_mixture *mixture,
@@ -448,10 +451,12 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
  * the time and step count, every disk's position and velocity to the bit
  * (in the order the broad phase keeps them), the observables'
  * accumulators (wall impulse and count, virial, collision and test
- * counts, the collision timer) and the integrator's own state (the time
- * step's strips; the event-driven records, cells and clock). A loaded
+ * counts, the collision timer, the pressure tensor's parts of
+ * ds_stress_integral) and the integrator's own state (the time step's
+ * strips; the event-driven records, cells and clock). A loaded
  * simulation goes on bit for bit as the saved one would have, for both
- * integrators, both boundaries and every broad phase.
+ * integrators, both boundaries and every broad phase; its area fraction
+ * is the same double.
  *
  * The format (docs/library.md): the 8 bytes "DSIMSTAT", the format
  * version (32 bits, DS_STATE_FORMAT_VERSION), a byte order mark
@@ -459,8 +464,10 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
  * text), the length of the payload (64 bits), the payload, and an FNV-1a
  * 64-bit checksum of all that precedes it. Every integer and double (by
  * its IEEE 754 bits) is little-endian whatever the machine, so a file
- * moves between machines. */
-#define DS_STATE_FORMAT_VERSION 1
+ * moves between machines. This library writes version 2 and reads 1 and
+ * 2; version 1 lacks the stress integral's parts (a run loaded from it
+ * starts ds_stress_integral at 0). */
+#define DS_STATE_FORMAT_VERSION 2
 
 /* Bytes ds_format_state writes for sim (0 for NULL). */
 size_t ds_state_size(const ds_sim *sim);
@@ -473,9 +480,16 @@ ds_status ds_save_state(const ds_sim *sim, FILE *out);
 /* A simulation from a checkpoint of len bytes: on DS_OK *out owns it.
  * A truncated, corrupted, foreign or future-version checkpoint is
  * DS_ERR_FORMAT with the reason in err (if not NULL), never a crash;
- * DS_ERR_NOMEM without memory for it. */
+ * so is one (its checksum forged) with a disk ds_set would refuse: not
+ * finite, a velocity component beyond 1e12, outside the box (with
+ * walls, up to what a saved run may be past the band a radius from
+ * them: 1e-9 of the box, and with the time step two steps of its
+ * fastest disk). DS_ERR_NOMEM without memory for it. */
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err);
-/* The same from a file read to its end (DS_ERR_IO if reading fails). */
+/* The same from a stream, read as far as its header announces and one
+ * byte more (DS_ERR_IO if reading fails). Memory grows with the bytes
+ * read, so a length beyond the end of the file is DS_ERR_FORMAT
+ * ("truncated"), whatever it announces. */
 ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err);
 
 /* The seed's timing measure, summed over all steps. DS_TIME_STEP: seconds
@@ -536,8 +550,9 @@ double ds_compressibility(const ds_sim *sim);
  * discarded. */
 void ds_reset_observables(ds_sim *sim);
 /* The time integral of the pressure tensor times the area since
- * ds_create or ds_load (ds_reset_observables leaves it), components
- * s[0] xx, s[1] yy, s[2] xy:
+ * ds_create (ds_reset_observables leaves it; a checkpoint carries it,
+ * and one of format version 1, which did not, starts it at 0 at the
+ * load), components s[0] xx, s[1] yy, s[2] xy:
  *   s_ab = int sum_i m_i v_i,a v_i,b dt + sum over collisions of
  *          (r_i - r_j)_a dp_i,b,
  * the kinetic part integrated exactly between velocity changes (with
@@ -549,6 +564,9 @@ void ds_reset_observables(ds_sim *sim);
  * creation. Its increments are the Helfand moments of the shear
  * viscosity: eta = lim <(s_xy(t0 + t) - s_xy(t0))^2> / (2 A kT t), and
  * the same with (s_xx - s_yy) / 2 (observe/observables.c says why).
+ * Each ds_run sums the kinetic tensor afresh from the disks (so that
+ * whatever set them between runs is in it): runs split into other
+ * ds_run calls agree to rounding, the same calls to the bit.
  * DS_ERR_ARG if sim or s is NULL. */
 ds_status ds_stress_integral(const ds_sim *sim, double s[3]);
 

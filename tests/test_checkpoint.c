@@ -71,6 +71,20 @@ static void assert_same_run(const ds_sim *a, const ds_sim *b)
     const double va = ds_virial_pressure(a), vb = ds_virial_pressure(b);
     assert_memory_equal(&pa, &pb, sizeof pa);
     assert_memory_equal(&va, &vb, sizeof va);
+    const double ea = ds_area_fraction(a), eb = ds_area_fraction(b);
+    assert_memory_equal(&ea, &eb, sizeof ea);
+}
+
+/* The stress integral, to the bit, of two runs made of the same ds_run
+ * calls: each call sums the kinetic tensor afresh from the disks (so
+ * that whatever set them between runs is in it), and the rounding of
+ * that sum differs from the one its collisions carried. */
+static void assert_same_stress(const ds_sim *a, const ds_sim *b)
+{
+    double sa[3], sb[3];
+    assert_int_equal(ds_stress_integral(a, sa), DS_OK);
+    assert_int_equal(ds_stress_integral(b, sb), DS_OK);
+    assert_memory_equal(sa, sb, sizeof sa);
 }
 
 static void test_a_loaded_run_goes_on_bit_for_bit(void **state)
@@ -230,9 +244,12 @@ static void test_a_bad_checkpoint_is_refused_with_a_reason(void **state)
     memcpy(bad, "NOTSTATE", 8);
     assert_refused(bad, len, "not a disksim state");
     memcpy(bad, buf, len);
-    bad[8] = 2;
+    bad[8] = DS_STATE_FORMAT_VERSION + 1;
     fix_checksum(bad, len);
-    assert_refused(bad, len, "format version 2");
+    assert_refused(bad, len, "format version 3");
+    bad[8] = 0;
+    fix_checksum(bad, len);
+    assert_refused(bad, len, "format version 0");
     memcpy(bad, buf, len);
     memset(bad + len, 0, 16);
     assert_refused(bad, len + 16, "after the end");
@@ -280,6 +297,265 @@ static void test_forged_checkpoints_never_crash_the_loader(void **state)
     }
 }
 
+/* The time integral of the pressure tensor (the Helfand moments of the
+ * viscosity) goes on across a checkpoint: saved mid-run, it is the
+ * straight run's to the bit, then and after more steps, with both
+ * integrators and both boundaries. */
+static void test_a_loaded_run_goes_on_with_the_stress_integral(void **state)
+{
+    (void)state;
+    for (int integrator = DS_TIME_STEP; integrator <= DS_EVENT_DRIVEN; ++integrator)
+        for (int boundary = DS_WALLS; boundary <= DS_PERIODIC; ++boundary) {
+            const combination c = {(ds_integrator)integrator, DS_AUTO, (ds_boundary)boundary};
+            ds_sim *a = make(&c);
+            ds_run(a, 100);
+            size_t len = 0;
+            uint8_t *buf = saved(a, &len);
+            ds_sim *b = NULL;
+            assert_int_equal(ds_parse_state(buf, len, &b, NULL), DS_OK);
+            double s[3];
+            assert_int_equal(ds_stress_integral(b, s), DS_OK);
+            assert_true(s[0] > 0.0 && s[1] > 0.0); /* a run's, not a fresh start */
+            assert_same_run(a, b);
+            assert_same_stress(a, b);
+            ds_run(a, 150);
+            ds_run(b, 150);
+            assert_same_run(a, b);
+            assert_same_stress(a, b);
+            free(buf);
+            ds_destroy(a);
+            ds_destroy(b);
+        }
+}
+
+/* A mixture's area fraction is the same double after a checkpoint: the
+ * load used to sum the disks' areas in the order of the slots (sorted by
+ * x, or by cell), creation in generation order. Every broad phase, both
+ * boundaries, and a growing run (whose radii change every step). */
+static void test_a_mixture_keeps_its_area_fraction_to_the_bit(void **state)
+{
+    (void)state;
+    const ds_species kinds[] = {{300, 9.0, 0.0}, {300, 6.3, 0.0}};
+    const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
+    for (size_t c = 0; c < sizeof ALL / sizeof ALL[0]; ++c) {
+        ds_params p = ds_default_params(600, 9.0);
+        p.box_y = 850.0;
+        p.integrator = ALL[c].integrator;
+        p.broadphase = ALL[c].broadphase;
+        p.boundary = ALL[c].boundary;
+        p.seed = 31;
+        ds_sim *a = NULL;
+        assert_int_equal(ds_create_mixture(&p, &mixture, &a), DS_OK);
+        ds_run(a, 100);
+        const int growing = ALL[c].integrator == DS_EVENT_DRIVEN && ALL[c].boundary == DS_PERIODIC;
+        if (growing) {
+            assert_int_equal(ds_set_growth(a, 0.05, 0.0, 0.0), DS_OK);
+            ds_run(a, 20);
+        }
+        size_t len = 0;
+        uint8_t *buf = saved(a, &len);
+        ds_sim *b = NULL;
+        assert_int_equal(ds_parse_state(buf, len, &b, NULL), DS_OK);
+        assert_same_run(a, b); /* the area fraction among the rest */
+        assert_same_stress(a, b);
+        ds_run(a, 50);
+        ds_run(b, 50);
+        assert_same_run(a, b);
+        assert_same_stress(a, b);
+        free(buf);
+        ds_destroy(a);
+        ds_destroy(b);
+    }
+}
+
+/* The bytes of a double, to find a saved value in a checkpoint. */
+static size_t replace_double(uint8_t *buf, size_t len, double was, double now)
+{
+    uint8_t from[8], to[8];
+    memcpy(from, &was, 8); /* the file is little-endian, as this test's machines */
+    memcpy(to, &now, 8);
+    size_t found = 0;
+    for (size_t at = 40; at + 8 <= len - 8; ++at)
+        if (memcmp(buf + at, from, 8) == 0) {
+            memcpy(buf + at, to, 8);
+            ++found;
+        }
+    return found;
+}
+
+/* A loader checks every disk as ds_set does (finite, no velocity
+ * component beyond 1e12, in the box): a forged checkpoint (its checksum
+ * made again) with a disk too fast was loaded by the time step, which
+ * then ran a disk out of the walls; a periodic centre at box itself, which
+ * ds_set refuses, was taken too. Both integrators; the limit itself loads. */
+static void test_a_forged_disk_is_refused_as_ds_set_refuses_it(void **state)
+{
+    (void)state;
+    for (int integrator = DS_TIME_STEP; integrator <= DS_EVENT_DRIVEN; ++integrator)
+        for (int boundary = DS_WALLS; boundary <= DS_PERIODIC; ++boundary) {
+            const combination c = {(ds_integrator)integrator, DS_AUTO, (ds_boundary)boundary};
+            ds_sim *a = make(&c);
+            ds_run(a, 20);
+            const ds_disk d = ds_get(a, 7);
+            size_t len = 0;
+            uint8_t *buf = saved(a, &len);
+            uint8_t *bad = malloc(len);
+            assert_non_null(bad);
+            const double too_fast[] = {1e77, 1.5e12, -1.0000000000000002e12};
+            for (size_t k = 0; k < sizeof too_fast / sizeof too_fast[0]; ++k) {
+                memcpy(bad, buf, len);
+                /* The arrays' copy, and the event-driven record's. */
+                assert_true(replace_double(bad, len, d.vx, too_fast[k]) >= 1);
+                fix_checksum(bad, len);
+                assert_refused(bad, len, "beyond 1e12");
+            }
+            if (boundary == DS_PERIODIC && integrator == DS_TIME_STEP) {
+                memcpy(bad, buf, len);
+                assert_int_equal(replace_double(bad, len, d.x, ds_box(a)), 1);
+                fix_checksum(bad, len);
+                assert_refused(bad, len, "outside the periodic box");
+            }
+            /* ds_set's own limit is a state a run may have. */
+            ds_disk fast = d;
+            fast.vx = d.vx < 0.0 ? -1e12 : 1e12;
+            if (integrator == DS_TIME_STEP) {
+                assert_int_equal(ds_set(a, 7, fast), DS_OK);
+                free(buf);
+                buf = saved(a, &len);
+                ds_sim *b = NULL;
+                assert_int_equal(ds_parse_state(buf, len, &b, NULL), DS_OK);
+                ds_destroy(b);
+            }
+            free(bad);
+            free(buf);
+            ds_destroy(a);
+        }
+}
+
+/* A length field that announces more than the file holds is a truncated
+ * checkpoint (DS_ERR_FORMAT, as ds_parse_state says), not a lack of
+ * memory: the loader reads in chunks up to what the header announces, so
+ * its memory follows the bytes present (2^42 was allocated first, and
+ * AddressSanitizer aborted on it). */
+static void test_a_length_field_past_the_file_is_a_truncated_checkpoint(void **state)
+{
+    (void)state;
+    const combination c = {DS_TIME_STEP, DS_SAP, DS_WALLS};
+    ds_sim *a = make(&c);
+    size_t len = 0;
+    uint8_t *buf = saved(a, &len);
+    const uint64_t lengths[] = {(uint64_t)1 << 42, (uint64_t)1 << 33, (uint64_t)len};
+    for (size_t k = 0; k < sizeof lengths / sizeof lengths[0]; ++k) {
+        for (int b = 0; b < 8; ++b)
+            buf[32 + b] = (uint8_t)(lengths[k] >> (8 * b));
+        FILE *f = tmpfile();
+        assert_non_null(f);
+        assert_int_equal(fwrite(buf, 1, len, f), len);
+        rewind(f);
+        ds_sim *b = (ds_sim *)1;
+        ds_state_error why;
+        assert_int_equal(ds_load_state(f, &b, &why), DS_ERR_FORMAT);
+        assert_null(b);
+        assert_non_null(strstr(why.message, "truncated"));
+        fclose(f);
+    }
+    free(buf);
+    ds_destroy(a);
+}
+
+/* The payload of format version 1: version 2's without the pressure
+ * tensor's parts (10 doubles after the collision timer, 188 bytes into
+ * the file). */
+static size_t as_version_1(uint8_t *buf, size_t len)
+{
+    const size_t at = 188, cut = 80;
+    memmove(buf + at, buf + at + cut, len - at - cut);
+    len -= cut;
+    buf[8] = 1;
+    const uint64_t payload = len - 48;
+    for (int b = 0; b < 8; ++b)
+        buf[32 + b] = (uint8_t)(payload >> (8 * b));
+    fix_checksum(buf, len);
+    return len;
+}
+
+/* A checkpoint of format version 1 still loads and goes on bit for bit,
+ * its stress integral starting at 0 (it did not carry it): one made by
+ * hand from each combination, and one written by disksim 2.1.0 (main
+ * before version 2: tests/checkpoint-v1.state, a mixture of 40 disks,
+ * event-driven, periodic, seed 5, after 60 steps). */
+static void test_a_version_1_checkpoint_loads_with_the_stress_integral_at_zero(void **state)
+{
+    (void)state;
+    for (size_t c = 0; c < sizeof ALL / sizeof ALL[0]; ++c) {
+        ds_sim *a = make(&ALL[c]);
+        ds_run(a, 50);
+        size_t len = 0;
+        uint8_t *buf = saved(a, &len);
+        len = as_version_1(buf, len);
+        ds_sim *b = NULL;
+        ds_state_error why;
+        if (ds_parse_state(buf, len, &b, &why) != DS_OK)
+            fail_msg("%s", why.message);
+        double s[3];
+        assert_int_equal(ds_stress_integral(b, s), DS_OK);
+        assert_true(s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0);
+        ds_run(a, 100);
+        ds_run(b, 100);
+        assert_int_equal(ds_collision_count(a), ds_collision_count(b));
+        ds_disk *da = malloc(600 * sizeof *da), *db = malloc(600 * sizeof *db);
+        assert_non_null(da);
+        assert_non_null(db);
+        assert_int_equal(ds_get_all(a, da), DS_OK);
+        assert_int_equal(ds_get_all(b, db), DS_OK);
+        assert_memory_equal(da, db, 600 * sizeof *da);
+        free(da);
+        free(db);
+        free(buf);
+        ds_destroy(a);
+        ds_destroy(b);
+    }
+    /* The file of the old library against the same run made now. */
+    FILE *f = fopen("tests/checkpoint-v1.state", "rb");
+    assert_non_null(f);
+    ds_sim *old = NULL;
+    ds_state_error why;
+    if (ds_load_state(f, &old, &why) != DS_OK)
+        fail_msg("%s", why.message);
+    fclose(f);
+    ds_params p = ds_default_params(40, 20.0);
+    p.integrator = DS_EVENT_DRIVEN;
+    p.boundary = DS_PERIODIC;
+    p.box = 600.0;
+    p.seed = 5;
+    const ds_species kinds[] = {{25, 20.0, 0.0}, {15, 13.0, 0.0}};
+    const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
+    ds_sim *now = NULL;
+    assert_int_equal(ds_create_mixture(&p, &mixture, &now), DS_OK);
+    ds_run(now, 60);
+    double s[3];
+    assert_int_equal(ds_stress_integral(old, s), DS_OK);
+    assert_true(s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0);
+    for (int part = 0; part < 2; ++part) {
+        ds_disk da[40], db[40];
+        int32_t ia[80], ib[80];
+        assert_int_equal(ds_get_all(now, da), DS_OK);
+        assert_int_equal(ds_get_all(old, db), DS_OK);
+        assert_memory_equal(da, db, sizeof da);
+        assert_int_equal(ds_get_images(now, ia), DS_OK);
+        assert_int_equal(ds_get_images(old, ib), DS_OK);
+        assert_memory_equal(ia, ib, sizeof ia);
+        assert_int_equal(ds_steps(now), ds_steps(old));
+        assert_int_equal(ds_collision_count(now), ds_collision_count(old));
+        const double ea = ds_area_fraction(now), eb = ds_area_fraction(old);
+        assert_memory_equal(&ea, &eb, sizeof ea);
+        ds_run(now, 200);
+        ds_run(old, 200);
+    }
+    ds_destroy(old);
+    ds_destroy(now);
+}
+
 /* A stream without end (/dev/zero) is read as far as a header could be,
  * not to its end: refused at once, no memory grown for ever. */
 static void test_a_stream_without_end_is_refused_at_once(void **state)
@@ -318,6 +594,11 @@ int main(void)
         cmocka_unit_test(test_a_state_set_by_hand_is_saved_exactly),
         cmocka_unit_test(test_a_bad_checkpoint_is_refused_with_a_reason),
         cmocka_unit_test(test_forged_checkpoints_never_crash_the_loader),
+        cmocka_unit_test(test_a_loaded_run_goes_on_with_the_stress_integral),
+        cmocka_unit_test(test_a_mixture_keeps_its_area_fraction_to_the_bit),
+        cmocka_unit_test(test_a_forged_disk_is_refused_as_ds_set_refuses_it),
+        cmocka_unit_test(test_a_length_field_past_the_file_is_a_truncated_checkpoint),
+        cmocka_unit_test(test_a_version_1_checkpoint_loads_with_the_stress_integral_at_zero),
         cmocka_unit_test(test_a_stream_without_end_is_refused_at_once),
         cmocka_unit_test(test_null_arguments_are_refused),
     };

@@ -723,6 +723,10 @@ static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **stat
     restart_matches_one_run("--periodic");
     restart_matches_one_run("--integrator event");
     restart_matches_one_run("--integrator event --periodic");
+    /* A mixture's area fraction column too (a load summed the areas in
+     * the slots' order, and its last bits moved). */
+    restart_matches_one_run("--mixture 1.4:0.5");
+    restart_matches_one_run("--mixture 1.4:0.5 --integrator event --periodic");
 }
 
 /* Starts disks in dir with the given arguments and sends sig once

@@ -320,6 +320,10 @@ static void test_one_kind_is_the_plain_simulation_to_the_bit(void **state)
         assert_int_equal(la, lb);
         assert_memory_equal(a, b, la);
         assert_true(ds_pressure(plain) == ds_pressure(mixed));
+        /* n pi R^2 as one product, not a sum of n terms (which differed
+         * in its last bits). */
+        const double eta_plain = ds_area_fraction(plain), eta_mixed = ds_area_fraction(mixed);
+        assert_memory_equal(&eta_plain, &eta_mixed, sizeof eta_plain);
         ds_destroy(plain);
         ds_destroy(mixed);
     }
@@ -380,6 +384,17 @@ static void test_a_bad_mixture_is_refused_with_its_reason(void **state)
     mix.mass_rule = DS_MASS_AREA;
     assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_OK);
     const double radii[10] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    /* Masses per disk beside species were ignored without a word: each
+     * species gives its mass. */
+    const double masses[10] = {1, 1, 1, 1, 1, 2, 2, 2, 2, 2};
+    mix.masses = masses;
+    assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
+    assert_string_equal(why.field, "mixture");
+    assert_non_null(strstr(why.message, "masses per disk go with radii per disk"));
+    ds_sim *refused = (ds_sim *)1;
+    assert_int_equal(ds_create_mixture(&p, &mix, &refused), DS_ERR_ARG);
+    assert_null(refused);
+    mix.masses = NULL;
     mix.radii = radii; /* both forms */
     assert_int_equal(ds_diagnose_mixture(&p, &mix, NULL, &why), DS_ERR_ARG);
     ds_mixture per_disk = {0, NULL, radii, NULL, DS_MASS_EQUAL};

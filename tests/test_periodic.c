@@ -233,6 +233,70 @@ static void test_one_periodic_disk_keeps_its_speed(void **state)
     }
 }
 
+/* Every speed the header allows, (0, 1e9], gives a finite start. Taking
+ * out the centre of mass sums squared velocities: from about 1e-162 down
+ * speed^2 and the sum underflowed to 0, and 0 / 0 made every velocity
+ * NaN (the event-driven step then never returned); masses far from 1 did
+ * the same by overflow or underflow. Down to the smallest normal double
+ * the start is the ordinary one in units of the speed: momentum 0 and
+ * kinetic energy n speed^2 / 2 up to rounding (n terms, each within a
+ * few eps: 1e-12 is wide); below it (subnormal speeds, a few bits)
+ * finite velocities. Both placements, both integrators, and a step. */
+static void check_finite_start(const ds_params *p, const ds_mixture *mixture)
+{
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_create_mixture(p, mixture, &sim), DS_OK);
+    const size_t n = ds_count(sim);
+    ds_disk d[20];
+    assert_true(n <= 20);
+    assert_int_equal(ds_get_all(sim, d), DS_OK);
+    double k = 0.0, px = 0.0, py = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        assert_true(isfinite(d[i].vx) && isfinite(d[i].vy));
+        const double ux = d[i].vx / p->speed, uy = d[i].vy / p->speed;
+        k += ux * ux + uy * uy;
+        px += ux;
+        py += uy;
+    }
+    if (p->speed >= DBL_MIN) {
+        assert_true(fabs(k - (double)n) < 1e-12 * (double)n);
+        assert_true(fabs(px) < 1e-12 * (double)n && fabs(py) < 1e-12 * (double)n);
+    }
+    ds_run(sim, 10); /* returns */
+    assert_int_equal(ds_steps(sim), 10);
+    assert_int_equal(ds_get_all(sim, d), DS_OK);
+    for (size_t i = 0; i < n; ++i)
+        assert_true(isfinite(d[i].x) && isfinite(d[i].y) && isfinite(d[i].vx));
+    ds_destroy(sim);
+}
+
+static void test_every_allowed_speed_gives_a_finite_start(void **state)
+{
+    (void)state;
+    const double speeds[] = {
+        1e-150, 1e-170, 1e-200, 1e-300, DBL_MIN, 1e-310, 4.9406564584124654e-324};
+    for (int integ = DS_TIME_STEP; integ <= DS_EVENT_DRIVEN; ++integ)
+        for (int placement = DS_RANDOM; placement <= DS_LATTICE; ++placement) {
+            ds_params p = ds_default_params(20, 5.0);
+            p.boundary = DS_PERIODIC;
+            p.integrator = (ds_integrator)integ;
+            p.placement = (ds_placement)placement;
+            for (size_t k = 0; k < sizeof speeds / sizeof speeds[0]; ++k) {
+                p.speed = speeds[k];
+                check_finite_start(&p, NULL);
+            }
+            /* Heavy disks at the fastest speed (m v^2 = 1e318), light ones
+             * slow (1e-600). */
+            const ds_species heavy = {20, 5.0, 1e300}, light = {20, 5.0, 1e-300};
+            const ds_mixture heavy_ones = {1, &heavy, NULL, NULL, DS_MASS_EQUAL};
+            const ds_mixture light_ones = {1, &light, NULL, NULL, DS_MASS_EQUAL};
+            p.speed = 1e9;
+            check_finite_start(&p, &heavy_ones);
+            p.speed = 1e-150;
+            check_finite_start(&p, &light_ones);
+        }
+}
+
 /* ------------------------------------------------------------------ */
 /* Conservation and no overlap                                          */
 /* ------------------------------------------------------------------ */
@@ -538,6 +602,7 @@ int main(void)
         cmocka_unit_test(test_a_step_longer_than_a_side_keeps_positions_in_the_box),
         cmocka_unit_test(test_a_random_periodic_start_has_no_net_momentum),
         cmocka_unit_test(test_one_periodic_disk_keeps_its_speed),
+        cmocka_unit_test(test_every_allowed_speed_gives_a_finite_start),
         cmocka_unit_test(test_momentum_is_conserved_without_walls),
         cmocka_unit_test(test_no_pair_overlaps_in_a_dense_periodic_run),
         cmocka_unit_test(test_random_placement_fills_the_periodic_box_without_overlap),

@@ -101,6 +101,19 @@ def test_a_damaged_checkpoint_is_a_format_error_never_a_crash(tmp_path):
         restore(cls, data, dict(params, n=41))
 
 
+def test_a_length_field_beyond_the_file_is_a_format_error_not_no_memory(tmp_path):
+    # The payload's length (bytes 32..40) forged to 2^42: the file is
+    # truncated, which python.md says is a FormatError; the library used to
+    # allocate what the header announced first and report no memory.
+    s = disksim.Sim(40, 5)
+    s.save(tmp_path / "s.ckpt")
+    data = bytearray((tmp_path / "s.ckpt").read_bytes())
+    data[32:40] = (1 << 42).to_bytes(8, "little")
+    (tmp_path / "long.ckpt").write_bytes(bytes(data))
+    with pytest.raises(disksim.FormatError, match="truncated"):
+        disksim.load(tmp_path / "long.ckpt")
+
+
 @pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full")
 def test_a_checkpoint_that_cannot_be_written_is_a_file_error():
     with pytest.raises(disksim.FileError):

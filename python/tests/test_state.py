@@ -131,3 +131,14 @@ def test_unwrapped_is_the_position_with_walls():
     s = disksim.Sim(100, 5)
     s.run(300)
     assert np.array_equal(s.unwrapped, s.positions)
+
+
+@pytest.mark.parametrize("integrator", ["step", "event"])
+@pytest.mark.parametrize("speed", [1e-200, 5e-324])
+def test_any_allowed_speed_gives_finite_velocities(integrator, speed):
+    # Below ~1e-162 the centre of mass's sums underflowed and every
+    # velocity came out NaN (the event-driven step then never returned).
+    s = disksim.Sim(20, 5, speed=speed, boundary="periodic", integrator=integrator)
+    assert np.isfinite(s.velocities).all()
+    s.run(10)
+    assert s.steps == 10 and np.isfinite(s.positions).all()

@@ -32,6 +32,18 @@ typedef struct ds_world {
     uint64_t seed;
 } ds_world;
 
+/* The area n disks of radius r cover, n pi r^2, as one expression: the
+ * world of one kind of disk, and each term of a mixture's sum (n = 1). */
+static inline double ds_covered_by(double n, double r) { return n * DS_TWO_PI * 0.5 * r * r; }
+
+/* The world's radius_min, radius_max and covered from the disk arrays:
+ * for one kind (d->r NULL) its radius and ds_covered_by(n, radius); for
+ * a mixture the sum of its disks' areas in generation order (slot[]
+ * valid), whatever order the slots are in. Every part that sets them
+ * (creation, a checkpoint's load, growth) calls this, so an area
+ * fraction has the same bits whichever part computed it (core/world.c). */
+void ds_world_take_radii(ds_world *w, const ds_disks *d);
+
 /* What the integrators add to as they run, and the observables read. */
 typedef struct ds_tally {
     uint64_t collisions;   /* disk-disk collisions resolved */

@@ -183,19 +183,10 @@ void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t)
     const ds_growth *g = &e->growth;
     if (!g->base)
         return;
-    ds_world *w = &sim->world;
     const double f = factor_at(g, t);
-    double lo = INFINITY, hi = 0.0, covered = 0.0;
-    for (size_t k = 0; k < sim->disks.n; ++k) {
-        const double r = g->base[k] * f;
-        sim->disks.r[k] = r;
-        lo = fmin(lo, r);
-        hi = fmax(hi, r);
-        covered += DS_TWO_PI * 0.5 * r * r;
-    }
-    w->radius_min = lo;
-    w->radius_max = hi;
-    w->covered = covered;
+    for (size_t k = 0; k < sim->disks.n; ++k)
+        sim->disks.r[k] = g->base[k] * f;
+    ds_world_take_radii(&sim->world, &sim->disks);
 }
 
 /* Installs growth at integrator time now in a state without it (the
@@ -340,6 +331,7 @@ ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double un
         }
         for (size_t k = 0; k <= n; ++k)
             sim->disks.r[k] = k < n ? sim->world.radius : 0.0;
+        ds_world_take_radii(&sim->world, &sim->disks); /* now a sum over the array */
     }
     /* The radii of now (of a growth going on: base is then its own). */
     if (e->growth.rate > 0.0)

@@ -37,7 +37,7 @@ ds_world ds_world_of(const ds_params *p)
     w.placement = p->placement;
     w.seed = p->seed;
     w.radius_min = w.radius_max = p->radius;
-    w.covered = (double)p->n * DS_TWO_PI * 0.5 * p->radius * p->radius;
+    w.covered = ds_covered_by((double)p->n, p->radius);
     return w;
 }
 
@@ -83,6 +83,10 @@ static ds_status check_mixture(const ds_mixture *m, double reference, ds_world *
         return ds_refuse(err, DS_ERR_ARG, "mixture",
                          "mixture: give either species (kinds, with their count) or radii per "
                          "disk, not both and not neither");
+    if (m->species > 0 && m->masses)
+        return ds_refuse(err, DS_ERR_ARG, "mixture",
+                         "mixture: masses per disk go with radii per disk; species give each "
+                         "kind's mass in ds_species.mass");
     if (m->kinds) {
         size_t total = 0;
         for (size_t k = 0; k < m->species; ++k) {
@@ -109,7 +113,7 @@ static ds_status check_mixture(const ds_mixture *m, double reference, ds_world *
                              "mixture: disk %zu's mass is not a finite number > 0", i);
         lo = fmin(lo, r);
         hi = fmax(hi, r);
-        covered += DS_TWO_PI * 0.5 * r * r;
+        covered += ds_covered_by(1.0, r);
     }
     if (m->kinds)
         for (size_t k = 0; k < m->species; ++k)

@@ -44,11 +44,15 @@ ds_status ds_create_mixture(const ds_params *params, const ds_mixture *mixture, 
         return DS_ERR_NOMEM;
     sim->world = w;
     sim->integrator = ds_integrator_ops_of(sim->world.integrator);
-    if (sim->world.broadphase == DS_AUTO)
-        sim->world.broadphase = sim->integrator->choose(&sim->world);
     st = ds_disks_alloc(&sim->disks, sim->world.n);
     if (st == DS_OK && mixture)
         st = fill_mixture(&sim->disks, mixture, w.radius);
+    /* The radii and the area covered as every later part computes them
+     * from the arrays (a checkpoint's load, growth): the same bits. */
+    if (st == DS_OK)
+        ds_world_take_radii(&sim->world, &sim->disks);
+    if (sim->world.broadphase == DS_AUTO)
+        sim->world.broadphase = sim->integrator->choose(&sim->world);
     if (st == DS_OK && w.boundary == DS_PERIODIC)
         st = ds_disks_add_images(&sim->disks);
     if (st == DS_OK)
@@ -169,7 +173,7 @@ ds_status ds_get_unwrapped(const ds_sim *sim, double *xy)
 ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
 {
     if (!sim || i >= sim->world.n ||
-        ds_check_disk(&sim->world, i, ds_radius_of(sim, i), d, NULL) != DS_OK)
+        ds_check_disk(&sim->world, i, ds_radius_of(sim, i), 0.0, d, NULL) != DS_OK)
         return DS_ERR_ARG;
     return sim->integrator->set(sim, sim->disks.slot[i], d);
 }

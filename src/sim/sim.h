@@ -24,8 +24,12 @@ double ds_mixture_mass(const ds_mixture *m, double reference_radius, size_t i);
  * ds_scale_velocities). */
 #define DS_VELOCITY_MAX 1e12
 
-/* DS_OK, or why disk i cannot be d in world w (not finite, too fast,
- * outside the box): what ds_set and ds_set_all refuse as a value. */
-ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, ds_state_error *err);
+/* DS_OK, or DS_ERR_ARG and why disk i (radius radius) cannot be d in
+ * world w (not finite, too fast, outside the box): what ds_set and
+ * ds_set_all refuse as a value (past 0), and a checkpoint's loader, which
+ * lets a centre be past the walls' band by past (a saved state's
+ * rounding, and the time step's turn after the move). */
+ds_status ds_check_disk(const ds_world *w, size_t i, double radius, double past, ds_disk d,
+                        ds_state_error *err);
 
 #endif

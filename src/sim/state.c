@@ -11,7 +11,8 @@
 #include "core/overlap.h"
 #include "sim/sim.h"
 
-ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, ds_state_error *err)
+ds_status ds_check_disk(const ds_world *w, size_t i, double radius, double past, ds_disk d,
+                        ds_state_error *err)
 {
     if (!isfinite(d.x) || !isfinite(d.y) || !isfinite(d.vx) || !isfinite(d.vy))
         return ds_state_refuse(err, DS_ERR_ARG, "disk %zu has a value that is not a finite number",
@@ -20,22 +21,23 @@ ds_status ds_check_disk(const ds_world *w, size_t i, double radius, ds_disk d, d
         return ds_state_refuse(err, DS_ERR_ARG,
                                "disk %zu moves at (%g, %g): a velocity component beyond 1e12", i,
                                d.vx, d.vy);
-    /* With walls the centre stays R from each wall; a periodic box takes
-     * any point of [0, box) x [0, box_y), as its frames show them. */
+    /* With walls the centre stays R from each wall (past that by past); a
+     * periodic box takes any point of [0, box) x [0, box_y), as its
+     * frames show them. */
     if (w->boundary == DS_PERIODIC) {
         if (!(d.x >= 0.0 && d.x < w->box && d.y >= 0.0 && d.y < w->box_y))
             return ds_state_refuse(err, DS_ERR_ARG,
                                    "disk %zu at (%g, %g) is outside the periodic box [0, %g) x "
                                    "[0, %g)",
                                    i, d.x, d.y, w->box, w->box_y);
-    } else if (!(d.x >= radius && d.x <= w->box - radius && d.y >= radius &&
-                 d.y <= w->box_y - radius)) {
+        return DS_OK;
+    }
+    const double lo = radius - past, hi_x = w->box - radius + past, hi_y = w->box_y - radius + past;
+    if (!(d.x >= lo && d.x <= hi_x && d.y >= lo && d.y <= hi_y))
         return ds_state_refuse(err, DS_ERR_ARG,
                                "disk %zu at (%g, %g) is outside [%g, %g] x [%g, %g], where the "
                                "centre of a disk of radius %g stays between the walls",
-                               i, d.x, d.y, radius, w->box - radius, radius, w->box_y - radius,
-                               radius);
-    }
+                               i, d.x, d.y, lo, hi_x, lo, hi_y, radius);
     return DS_OK;
 }
 
@@ -87,7 +89,7 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
     }
     ds_status st = DS_OK;
     for (size_t i = 0; i < w->n && st == DS_OK; ++i)
-        st = ds_check_disk(w, i, radii ? radii[i] : w->radius, disks[i], err);
+        st = ds_check_disk(w, i, radii ? radii[i] : w->radius, 0.0, disks[i], err);
     if (st == DS_OK)
         st = check_overlaps(w, disks, radii, err);
     if (st != DS_OK) {
@@ -133,7 +135,11 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
 /* ------------------------------------------------------------------ */
 
 #define MAGIC "DSIMSTAT"
-#define FORMAT_VERSION 1u
+/* Version 2 added the pressure tensor's parts of the tally (after the
+ * collision timer); a file of version 1 is read with them 0: its stress
+ * integral starts at the load. */
+#define FORMAT_VERSION ((uint32_t)DS_STATE_FORMAT_VERSION)
+#define OLDEST_FORMAT_VERSION 1u
 #define BYTE_ORDER_MARK 0x01020304u
 #define HEADER_BYTES 40 /* magic, version, byte order, library version, payload length */
 #define CHECKSUM_BYTES 8
@@ -147,6 +153,37 @@ static uint64_t checksum(const uint8_t *p, size_t len)
         h *= 1099511628211ull;
     }
     return h;
+}
+
+/* The pressure tensor's parts (ds_stress_integral), since version 2. */
+static void put_stress(const ds_tally *t, ds_writer *w)
+{
+    for (int c = 0; c < 3; ++c)
+        ds_put_f64(w, t->stress_virial[c]);
+    for (int c = 0; c < 3; ++c)
+        ds_put_f64(w, t->kinetic[c]);
+    for (int c = 0; c < 3; ++c)
+        ds_put_f64(w, t->kinetic_integral[c]);
+    ds_put_f64(w, t->stress_clock);
+}
+
+static int get_stress(ds_reader *r, ds_tally *t)
+{
+    int finite = 1;
+    for (int c = 0; c < 3; ++c) {
+        t->stress_virial[c] = ds_get_f64(r);
+        finite &= isfinite(t->stress_virial[c]);
+    }
+    for (int c = 0; c < 3; ++c) {
+        t->kinetic[c] = ds_get_f64(r);
+        finite &= isfinite(t->kinetic[c]);
+    }
+    for (int c = 0; c < 3; ++c) {
+        t->kinetic_integral[c] = ds_get_f64(r);
+        finite &= isfinite(t->kinetic_integral[c]);
+    }
+    t->stress_clock = ds_get_f64(r);
+    return finite && isfinite(t->stress_clock);
 }
 
 static void put_payload(const ds_sim *sim, ds_writer *w)
@@ -175,6 +212,7 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
     ds_put_f64(w, sim->tally.wall_reach);
     ds_put_f64(w, sim->tally.virial);
     ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
+    put_stress(&sim->tally, w);
     const ds_disks *d = &sim->disks;
     for (size_t k = 0; k < d->n; ++k) {
         ds_put_f64(w, d->x[k]);
@@ -259,8 +297,9 @@ ds_status ds_save_state(const ds_sim *sim, FILE *out)
 }
 
 /* The frame of the file: magic, version, byte order, length, checksum.
- * On DS_OK, *payload spans the payload. */
-static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, ds_state_error *err)
+ * On DS_OK, *payload spans the payload and *version is the format's. */
+static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload,
+                             uint32_t *version_out, ds_state_error *err)
 {
     if (len < 8 || memcmp(p, MAGIC, 8) != 0)
         return ds_state_refuse(err, DS_ERR_FORMAT, "not a disksim state file (no %s at its start)",
@@ -279,11 +318,12 @@ static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, d
                                "the byte order mark is 0x%08x, not 0x%08x: not a state this "
                                "library wrote",
                                (unsigned)mark, BYTE_ORDER_MARK);
-    if (version != FORMAT_VERSION)
+    if (version < OLDEST_FORMAT_VERSION || version > FORMAT_VERSION)
         return ds_state_refuse(err, DS_ERR_FORMAT,
                                "format version %u (written by disksim %s); this library (%s) "
-                               "reads version %u",
-                               (unsigned)version, made_by, DS_VERSION_STRING, FORMAT_VERSION);
+                               "reads versions %u to %u",
+                               (unsigned)version, made_by, DS_VERSION_STRING, OLDEST_FORMAT_VERSION,
+                               FORMAT_VERSION);
     if (bytes > len - HEADER_BYTES || len - HEADER_BYTES - bytes < CHECKSUM_BYTES)
         return ds_state_refuse(err, DS_ERR_FORMAT,
                                "truncated: %zu bytes, where the header announces %llu", len,
@@ -298,6 +338,7 @@ static ds_status check_frame(const uint8_t *p, size_t len, ds_reader *payload, d
     payload->at = p + HEADER_BYTES;
     payload->end = p + HEADER_BYTES + bytes;
     payload->failed = 0;
+    *version_out = version;
     return DS_OK;
 }
 
@@ -335,62 +376,46 @@ static ds_status read_world(ds_reader *r, ds_world *w, ds_state_error *err)
     return DS_OK;
 }
 
-/* The disks in their slots: finite, inside the box up to the rounding of
- * a flight (a centre shown at a time a hair past its wall turn), each
- * generation index once. */
 /* A mixture's radii (after read_disks): the world's smallest, largest and
- * covered area from them, the largest held to what ds_check_params holds
- * a radius to. */
+ * covered area from them as creation computed them, the largest held to
+ * what ds_check_params holds a radius to. */
 static ds_status mixture_world(ds_sim *sim, ds_state_error *err)
 {
     ds_world *w = &sim->world;
     if (!sim->disks.r)
         return DS_OK;
-    double lo = INFINITY, hi = 0.0, covered = 0.0;
-    for (size_t k = 0; k < sim->disks.n; ++k) {
-        const double r = sim->disks.r[k];
-        lo = fmin(lo, r);
-        hi = fmax(hi, r);
-        covered += DS_TWO_PI * 0.5 * r * r;
-    }
+    ds_world_take_radii(w, &sim->disks);
     const double most = (w->boundary == DS_PERIODIC ? 0.25 : 0.5) * fmin(w->box, w->box_y);
-    if (!(hi < most))
+    if (!(w->radius_max < most))
         return ds_state_refuse(err, DS_ERR_FORMAT, "its largest radius %g does not fit its box",
-                               hi);
-    w->radius_min = lo;
-    w->radius_max = hi;
-    w->covered = covered;
+                               w->radius_max);
     return DS_OK;
 }
 
-/* Where a centre may be. Walls: inside the band a disk's radius from
- * them, less rounding; the time step turns a disk after it has moved, so
- * its centre may be past the band by what it moves in a step, and a
+/* How far past the band a radius from the walls a saved centre may be:
+ * rounding, and the time step turns a disk after it has moved, so its
+ * centre may be past the band by what it moves in a step, and a
  * collision in that step may send it out again once more: twice the
- * fastest disk's step. Periodic: inside the box. */
-static ds_status check_positions(const ds_sim *sim, ds_state_error *err)
+ * fastest disk's step. (A periodic box's centres are in the box: ds_wrap
+ * leaves every one in [0, box).) */
+static double past_the_walls(const ds_sim *sim)
 {
     const ds_world *w = &sim->world;
     const ds_disks *d = &sim->disks;
-    const int periodic = w->boundary == DS_PERIODIC;
     double past = 1e-9 * fmax(w->box, w->box_y);
-    if (!periodic && w->integrator == DS_TIME_STEP) {
+    if (w->boundary == DS_WALLS && w->integrator == DS_TIME_STEP) {
         double fastest = 0.0;
         for (size_t k = 0; k < d->n; ++k)
             fastest = fmax(fastest, hypot(d->vx[k], d->vy[k]));
         past += 2.0 * fastest * w->dt;
     }
-    for (size_t k = 0; k < d->n; ++k) {
-        const double radius = d->r ? d->r[k] : w->radius;
-        const double lo = periodic ? 0.0 : radius - past;
-        const double hi_x = periodic ? w->box : w->box - radius + past;
-        const double hi_y = periodic ? w->box_y : w->box_y - radius + past;
-        if (!(d->x[k] >= lo && d->x[k] <= hi_x && d->y[k] >= lo && d->y[k] <= hi_y))
-            return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
-    }
-    return DS_OK;
+    return past;
 }
 
+/* The disks in their slots: each generation index once, radii and masses
+ * numbers > 0, and every disk one ds_set would take (finite, no faster
+ * than DS_VELOCITY_MAX, in the box up to past_the_walls): the same check,
+ * so a forged file cannot start a run no caller could. */
 static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_state_error *err)
 {
     const ds_world *w = &sim->world;
@@ -415,14 +440,17 @@ static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_state_erro
         if (!(radius > 0.0) || !isfinite(radius) || (d->m && !(d->m[k] > 0.0 && isfinite(d->m[k]))))
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu's radius or mass is no number > 0",
                                    k);
-        if (!isfinite(d->x[k]) || !isfinite(d->y[k]) || !isfinite(d->vx[k]) ||
-            !isfinite(d->vy[k]) || !(fabs(d->vx[k]) < 1e300 && fabs(d->vy[k]) < 1e300) ||
-            d->id[k] >= d->n || d->slot[d->id[k]] != UINT32_MAX)
+        if (d->id[k] >= d->n || d->slot[d->id[k]] != UINT32_MAX)
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu holds no disk of this box", k);
         d->slot[d->id[k]] = (uint32_t)k; /* seen */
     }
-    const ds_status st = check_positions(sim, err);
-    return st != DS_OK ? st : mixture_world(sim, err);
+    const double past = past_the_walls(sim);
+    for (size_t k = 0; k < d->n; ++k) {
+        const ds_disk disk = {d->x[k], d->y[k], d->vx[k], d->vy[k]};
+        if (ds_check_disk(w, d->id[k], d->r ? d->r[k] : w->radius, past, disk, err) != DS_OK)
+            return DS_ERR_FORMAT;
+    }
+    return mixture_world(sim, err);
 }
 
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err)
@@ -435,7 +463,8 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     if (!data && len)
         return ds_state_refuse(err, DS_ERR_ARG, "no data (NULL)");
     ds_reader r;
-    ds_status st = check_frame(data, len, &r, err);
+    uint32_t version = 0;
+    ds_status st = check_frame(data, len, &r, &version, err);
     ds_world w;
     if (st == DS_OK)
         st = read_world(&r, &w, err);
@@ -467,10 +496,12 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     sim->tally.virial = ds_get_f64(&r);
     ds_timer_reset(&sim->collision_timer);
     sim->collision_timer.total = ds_get_f64(&r);
-    if (st == DS_OK && (r.failed || sim->observables_since_step > sim->steps ||
-                        !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.wall_reach) ||
-                        !isfinite(sim->tally.virial) || !(sim->collision_timer.total >= 0.0) ||
-                        !((double)sim->steps * w.dt < 1e300)))
+    const int stress = version < 2 || get_stress(&r, &sim->tally); /* else 0, from calloc */
+    if (st == DS_OK &&
+        (r.failed || sim->observables_since_step > sim->steps ||
+         !isfinite(sim->tally.wall_impulse) || !isfinite(sim->tally.wall_reach) ||
+         !isfinite(sim->tally.virial) || !stress || !(sim->collision_timer.total >= 0.0) ||
+         !((double)sim->steps * w.dt < 1e300)))
         st = ds_state_refuse(err, DS_ERR_FORMAT, "its clock or tally is not a run's");
     for (size_t k = 0; st == DS_OK && k < w.n; ++k)
         sim->disks.slot[k] = UINT32_MAX;
@@ -486,6 +517,36 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
         return st;
     }
     *out = sim;
+    return DS_OK;
+}
+
+/* The rest of a stream after the len bytes of head, up to want bytes in
+ * all, into a buffer that grows (doubling) as the bytes arrive: a length
+ * field forged to 2^42 costs what the stream holds, not what it says. */
+static ds_status read_up_to(FILE *in, const uint8_t *head, size_t len, size_t want, uint8_t **out,
+                            size_t *got)
+{
+    size_t cap = want < ((size_t)1 << 16) ? want : (size_t)1 << 16;
+    cap = cap > len ? cap : len;
+    uint8_t *buf = malloc(cap ? cap : 1);
+    if (!buf)
+        return DS_ERR_NOMEM;
+    memcpy(buf, head, len);
+    for (;;) {
+        len += fread(buf + len, 1, cap - len, in);
+        if (len < cap || cap >= want)
+            break; /* the stream ended, or all that was wanted is here */
+        const size_t next = cap > want / 2 ? want : 2 * cap;
+        uint8_t *more = realloc(buf, next);
+        if (!more) {
+            free(buf);
+            return DS_ERR_NOMEM;
+        }
+        buf = more;
+        cap = next;
+    }
+    *out = buf;
+    *got = len;
     return DS_OK;
 }
 
@@ -513,12 +574,9 @@ ds_status ds_load_state(FILE *in, ds_sim **out, ds_state_error *err)
                                    (unsigned long long)payload);
         total = HEADER_BYTES + (size_t)payload + CHECKSUM_BYTES;
     }
-    uint8_t *buf = malloc(total + 1);
-    if (!buf)
+    uint8_t *buf = NULL;
+    if (read_up_to(in, head, len, total > len ? total + 1 : len, &buf, &len) != DS_OK)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to read the state");
-    memcpy(buf, head, len);
-    if (total > len)
-        len += fread(buf + len, 1, total + 1 - len, in);
     if (ferror(in)) {
         free(buf);
         return ds_state_refuse(err, DS_ERR_IO, "the state could not be read");
