@@ -192,7 +192,7 @@ static ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t
 static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w, size_t nm,
                           size_t *mp)
 {
-    return d->r || d->m || d->ix ? merge_into(d, st, t, w, nm, mp, 1)
+    return ds_disks_columns(d) != DS_DISKS_EVERY_COLUMN ? merge_into(d, st, t, w, nm, mp, 1)
                                  : merge_into(d, st, t, w, nm, mp, 0);
 }
 
@@ -288,7 +288,7 @@ static ds_status strips_alloc(ds_bp *bp, const ds_world *w, const ds_disks *d)
     st->mover_strip = malloc(n * sizeof *st->mover_strip);
     st->incoming = malloc(n * sizeof *st->incoming);
     if (!st->start || !st->next_start || !st->bucket_start || !st->mover || !st->mover_strip ||
-        !st->incoming || ds_disks_alloc_spare(&st->spare, d) != DS_OK) {
+        !st->incoming || ds_disks_alloc_like(&st->spare, d) != DS_OK) {
         ds_strips_destroy(bp);
         return DS_ERR_NOMEM;
     }
