@@ -37,7 +37,7 @@ DISKS := $(OUT)disks
 # timestep/ and event/ (the integrators), init/ (placement), observe/
 # (observables), io/ (text formats), and sim/ (the public API of the
 # simulation, over the parts). The command is every file of cli/.
-LIB_DIRS := core timestep event init observe io sim
+LIB_DIRS := core timestep event protocols init observe io sim
 LIB_SRC := $(sort $(foreach d,$(LIB_DIRS),$(wildcard src/$(d)/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 

@@ -467,7 +467,7 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err);
  * moves between machines. This library writes version 2 and reads 1 and
  * 2; version 1 lacks the stress integral's parts (a run loaded from it
  * starts ds_stress_integral at 0). */
-#define DS_STATE_FORMAT_VERSION 2
+#define DS_STATE_FORMAT_VERSION 3
 
 /* Bytes ds_format_state writes for sim (0 for NULL). */
 size_t ds_state_size(const ds_sim *sim);

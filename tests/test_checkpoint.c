@@ -246,7 +246,7 @@ static void test_a_bad_checkpoint_is_refused_with_a_reason(void **state)
     memcpy(bad, buf, len);
     bad[8] = DS_STATE_FORMAT_VERSION + 1;
     fix_checksum(bad, len);
-    assert_refused(bad, len, "format version 3");
+    assert_refused(bad, len, "format version 4");
     bad[8] = 0;
     fix_checksum(bad, len);
     assert_refused(bad, len, "format version 0");
@@ -463,20 +463,79 @@ static void test_a_length_field_past_the_file_is_a_truncated_checkpoint(void **s
     ds_destroy(a);
 }
 
-/* The payload of format version 1: version 2's without the pressure
+/* The payload of format version 1: version 3's without the pressure
  * tensor's parts (10 doubles after the collision timer, 188 bytes into
- * the file). */
+ * the file) and without the list of protocols (its count at the end; a
+ * growth, which version 1 kept in the integrator's part, is not in these
+ * runs). */
 static size_t as_version_1(uint8_t *buf, size_t len)
 {
     const size_t at = 188, cut = 80;
     memmove(buf + at, buf + at + cut, len - at - cut);
     len -= cut;
+    /* Version 3's list of protocols (a count, 0 here) is the last thing
+     * before the checksum; version 1 had none. */
+    memmove(buf + len - 12, buf + len - 8, 8);
+    len -= 4;
     buf[8] = 1;
     const uint64_t payload = len - 48;
     for (int b = 0; b < 8; ++b)
         buf[32 + b] = (uint8_t)(payload >> (8 * b));
     fix_checksum(buf, len);
     return len;
+}
+
+/* A checkpoint of format version 2 written by disksim 2.1 during a growth
+ * (tests/checkpoint-v2-growth.state: a mixture of 40 disks of 12 and 20
+ * of 8, mass by area, event-driven, periodic box 260, seed 7, 30 steps,
+ * then growth at rate 0.02 to area fraction 0.6, 5000 steps more), where
+ * the growth's law and its protocol's part were one block of the
+ * integrator's: it loads, and goes on to the bit as the same run made now,
+ * the growth's state, Z and area fraction included. */
+static void test_a_version_2_checkpoint_of_a_growth_goes_on_to_the_bit(void **state)
+{
+    (void)state;
+    FILE *f = fopen("tests/checkpoint-v2-growth.state", "rb");
+    assert_non_null(f);
+    ds_sim *old = NULL;
+    ds_state_error why;
+    if (ds_load_state(f, &old, &why) != DS_OK)
+        fail_msg("%s", why.message);
+    fclose(f);
+    ds_params p = ds_default_params(60, 12.0);
+    p.integrator = DS_EVENT_DRIVEN;
+    p.boundary = DS_PERIODIC;
+    p.box = 260.0;
+    p.seed = 7;
+    const ds_species kinds[] = {{40, 12.0, 0.0}, {20, 8.0, 0.0}};
+    const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
+    ds_sim *now = NULL;
+    assert_int_equal(ds_create_mixture(&p, &mixture, &now), DS_OK);
+    ds_run(now, 30);
+    assert_int_equal(ds_set_growth(now, 0.02, 0.6, 0.0), DS_OK);
+    ds_run(now, 5000);
+    for (int part = 0; part < 3; ++part) {
+        ds_disk da[60], db[60];
+        double ra[60], rb[60];
+        assert_int_equal(ds_get_all(now, da), DS_OK);
+        assert_int_equal(ds_get_all(old, db), DS_OK);
+        assert_memory_equal(da, db, sizeof da);
+        assert_int_equal(ds_get_radii(now, ra, NULL), DS_OK);
+        assert_int_equal(ds_get_radii(old, rb, NULL), DS_OK);
+        assert_memory_equal(ra, rb, sizeof ra);
+        assert_int_equal(ds_growth_state_of(now), ds_growth_state_of(old));
+        const double za = ds_growth_z(now), zb = ds_growth_z(old);
+        assert_memory_equal(&za, &zb, sizeof za);
+        const double ea = ds_area_fraction(now), eb = ds_area_fraction(old);
+        assert_memory_equal(&ea, &eb, sizeof ea);
+        assert_int_equal(ds_collision_count(now), ds_collision_count(old));
+        ds_run(now, 3000);
+        ds_run(old, 3000);
+    }
+    assert_int_equal(ds_growth_state_of(old), DS_GROWING);
+    assert_true(ds_growth_z(old) > 1.0);
+    ds_destroy(now);
+    ds_destroy(old);
 }
 
 /* A checkpoint of format version 1 still loads and goes on bit for bit,
@@ -599,6 +658,7 @@ int main(void)
         cmocka_unit_test(test_a_forged_disk_is_refused_as_ds_set_refuses_it),
         cmocka_unit_test(test_a_length_field_past_the_file_is_a_truncated_checkpoint),
         cmocka_unit_test(test_a_version_1_checkpoint_loads_with_the_stress_integral_at_zero),
+        cmocka_unit_test(test_a_version_2_checkpoint_of_a_growth_goes_on_to_the_bit),
         cmocka_unit_test(test_a_stream_without_end_is_refused_at_once),
         cmocka_unit_test(test_null_arguments_are_refused),
     };

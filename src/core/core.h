@@ -11,6 +11,7 @@
 #define DS_CORE_H
 
 #include "core/disk_arrays.h"
+#include "core/protocol.h"
 #include "core/state_io.h"
 #include "disk_sim.h"
 
@@ -78,7 +79,19 @@ struct ds_sim {
     ds_timer collision_timer;
     ds_tally tally;
     uint64_t observables_since_step; /* step count at the last reset */
+    /* What acts on the run from outside its dynamics (core/protocol.h):
+     * installed by their setters, their hooks called by the integrator. */
+    ds_protocols protocols;
 };
+
+/* Where an integrator's growing radii stand (ds_integrator_ops.growth):
+ * since integrator time `from` every radius is r_i(from) (1 + rate (t -
+ * from)); scale is r_i(from) over the radius at the growth's start, so
+ * that a speed relative to those (dr_i / dt over it) is rate scale; eta
+ * the area fraction at from. */
+typedef struct ds_growth_law {
+    double rate, scale, from, eta;
+} ds_growth_law;
 
 /* One integrator: a way to advance the disks by whole steps of dt. Each
  * fills one table (timestep/time_step.c, event/event_driven.c), listed in
@@ -121,15 +134,35 @@ struct ds_integrator_ops {
      * DS_OK, or DS_ERR_FORMAT (or DS_ERR_NOMEM) with a reason, leaving
      * what it made for destroy. It checks what could make the library
      * misbehave (indices out of range, lists that loop, times that are
-     * not numbers); the checksum catches the rest. */
-    ds_status (*load)(ds_sim *sim, ds_reader *r, ds_state_error *err);
-    /* Growth (ds_set_growth), or NULL where the integrator has none. */
-    ds_status (*set_growth)(ds_sim *sim, double rate, double until_eta, double until_z);
+     * not numbers); the checksum catches the rest. version is the file's
+     * format version; what an older one kept here that a protocol keeps
+     * now goes to legacy (core/protocol.h). */
+    ds_status (*load)(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
+                      ds_state_error *err);
     /* Every velocity times factor (> 0), at the present time. */
     ds_status (*scale_velocities)(ds_sim *sim, double factor);
-    /* Where growth stands (a ds_growth_state) and the Z of its last
-     * window, or NULL: DS_GROWTH_NONE. */
-    int (*growth_state)(const ds_sim *sim, double *z);
+
+    /* Services to protocols, at integrator time t inside the present
+     * step (each NULL where the integrator has none: a protocol that needs
+     * it refuses to start, saying so). */
+    /* The integrator time of the present step boundary. */
+    double (*now)(const ds_sim *sim);
+    /* The kinetic energy K and the centre of mass's share P^2 / (2 M). */
+    void (*kinetic)(const ds_sim *sim, double *k, double *momentum_energy);
+    /* At t: every velocity times factor (1: none; the stress tally's
+     * kinetic part with them, as a heat bath's step taken out of the
+     * run), and from t on radii that grow linearly in time at speed
+     * (relative to the radii at the growth's start; 0: radii fixed at
+     * those of t), fresh to start a growth from the radii of t; every
+     * disk predicted again. DS_ERR_NOMEM, nothing changed, without memory
+     * for a growth's radii. */
+    ds_status (*grow)(ds_sim *sim, double t, double factor, double speed, int fresh);
+    void (*growth_law)(const ds_sim *sim, ds_growth_law *law);
+    /* Room for the growing contacts up to integrator time until: the
+     * state built again with room for radii 5% larger when it has less
+     * (*rebuilt then set; the state's origin is then the present).
+     * DS_ERR_NOMEM, nothing changed, without memory for that. */
+    ds_status (*widen)(ds_sim *sim, double until, int *rebuilt);
 };
 
 /* Fills err (if not NULL) with a printf-style sentence; returns status. */

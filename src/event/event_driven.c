@@ -58,11 +58,12 @@ static inline double nearest(double r, double box, int periodic)
     return periodic ? ds_nearest(r, box) : r;
 }
 
-static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t)
+static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
 {
+    ds_tally *tally = &sim->tally;
     ds_tally_flight_to(tally, t);
-    if (e->growth.rate > 0.0) {
-        ds_ed_collide_growing(tally, e, i, j, t);
+    if (e->law.rate > 0.0) {
+        ds_ed_collide_growing(sim, e, i, j, t);
         return;
     }
     ed_disk *a = &e->disk[i], *b = &e->disk[j];
@@ -143,8 +144,9 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
     schedule(e, i);
 }
 
-static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
+static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
 {
+    ds_tally *tally = &sim->tally;
     ed_disk *d = &e->disk[i];
     const uint32_t partner = d->partner;
     switch (partner) {
@@ -158,7 +160,7 @@ static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
         return;
     default:
         if (ds_fetch_note_current(d->partner_changes, e->disk[partner].changes)) {
-            collide(tally, e, i, partner, t);
+            collide(sim, e, i, partner, t);
         } else {
             ds_ed_advance(d, t); /* stale: the partner has changed course */
             schedule(e, i);
@@ -204,9 +206,7 @@ static void rebase(ds_events *e, size_t n, double t)
     }
     ds_eq_build(e->queue, 0.0);
     e->epoch += t;
-    e->growth.from -= t;
-    e->growth.stop_time -= t;
-    e->growth.window_start -= t;
+    e->law.from -= t;
 }
 
 static void run(ds_sim *sim, uint64_t steps)
@@ -221,36 +221,37 @@ static void run(ds_sim *sim, uint64_t steps)
         for (;;) {
             const uint32_t i = ds_eq_first(e->queue);
             const double t = e->disk[i].next;
-            /* Growing: first the checks that may stop it (and predict
-             * every disk again) before this event, or before the step's
-             * end if no event comes first: the target's time is an event
-             * of its own, which a sparse system's next collision may be
-             * steps after. */
-            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t, target))
+            /* A protocol's moment first (growth's target, its window's
+             * end), before this event or before the step's end if no
+             * event comes first. */
+            if (ds_protocols_due(&sim->protocols, t, target)) {
+                ds_protocols_fire(sim, t, target);
                 continue;
+            }
             if (!(t < target))
                 break;
             if (e->fetching)
                 ds_fetch_ahead(e);
-            handle_event(&sim->tally, e, i, t);
+            handle_event(sim, e, i, t);
         }
         ++sim->steps;
         ds_tally_flight_to(&sim->tally, target);
         if (target >= e->rebase_time) {
             rebase(e, sim->world.n, target);
+            ds_protocols_rebased(sim, target);
             target = 0.0;
             sim->tally.stress_clock = 0.0;
         }
-        /* Growing: cells wide enough for the next step's contacts, or the
-         * state made again (it then starts at the present time, 0), or
-         * without memory for that the growth stopped and the steps go on. */
-        if (e->growth.rate > 0.0) {
+        /* The protocols' step's end (growth's wider cells may build the
+         * state again: it then starts at the present time, 0; without
+         * memory for that the growth stopped and the steps go on). */
+        if (sim->protocols.stepping) {
             sim->tally.pairs_tested += e->tested;
             e->tested = 0;
-            (void)ds_ed_growth_step_end(sim, target + sim->world.dt); /* no memory: it stopped */
+            (void)ds_protocols_step_end(sim);
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
-            sim->tally.stress_clock = target; /* the state made again has its own clock */
+            sim->tally.stress_clock = target; /* a state made again has its own clock */
         }
     }
     ds_timer_stop(&sim->collision_timer);
@@ -289,7 +290,7 @@ void ds_ed_destroy(ds_sim *sim)
     ds_events *e = sim->state;
     if (!e)
         return;
-    free(e->growth.base);
+    free(e->law.base);
     free(e->times);
     free(e->image);
     ds_eq_destroy(e->queue);
@@ -359,8 +360,7 @@ ds_status ds_ed_alloc(ds_sim *sim)
      * by then every disk has had several events, so the O(n) rebase is
      * cheap beside them, and times stay below ~10 crossing times. */
     e->rebase_time = fmax(w->box, w->box_y) / w->speed;
-    e->growth.stop_time = INFINITY;
-    e->growth.scale = 1.0;
+    e->law.scale = 1.0;
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
     e->times = malloc((n ? n : 1) * sizeof *e->times);
     ds_status st = e->disk && e->times ? DS_OK : DS_ERR_NOMEM;
@@ -466,7 +466,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     ds_cells *cells = &e->cells;
     const double now = now_of(sim);
     /* Growing: the radii of now, from which the growth goes on. */
-    if (e->growth.rate > 0.0)
+    if (e->law.rate > 0.0)
         ds_ed_growth_go_on(e, sim->world.n, now);
     const uint32_t column = ds_cells_column(cells, nd.x), row = ds_cells_row(cells, nd.y);
     /* Refuse an overlap before changing anything. */
@@ -499,6 +499,43 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     disks->vx[k] = nd.vx;
     disks->vy[k] = nd.vy;
     return DS_OK;
+}
+
+/* Every velocity times factor at the present time, the records and the
+ * arrays alike; a growth goes on from the radii of now. */
+static ds_status scale_velocities(ds_sim *sim, double factor)
+{
+    ds_events *e = sim->state;
+    const size_t n = sim->world.n;
+    const double now = now_of(sim);
+    for (size_t k = 0; k < n; ++k) {
+        ds_ed_advance(&e->disk[k], now);
+        e->disk[k].vx *= factor;
+        e->disk[k].vy *= factor;
+        sim->disks.vx[k] = e->disk[k].vx;
+        sim->disks.vy[k] = e->disk[k].vy;
+    }
+    ds_ed_growth_go_on(e, n, now);
+    return DS_OK;
+}
+
+/* The kinetic energy of the records and the centre of mass's share: a
+ * periodic box conserves the momentum, so the centre of mass's energy is
+ * not the temperature's. */
+static void kinetic(const ds_sim *sim, double *kinetic, double *momentum_energy)
+{
+    const ds_events *e = sim->state;
+    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
+    for (size_t i = 0; i < sim->world.n; ++i) {
+        const ed_disk *d = &e->disk[i];
+        const double m = e->mass ? e->mass[i] : 1.0;
+        k += m * (d->vx * d->vx + d->vy * d->vy);
+        px += m * d->vx;
+        py += m * d->vy;
+        mass += m;
+    }
+    *kinetic = 0.5 * k;
+    *momentum_energy = (px * px + py * py) / (2.0 * mass);
 }
 
 /* ------------------------------------------------------------------ */
@@ -540,7 +577,10 @@ const ds_integrator_ops ds_event_driven_ops = {
     .set = set,
     .save = ds_ed_save,
     .load = ds_ed_load,
-    .set_growth = ds_ed_set_growth,
-    .scale_velocities = ds_ed_scale_velocities,
-    .growth_state = ds_ed_growth_state,
+    .scale_velocities = scale_velocities,
+    .now = now_of,
+    .kinetic = kinetic,
+    .grow = ds_ed_grow,
+    .growth_law = ds_ed_growth_law,
+    .widen = ds_ed_widen,
 };

@@ -371,7 +371,7 @@ static void gather_cell(predictor *pr, const ds_cells *cells, uint32_t cell, uin
  * approach (v^2 < a^2) always meets. The root in the form that does not
  * cancel, as pair_time. */
 static double growing_pair_time(const ed_disk *d, const ed_disk *p, double now, double sx,
-                                double sy, double s0, const ds_growth *g)
+                                double sy, double s0, const ds_ed_law *g)
 {
     const double lag = now - p->t;
     const double rx = p->x + p->vx * lag + sx - d->x, ry = p->y + p->vy * lag + sy - d->y;
@@ -415,7 +415,7 @@ double ds_ed_predict_growing(ds_events *e, uint32_t i)
                     continue;
                 ++tested;
                 const double t = growing_pair_time(d, &e->disk[k], now, st.sx[c], st.sy[c],
-                                                   e->radius[i] + e->radius[k], &e->growth);
+                                                   e->radius[i] + e->radius[k], &e->law);
                 if (t < best && t <= e->disk[k].next) {
                     best = t;
                     kind = k;
@@ -433,7 +433,7 @@ double ds_ed_predict_growing(ds_events *e, uint32_t i)
 
 double ds_ed_predict(ds_events *e, uint32_t i)
 {
-    if (e->growth.rate > 0.0)
+    if (e->law.rate > 0.0)
         return ds_ed_predict_growing(e, i);
     ed_disk *const d = &e->disk[i];
     const ds_cells *cells = &e->cells;

@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* The integrators, by their ds_integrator value: a new integrator is its
- * folder (or file) with its table, and one line here. */
+/* The integrators, by their ds_integrator value, and the protocols, by
+ * their kind: a new integrator is its folder (or file) with its table,
+ * and one line here; a new protocol its file and one line. */
 #include "sim/sim.h"
 #include "event/event.h"
+#include "protocols/protocols.h"
 #include "timestep/timestep.h"
 
 static const ds_integrator_ops *const integrators[] = {
@@ -21,3 +23,7 @@ const char *ds_integrator_name(ds_integrator integrator)
     const ds_integrator_ops *ops = ds_integrator_ops_of(integrator);
     return ops ? ops->name : "unknown";
 }
+
+const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT] = {
+    [DS_PROTOCOL_GROWTH] = &ds_growth_ops,
+};

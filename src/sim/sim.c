@@ -7,6 +7,7 @@
 
 #include "sim/sim.h"
 #include "init/init.h"
+#include "protocols/protocols.h"
 
 /* A mixture's radii and masses into the disk arrays (generation order):
  * an array only where the disks differ from the world's radius or from
@@ -42,6 +43,7 @@ ds_status ds_create_mixture(const ds_params *params, const ds_mixture *mixture, 
     ds_sim *sim = calloc(1, sizeof *sim);
     if (!sim)
         return DS_ERR_NOMEM;
+    ds_protocols_refresh(&sim->protocols);
     sim->world = w;
     sim->integrator = ds_integrator_ops_of(sim->world.integrator);
     st = ds_disks_alloc(&sim->disks, sim->world.n);
@@ -78,6 +80,7 @@ void ds_destroy(ds_sim *sim)
 {
     if (!sim)
         return;
+    ds_protocols_destroy_all(&sim->protocols);
     if (sim->integrator)
         sim->integrator->destroy(sim);
     ds_disks_free(&sim->disks);
@@ -175,7 +178,10 @@ ds_status ds_set(ds_sim *sim, size_t i, ds_disk d)
     if (!sim || i >= sim->world.n ||
         ds_check_disk(&sim->world, i, ds_radius_of(sim, i), 0.0, d, NULL) != DS_OK)
         return DS_ERR_ARG;
-    return sim->integrator->set(sim, sim->disks.slot[i], d);
+    const ds_status st = sim->integrator->set(sim, sim->disks.slot[i], d);
+    if (st == DS_OK)
+        ds_protocols_disks_set(sim, 0);
+    return st;
 }
 
 double ds_radius_of(const ds_sim *sim, size_t i)
@@ -215,7 +221,8 @@ double ds_area_fraction(const ds_sim *sim)
 
 ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until_z)
 {
-    if (!sim || !sim->integrator->set_growth || !(rate >= 0.0) || !isfinite(rate) ||
+    if (!sim || !sim->integrator->grow || sim->world.boundary != DS_PERIODIC ||
+        !(rate >= 0.0) || !isfinite(rate) ||
         !(until_eta >= 0.0 && until_eta < 1.0) ||
         (until_eta > 0.0 && until_eta <= ds_area_fraction(sim)) ||
         !(until_z == 0.0 || (until_z > 1.0 && until_z <= 1e9)))
@@ -230,23 +237,20 @@ ds_status ds_set_growth(ds_sim *sim, double rate, double until_eta, double until
     const double rms = mass > 0.0 ? sqrt(2.0 * ds_kinetic_energy(sim) / mass) : 0.0;
     if (rate > 0.0 && !(2.0 * ds_radius_max(sim) * rate <= 10.0 * rms))
         return DS_ERR_ARG;
-    return sim->integrator->set_growth(sim, rate, until_eta,
-                                       until_z == 0.0 ? DS_JAMMED_Z : until_z);
+    return ds_growth_start(sim, rate, until_eta, until_z == 0.0 ? DS_JAMMED_Z : until_z);
 }
 
 ds_growth_state ds_growth_state_of(const ds_sim *sim)
 {
     double z = 0.0;
-    return sim && sim->integrator->growth_state
-               ? (ds_growth_state)sim->integrator->growth_state(sim, &z)
-               : DS_GROWTH_NONE;
+    return sim ? (ds_growth_state)ds_growth_state_get(sim, &z) : DS_GROWTH_NONE;
 }
 
 double ds_growth_z(const ds_sim *sim)
 {
     double z = 0.0;
-    if (sim && sim->integrator->growth_state)
-        (void)sim->integrator->growth_state(sim, &z);
+    if (sim)
+        (void)ds_growth_state_get(sim, &z);
     return z;
 }
 
@@ -261,7 +265,10 @@ ds_status ds_scale_velocities(ds_sim *sim, double factor)
         fastest = fmax(fastest, fmax(fabs(sim->disks.vx[i]), fabs(sim->disks.vy[i])));
     if (!(fastest * factor <= DS_VELOCITY_MAX))
         return DS_ERR_ARG;
-    return sim->integrator->scale_velocities(sim, factor);
+    const ds_status st = sim->integrator->scale_velocities(sim, factor);
+    if (st == DS_OK)
+        ds_protocols_scaled(sim, factor);
+    return st;
 }
 
 double ds_collision_seconds(const ds_sim *sim)

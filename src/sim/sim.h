@@ -8,6 +8,8 @@
 
 /* The table of an integrator, NULL if it is not one. */
 const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator);
+/* The protocols' tables by ds_protocol_kind (a checkpoint's loader). */
+extern const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT];
 
 /* The world params describe, defaults resolved (broadphase as given,
  * maybe DS_AUTO). No checks. */

@@ -9,6 +9,7 @@
 
 #include "core/boundary.h"
 #include "core/overlap.h"
+#include "protocols/protocols.h"
 #include "sim/sim.h"
 
 ds_status ds_check_disk(const ds_world *w, size_t i, double radius, double past, ds_disk d,
@@ -127,6 +128,7 @@ ds_status ds_set_all(ds_sim *sim, const ds_disk *disks, ds_state_error *err)
     sim->integrator->destroy(sim);
     ds_disks_free(&sim->disks);
     *sim = fresh;
+    ds_protocols_disks_set(sim, 1);
     return DS_OK;
 }
 
@@ -230,6 +232,7 @@ static void put_payload(const ds_sim *sim, ds_writer *w)
         }
     }
     sim->integrator->save(sim, w);
+    ds_protocols_save(sim, w);
 }
 
 /* The whole file into w: header, payload, checksum. */
@@ -453,6 +456,21 @@ static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_state_erro
     return mixture_world(sim, err);
 }
 
+/* The integrator's part and the protocols'. Format versions 1 and 2 had
+ * no list of protocols: a growth's part came in the event-driven
+ * integrator's, which hands it over (legacy). */
+static ds_status load_parts(ds_sim *sim, ds_reader *r, uint32_t version, ds_state_error *err)
+{
+    ds_legacy legacy;
+    memset(&legacy, 0, sizeof legacy);
+    ds_status st = sim->integrator->load(sim, r, version, &legacy, err);
+    if (st == DS_OK && version >= 3)
+        st = ds_protocols_load(sim, ds_protocol_table, r, err);
+    if (st == DS_OK && legacy.has_growth && ds_growth_adopt(sim, &legacy.growth) != DS_OK)
+        st = ds_state_refuse(err, DS_ERR_FORMAT, "its growth's numbers are not a growth's");
+    return st;
+}
+
 ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_error *err)
 {
     if (err)
@@ -471,6 +489,8 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     if (st != DS_OK)
         return st;
     ds_sim *sim = calloc(1, sizeof *sim);
+    if (sim)
+        ds_protocols_refresh(&sim->protocols);
     if (!sim || ds_disks_alloc(&sim->disks, w.n) != DS_OK) {
         ds_destroy(sim);
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", w.n);
@@ -508,7 +528,7 @@ ds_status ds_parse_state(const void *data, size_t len, ds_sim **out, ds_state_er
     if (st == DS_OK)
         st = read_disks(&r, sim, (arrays & 4u) != 0, err);
     if (st == DS_OK)
-        st = sim->integrator->load(sim, &r, err);
+        st = load_parts(sim, &r, version, err);
     if (st == DS_OK && ds_left(&r) != 0)
         st = ds_state_refuse(err, DS_ERR_FORMAT, "%zu bytes of the state were not read",
                              ds_left(&r));

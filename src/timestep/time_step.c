@@ -146,8 +146,11 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
 
 static void save(const ds_sim *sim, ds_writer *w) { ds_bp_save(sim->state, w); }
 
-static ds_status load(ds_sim *sim, ds_reader *r, ds_state_error *err)
+static ds_status load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
+                      ds_state_error *err)
 {
+    (void)version; /* the same part in every version */
+    (void)legacy;
     ds_bp *bp = calloc(1, sizeof *bp);
     if (!bp)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the broad phase");
@@ -181,7 +184,7 @@ const ds_integrator_ops ds_time_step_ops = {
     .set = set,
     .save = save,
     .load = load,
-    .set_growth = NULL, /* radii grow only with exact contact times */
     .scale_velocities = scale_velocities,
-    .growth_state = NULL,
+    /* No services to protocols yet: radii grow only with exact contact
+     * times, so growth refuses the time step. */
 };
