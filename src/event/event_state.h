@@ -118,14 +118,14 @@ static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
 }
 
 /* The integrator's state for sim's world, its records, cells and
- * calendar allocated and empty (event_driven.c); ds_ed_start then builds
+ * calendar allocated and empty (ed_state.c); ds_ed_start then builds
  * the calendar from the records' times, at integrator time now. */
 ds_status ds_ed_alloc(ds_sim *sim);
 void ds_ed_start(ds_events *e, double now);
 
 /* Writes every disk at integrator time t into the simulation's arrays
  * (record k is slot k), wrapped into a periodic box, with its image
- * counts (event_driven.c). */
+ * counts (ed_state.c). */
 void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t);
 
 static inline void ds_ed_advance(ed_disk *d, double t)
@@ -137,9 +137,11 @@ static inline void ds_ed_advance(ed_disk *d, double t)
 }
 
 /* Creating and freeing the state, and predicting every disk afresh
- * (event_driven.c): what a restart at one instant needs. */
+ * (ed_state.c): what a restart at one instant needs. */
 ds_status ds_ed_create(ds_sim *sim);
 void ds_ed_destroy(ds_sim *sim);
+/* Bytes the state allocates for world w (the table's bytes). */
+size_t ds_ed_bytes(const ds_world *w);
 void ds_ed_schedule_all(ds_events *e, size_t n);
 
 /* Growing radii (growing.c): a disk's next event with growing radii

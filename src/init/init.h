@@ -19,7 +19,7 @@ ds_status ds_place(ds_disks *d, const ds_world *w);
 ds_status ds_place_random(ds_disks *d, const ds_world *w);
 
 /* Takes the mean velocity out of the disks (more than one) and scales the
- * speeds back to the kinetic energy n speed^2 / 2 (placement.c): in a
+ * speeds back to the kinetic energy n speed^2 / 2 (velocities.c): in a
  * periodic box the total momentum is conserved, so the centre of mass
  * then stands still for ever. */
 void ds_stop_centre_of_mass(ds_disks *d, const ds_world *w);
