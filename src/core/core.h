@@ -17,6 +17,15 @@
 
 #define DS_TWO_PI 6.28318530717958647692
 
+/* For a hot loop's helper that must inline: gcc's size heuristic
+ * otherwise keeps a large one out of line (the strips' merge, the
+ * event-driven prediction's gathering: 7% per collision measured). */
+#if defined(__GNUC__)
+#define DS_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define DS_ALWAYS_INLINE inline
+#endif
+
 /* What the parts read and never write: the parameters with the defaults
  * resolved, fixed at creation. */
 typedef struct ds_world {

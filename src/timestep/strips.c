@@ -32,14 +32,6 @@
 #include "timestep/broad_phase.h"
 #include "timestep/sweep_block.h"
 
-/* The per-disk helpers of the hot loops must inline; gcc's size heuristic
- * otherwise keeps them out of line at their two call sites. */
-#if defined(__GNUC__)
-#define ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define ALWAYS_INLINE inline
-#endif
-
 /* Strip height as a multiple of 2R. Taller strips mean fewer crossings
  * (each step with any crossing costs a merge pass over all disks) but
  * more candidates per disk (~6 n R h / box^2, cheap to reject). Measured
@@ -157,8 +149,8 @@ static void bucket_movers(const ds_disks *d, struct ds_strips *st, size_t nm)
  * mover[], which is in slot order. Returns the end of the strip. Compiled
  * twice (mixture constant): with one kind of disk the copy has no branch
  * on a mixture's arrays (3.5% of a step at 10^5 disks with it). */
-static ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
-                                       size_t nm, size_t *mp, int mixture)
+static DS_ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
+                                          size_t nm, size_t *mp, int mixture)
 {
     const ds_disks *prev = &st->spare;
     const double *restrict x0 = prev->x;
@@ -193,7 +185,7 @@ static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
                           size_t *mp)
 {
     return ds_disks_columns(d) != DS_DISKS_EVERY_COLUMN ? merge_into(d, st, t, w, nm, mp, 1)
-                                 : merge_into(d, st, t, w, nm, mp, 0);
+                                                        : merge_into(d, st, t, w, nm, mp, 0);
 }
 
 /* Lists the disks outside their strip's band, with the strip their
@@ -358,9 +350,9 @@ void ds_strips_destroy(ds_bp *bp)
  * x < xlim (a prefix: the range is sorted by x); returns where that prefix
  * ends. A block of four first, branch-free (see sweep_block.h); the loop
  * only for longer windows, or near the end of the arrays. */
-static ALWAYS_INLINE size_t sweep_block(ds_disks *d, double diameter, size_t i, size_t j,
-                                        size_t end, double xlim, double d2max, ds_pair_fn on_pair,
-                                        void *ctx)
+static DS_ALWAYS_INLINE size_t sweep_block(ds_disks *d, double diameter, size_t i, size_t j,
+                                           size_t end, double xlim, double d2max,
+                                           ds_pair_fn on_pair, void *ctx)
 {
     const double *x = d->x, *y = d->y;
     if (j + 3 > d->n) /* the block would read past the sentinel */
