@@ -95,8 +95,8 @@ $(BUILD)/tests/test_alloc_failure: tests/test_alloc_failure.c tests/test_util.h 
 	$(CC) $(WARN) $(CPPFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) $(ALLOC_WRAP) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
-# After the C programs: the equation-of-state sweep's scripts on a small
-# sweep (tests/eos_sweep.sh, a second), and the Python module's pytest
+# After the C programs: the sweeps' scripts on small sweeps
+# (tests/eos_sweep.sh and tests/analysis_sweeps.sh, seconds), and the Python module's pytest
 # suite (python-test, below), which says in one line what it lacks instead
 # when a Python package is missing.
 test: all $(TEST_BIN)
@@ -105,6 +105,9 @@ test: all $(TEST_BIN)
 	done; \
 	echo "== tests/eos_sweep.sh"; \
 	PRESSURE="$(CURDIR)/$(OUT)tools/pressure" sh tests/eos_sweep.sh || fail=1; \
+	echo "== tests/analysis_sweeps.sh"; \
+	DISKS="$(CURDIR)/$(DISKS)" TRANSPORT="$(CURDIR)/$(OUT)tools/transport" \
+	    sh tests/analysis_sweeps.sh || fail=1; \
 	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
