@@ -96,7 +96,8 @@ $(BUILD)/tests/test_alloc_failure: tests/test_alloc_failure.c tests/test_util.h 
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
 # After the C programs: the sweeps' scripts on small sweeps
-# (tests/eos_sweep.sh and tests/analysis_sweeps.sh, seconds), and the Python module's pytest
+# (tests/eos_sweep.sh and tests/analysis_sweeps.sh, seconds), the plot
+# scripts (tests/plots.sh: PDF beside PNG, the state point), and the Python module's pytest
 # suite (python-test, below), which says in one line what it lacks instead
 # when a Python package is missing.
 test: all $(TEST_BIN)
@@ -108,6 +109,8 @@ test: all $(TEST_BIN)
 	echo "== tests/analysis_sweeps.sh"; \
 	DISKS="$(CURDIR)/$(DISKS)" TRANSPORT="$(CURDIR)/$(OUT)tools/transport" \
 	    sh tests/analysis_sweeps.sh || fail=1; \
+	echo "== tests/plots.sh"; \
+	DISKS="$(CURDIR)/$(DISKS)" GR="$(CURDIR)/$(OUT)tools/gr" sh tests/plots.sh || fail=1; \
 	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
