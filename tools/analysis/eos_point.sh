@@ -32,8 +32,10 @@
 # on stderr, and exits 1; DIR/points/point_INDEX.dat is then absent.
 set -eu
 # Where the other pieces are: in the checkout, tools/pressure one folder
-# up; `make install` rewrites this line with the installed disks-pressure.
-pressure=${PRESSURE:-$(cd "$(dirname "$0")" && pwd)/../pressure}
+# up; `make install` rewrites these two lines with the installed places
+# (docs/install.md).
+scripts=$(cd "$(dirname "$0")" && pwd)
+pressure=${PRESSURE:-$scripts/../pressure}
 height=866.0254037844386 # 1000 sqrt(3) / 2
 count=17
 high="0.60 0.65 0.67 0.68 0.69 0.70 0.705 0.71 0.716 0.72 0.73 0.75"
