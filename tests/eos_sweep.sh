@@ -156,7 +156,7 @@ order=$(sh "$analysis/eos_point.sh" --order $sweep | tr '\n' ' ')
     fail "the tasks were not submitted longest first ($order): $(cat "$FAKE_SLURM/submitted")"
 [ "${order%% *}" = 16 ] || fail "the 4N point is not the first of the order: $order"
 for k in $order; do
-    # shellcheck disable=SC2086
+    # shellcheck disable=SC2046,SC2086
     set -- $(sh "$analysis/eos_point.sh" --list $sweep | awk -v k="$k" '$1 == k')
     bytes=$("$PRESSURE" "$2" "$3" --periodic --lattice --box-y 866.0254037844386 --memory)
     mb=$(awk -v b="$bytes" 'BEGIN { m = b * 1.25 / 1048576; print (m == int(m) ? m : int(m) + 1) + 64 }')

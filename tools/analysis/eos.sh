@@ -91,7 +91,7 @@ for k in $(sh "$point" --order "$n" "$relax" "$blocks" "$block"); do
     [ -s "$dir/points/point_$k.dat" ] || todo="$todo $k"
     rm -f "$dir/points/point_$k.dat.err" # a reason from an earlier run
 done
-left=$(echo $todo | wc -w)
+left=$(echo "$todo" | wc -w)
 if [ "$state" = resume ]; then
     echo "eos: $dir: resuming, $((count - left)) of $count points done before (kept), $left to run, $jobs at a time" >&2
 else
