@@ -118,6 +118,7 @@ left=$(find "$stage" ! -type d)
 # The installed sweeps, run: under a prefix of their own (no DESTDIR, so the
 # paths make install writes into them are real), from another directory.
 prefix="$work/prefix"
+unset PKG_CONFIG_LIBDIR PKG_CONFIG_SYSROOT_DIR # the build's pkg-config again, not the stage's
 make -s install PREFIX="$prefix"
 mkdir "$work/run"
 (
