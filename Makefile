@@ -95,8 +95,9 @@ $(BUILD)/tests/test_alloc_failure: tests/test_alloc_failure.c tests/test_util.h 
 	$(CC) $(WARN) $(CPPFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) $(ALLOC_WRAP) -o $@ $< \
 	    $(LIB) $(CMOCKA_LIBS) $(LDLIBS)
 
-# After the C programs: the equation-of-state sweep's scripts on a small
-# sweep (tests/eos_sweep.sh, a second), and the Python module's pytest
+# After the C programs: the sweeps' scripts on small sweeps
+# (tests/eos_sweep.sh and tests/analysis_sweeps.sh, seconds), the plot
+# scripts (tests/plots.sh: PDF beside PNG, the state point), and the Python module's pytest
 # suite (python-test, below), which says in one line what it lacks instead
 # when a Python package is missing.
 test: all $(TEST_BIN)
@@ -105,6 +106,11 @@ test: all $(TEST_BIN)
 	done; \
 	echo "== tests/eos_sweep.sh"; \
 	PRESSURE="$(CURDIR)/$(OUT)tools/pressure" sh tests/eos_sweep.sh || fail=1; \
+	echo "== tests/analysis_sweeps.sh"; \
+	DISKS="$(CURDIR)/$(DISKS)" TRANSPORT="$(CURDIR)/$(OUT)tools/transport" \
+	    sh tests/analysis_sweeps.sh || fail=1; \
+	echo "== tests/plots.sh"; \
+	DISKS="$(CURDIR)/$(DISKS)" GR="$(CURDIR)/$(OUT)tools/gr" sh tests/plots.sh || fail=1; \
 	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
@@ -290,10 +296,31 @@ $(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# The analysis commands, installed under names that cannot clash with
+# other packages' (bin/disks-*), each with its man page: the programs of
+# tools/analysis/*.c and the sweeps a user runs (docs/sweeps.md). The
+# scripts those sweeps run in turn, and the gnuplot scripts, go to
+# share/disksim/.
+ANALYSIS_PROGRAMS = gr pressure transport
+ANALYSIS_SCRIPTS  = eos.sh:disks-eos eos.sbatch:disks-eos-slurm \
+                    diffusion_sweep.sh:disks-diffusion jamming.sh:disks-jamming
+ANALYSIS_HELPERS  = eos_point.sh eos_gather.sh sweep_dir.sh
+ANALYSIS_MAN      = disks-gr disks-pressure disks-transport disks-eos disks-diffusion \
+                    disks-jamming
+ANALYSIS_BIN      = $(ANALYSIS_PROGRAMS:%=disks-%) $(foreach s,$(ANALYSIS_SCRIPTS),$(lastword $(subst :, ,$(s))))
+# In the checkout each script finds the others beside itself and the
+# programs in tools/; installed, it finds them where make install puts them.
+# Every script says which lines this rewrites (docs/install.md).
+INSTALL_PATHS = sed -e 's|^\( *\)scripts=\$$(cd .*|\1scripts=$(DATADIR)/disksim|' \
+                    -e 's|\$$scripts/\.\./pressure|$(BINDIR)/disks-pressure|' \
+                    -e 's|\$$scripts/\.\./transport|$(BINDIR)/disks-transport|' \
+                    -e 's|\$$scripts/\.\./\.\./disks|$(BINDIR)/disks|' \
+                    -e 's|"\$$scripts/eos\.sbatch"|"$(BINDIR)/disks-eos-slurm"|'
+
 # disks-render and its man page are installed when the renderer has been
-# built (`make render`). The man page of disks names the gnuplot scripts by
-# their path under the default prefix; the installed copy names them where
-# they really are.
+# built (`make render`). The man pages name the gnuplot scripts by their
+# path under the default prefix; the installed copies name them where they
+# really are.
 install: all
 	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
 	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim \
@@ -308,9 +335,20 @@ install: all
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libdisksim.so
 	$(INSTALL) -m 644 include/disk_sim.h $(DESTDIR)$(INCLUDEDIR)/disk_sim.h
 	$(INSTALL) -m 644 disksim.pc $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc
-	sed 's|/usr/local/share/disksim|$(DATADIR)/disksim|g' man/disks.1 \
-	    > $(DESTDIR)$(MANDIR)/man1/disks.1
-	chmod 644 $(DESTDIR)$(MANDIR)/man1/disks.1
+	for page in disks $(ANALYSIS_MAN); do \
+	    sed 's|/usr/local/share/disksim|$(DATADIR)/disksim|g' man/$$page.1 \
+	        > $(DESTDIR)$(MANDIR)/man1/$$page.1 && \
+	    chmod 644 $(DESTDIR)$(MANDIR)/man1/$$page.1 || exit 1; \
+	done
+	ln -sf disks-eos.1 $(DESTDIR)$(MANDIR)/man1/disks-eos-slurm.1
+	for p in $(ANALYSIS_PROGRAMS); do \
+	    $(INSTALL) -m 755 $(OUT)tools/$$p $(DESTDIR)$(BINDIR)/disks-$$p || exit 1; done
+	for s in $(ANALYSIS_SCRIPTS); do \
+	    $(INSTALL_PATHS) tools/analysis/$${s%%:*} > $(DESTDIR)$(BINDIR)/$${s##*:} && \
+	    chmod 755 $(DESTDIR)$(BINDIR)/$${s##*:} || exit 1; done
+	for h in $(ANALYSIS_HELPERS); do \
+	    $(INSTALL_PATHS) tools/analysis/$$h > $(DESTDIR)$(DATADIR)/disksim/$$h && \
+	    chmod 644 $(DESTDIR)$(DATADIR)/disksim/$$h || exit 1; done
 	$(INSTALL) -m 644 man/disk_sim.3 $(DESTDIR)$(MANDIR)/man3/disk_sim.3
 	$(if $(PLT_FILES),$(INSTALL) -m 644 $(PLT_FILES) $(DESTDIR)$(DATADIR)/disksim/)
 	$(INSTALL) -m 644 $(DOC_FILES) $(DESTDIR)$(DOCDIR)/
@@ -323,6 +361,9 @@ uninstall:
 	    $(DESTDIR)$(INCLUDEDIR)/disk_sim.h $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc \
 	    $(DESTDIR)$(MANDIR)/man1/disks.1 $(DESTDIR)$(MANDIR)/man1/disks-render.1 \
 	    $(DESTDIR)$(MANDIR)/man3/disk_sim.3 \
+	    $(addprefix $(DESTDIR)$(BINDIR)/,$(ANALYSIS_BIN)) \
+	    $(ANALYSIS_MAN:%=$(DESTDIR)$(MANDIR)/man1/%.1) $(DESTDIR)$(MANDIR)/man1/disks-eos-slurm.1 \
+	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(ANALYSIS_HELPERS)) \
 	    $(addprefix $(DESTDIR)$(DATADIR)/disksim/,$(notdir $(PLT_FILES))) \
 	    $(addprefix $(DESTDIR)$(DOCDIR)/,$(DOC_FILES)) \
 	    $(addprefix $(DESTDIR)$(DOCDIR)/docs/,$(notdir $(DOC_PAGES)))

@@ -2,12 +2,17 @@
 # SPDX-License-Identifier: MIT
 # Installs into a temporary stage the way a distribution package is built
 # (make install DESTDIR=stage PREFIX=/usr), checks every installed file (the
-# manual pages rendered by man without a warning, the documentation), then
+# manual pages rendered by man without a warning, the documentation, the
+# analysis commands disks-* answering --help, each with its man page), then
 # builds examples/minimal.c and the README's library example against the
 # staged copy through pkg-config, once with the shared and once with the
 # static library, runs them, and checks that make uninstall removes it all.
+# Last, an install under a prefix of its own, where the installed sweeps run
+# small sweeps (and the Slurm one through tests/slurm/'s stand-in), finding
+# their helpers and programs where make install put them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+tree=$(pwd)
 
 header=include/disk_sim.h
 version=$(sed -n 's/^#define DS_VERSION_STRING "\(.*\)"/\1/p' "$header")
@@ -19,11 +24,25 @@ fail() { echo "install check: $*" >&2; exit 1; }
 
 make -s install DESTDIR="$stage" PREFIX=/usr
 
+analysis="disks-gr disks-pressure disks-transport disks-eos disks-eos-slurm disks-diffusion disks-jamming"
 for f in usr/bin/disks usr/lib/libdisksim.a "usr/lib/libdisksim.so.$version" \
          usr/include/disk_sim.h usr/lib/pkgconfig/disksim.pc \
          usr/share/man/man1/disks.1 usr/share/man/man3/disk_sim.3 \
-         usr/share/disksim/animate_disk.plt; do
+         usr/share/disksim/animate_disk.plt usr/share/disksim/eos_point.sh \
+         usr/share/disksim/eos_gather.sh usr/share/disksim/sweep_dir.sh \
+         $(for c in $analysis; do echo "usr/bin/$c usr/share/man/man1/$c.1"; done); do
     [ -f "$stage/$f" ] || fail "missing $f"
+done
+# Every installed command answers --help (exit status 0, its usage on
+# stdout; the programs of tools/ still call themselves gr, pressure and
+# transport there), and has its manual page; no command is installed
+# without one.
+for c in $analysis; do
+    out=$("$stage/usr/bin/$c" --help) || fail "installed $c --help failed"
+    echo "$out" | grep -q "^usage: " || fail "installed $c --help gives no usage: $out"
+done
+for c in "$stage"/usr/bin/*; do
+    [ -f "$stage/usr/share/man/man1/${c##*/}.1" ] || fail "${c##*/} is installed without a man page"
 done
 # The documentation where a package puts it, the manual with its pictures.
 doc=usr/share/doc/disksim
@@ -95,4 +114,34 @@ done
 make -s uninstall DESTDIR="$stage" PREFIX=/usr
 left=$(find "$stage" ! -type d)
 [ -z "$left" ] || fail "make uninstall left: $left"
-echo "install check: layout, pkg-config, shared and static examples, uninstall: OK"
+
+# The installed sweeps, run: under a prefix of their own (no DESTDIR, so the
+# paths make install writes into them are real), from another directory.
+prefix="$work/prefix"
+unset PKG_CONFIG_LIBDIR PKG_CONFIG_SYSROOT_DIR # the build's pkg-config again, not the stage's
+make -s install PREFIX="$prefix"
+mkdir "$work/run"
+(
+    cd "$work/run"
+    export PATH="$prefix/bin:$PATH"
+    disks-eos -j 2 64 1 2 1 >eos.out 2>&1 || fail "installed disks-eos failed: $(cat eos.out)"
+    [ "$(grep -vc '^#' eos.N64.relax1.blocks2x1/eos.dat)" -eq 15 ] || fail "installed disks-eos wrote no eos.dat"
+    disks-diffusion 32 0.1 >d.dat 2>&1 || fail "installed disks-diffusion failed: $(cat d.dat)"
+    [ "$(grep -vc '^#' d.dat)" -eq 1 ] || fail "installed disks-diffusion wrote no row: $(cat d.dat)"
+    disks-jamming 16 0.3 1 >j.tsv 2>&1 || fail "installed disks-jamming failed: $(cat j.tsv)"
+    [ "$(grep -vc '^#' j.tsv)" -eq 1 ] || fail "installed disks-jamming wrote no row: $(cat j.tsv)"
+    # Slurm through the stand-in, whose jobs run the spooled copy of the
+    # installed disks-eos-slurm with nothing of this environment.
+    mkdir slurm && cd slurm
+    FAKE_SLURM="$work/slurm-state" PATH="$tree/tests/slurm:$PATH" \
+        disks-eos-slurm submit 64 1 2 1 >submit.out 2>&1 ||
+        fail "installed disks-eos-slurm submit failed: $(cat submit.out)"
+    cmp -s eos.N64.relax1.blocks2x1/eos.dat ../eos.N64.relax1.blocks2x1/eos.dat ||
+        [ "$(awk '!/^#/ { $NF = ""; print }' eos.N64.relax1.blocks2x1/eos.dat)" = \
+          "$(awk '!/^#/ { $NF = ""; print }' ../eos.N64.relax1.blocks2x1/eos.dat)" ] ||
+        fail "installed disks-eos-slurm's jobs did not give disks-eos's table: $(cat submit.out)"
+) || exit 1
+make -s uninstall PREFIX="$prefix"
+left=$(find "$prefix" ! -type d)
+[ -z "$left" ] || fail "make uninstall left: $left"
+echo "install check: layout, analysis commands, pkg-config, shared and static examples, installed sweeps, uninstall: OK"

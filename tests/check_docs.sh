@@ -15,12 +15,15 @@
 #  2. every option that `PROGRAM --help` prints is in the program's manual
 #     page (the .TP tags of OPTIONS) and in the options table of its docs
 #     page (between "<!-- options: NAME" and "<!-- end options -->"), and
-#     neither documents an option the help does not print;
+#     neither documents an option the help does not print: disks, the
+#     renderer, the analysis programs (man/disks-gr.1 ...) and the sweeps
+#     of tools/analysis/ (man/disks-eos.1 ..., docs/sweeps.md);
 #  3. every option in an example command (code blocks and inline code of
 #     the markdown pages, EXAMPLES of the manual pages) is one the program
 #     has;
 #  4. the README's library example is examples/minimal.c (after its
-#     opening comment), as the README says;
+#     opening comment), as the README says, its compile lines name files
+#     that exist, and every "man ./man/PAGE" of the pages names a page;
 #  5. man/disk_sim.3 and docs/library.md name every function of
 #     include/disk_sim.h, and no page names a ds_ or DS_ identifier that
 #     the sources do not define or use;
@@ -227,16 +230,25 @@ else
     note "renderer not built: its options are not checked (${render:-no path given})"
 fi
 if [ -n "$gr" ] && [ -x "$gr" ]; then
-    check_program gr "$gr" - docs/cli.md gr && checked_programs="$checked_programs gr"
+    check_program gr "$gr" man/disks-gr.1 docs/cli.md gr && checked_programs="$checked_programs gr"
 fi
 if [ -n "$pressure" ] && [ -x "$pressure" ]; then
-    check_program pressure "$pressure" - docs/cli.md pressure &&
+    check_program pressure "$pressure" man/disks-pressure.1 docs/cli.md pressure &&
         checked_programs="$checked_programs pressure"
 fi
 if [ -n "$transport" ] && [ -x "$transport" ]; then
-    check_program transport "$transport" - docs/cli.md transport &&
+    check_program transport "$transport" man/disks-transport.1 docs/cli.md transport &&
         checked_programs="$checked_programs transport"
 fi
+# The sweeps installed as disks-eos, disks-eos-slurm, disks-diffusion and
+# disks-jamming: their help against their man pages and docs/sweeps.md
+# (disks-eos-slurm shares the page of disks-eos, whose OPTIONS are eos's).
+for sweep in eos:eos.sh:man/disks-eos.1 eos-slurm:eos.sbatch:- \
+             diffusion:diffusion_sweep.sh:man/disks-diffusion.1 jamming:jamming.sh:man/disks-jamming.1; do
+    sw_name=${sweep%%:*} sw_rest=${sweep#*:}
+    check_program "$sw_name" "tools/analysis/${sw_rest%%:*}" "${sw_rest#*:}" docs/sweeps.md "$sw_name" &&
+        checked_programs="$checked_programs $sw_name"
+done
 
 # ------------------------------------------------------------ 3. example commands
 
@@ -249,11 +261,18 @@ command_lines() {
     awk '
     FNR == 1 { fence = 0; table = 0; ex = 0; held = "" }
     function commands(text, where,    w, rest, seg, prog) {
-        while (match(text, /(^|[ \/;&|(`$])(disks-render|disks|render-osmesa|render-egl|render|gr|pressure|transport)( |$)/)) {
+        while (match(text, /(^|[ \/;&|(`$])(disks-render|disks-gr|disks-pressure|disks-transport|disks-eos-slurm|disks-eos|disks-diffusion|disks-jamming|disks|render-osmesa|render-egl|render|gr|pressure|transport|eos\.sh|eos\.sbatch|diffusion_sweep\.sh|jamming\.sh)( |$)/)) {
             w = substr(text, RSTART, RLENGTH); rest = substr(text, RSTART + RLENGTH)
             sub(/^[ \/;&|(`$]/, "", w); sub(/ $/, "", w)
             prog = w
             if (prog ~ /render/) prog = "render"
+            # The installed names of the analysis commands, and the sweeps
+            # by their names in the tree.
+            if (prog ~ /^disks-./) sub(/^disks-/, "", prog)
+            if (prog == "eos.sh") prog = "eos"
+            if (prog == "eos.sbatch") prog = "eos-slurm"
+            if (prog == "diffusion_sweep.sh") prog = "diffusion"
+            if (prog == "jamming.sh") prog = "jamming"
             seg = rest
             sub(/(\||;|&&|>|\)|#|`).*$/, "", seg)
             printf "%s %s %s %s\n", FILENAME, where, prog, seg
@@ -320,6 +339,23 @@ else
     cmp -s "$work/readme.c" "$work/minimal.c" ||
         problem "README.md: the library example differs from examples/minimal.c: $(diff "$work/minimal.c" "$work/readme.c" | head -3 | tr '\n' ' ')"
 fi
+
+# The C files the README's compile lines name, and the manual pages the
+# pages read by path ("man ./man/disks.1"), exist from the top of the tree,
+# where the README says to run them.
+awk '/^```/ { fence = !fence; next }
+     { line = $0
+       while (match(line, /(^|[ `])cc [^`]*[.]c/)) {
+           c = substr(line, RSTART, RLENGTH); line = substr(line, RSTART + RLENGTH)
+           n = split(c, w, " "); print FNR, w[n]
+       } }' README.md > "$work/compiled"
+while read -r line file; do
+    [ -f "$file" ] || problem "README.md:$line: a compile line names $file, which is not in the tree"
+done < "$work/compiled"
+grep -no 'man \./man/[A-Za-z0-9_.-]*' $MD_FILES | while IFS=: read -r file line cmd; do
+    [ -f "${cmd#man }" ] || echo "$file:$line: '$cmd': no page ${cmd#man ./}"
+done > "$work/pages"
+while read -r what; do problem "$what"; done < "$work/pages"
 
 # ------------------------------------------------------------ 5. the API named
 

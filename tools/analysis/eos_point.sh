@@ -1,14 +1,22 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # One point of the equation-of-state sweep (tools/analysis/eos.sh runs
-# them N at a time, tools/analysis/eos.sbatch one per Slurm array task):
-# point INDEX of the sweep for N disks, run with tools/pressure, its row
-# written to DIR/point_INDEX.dat (complete or not at all) and printed.
+# them N at a time, tools/analysis/eos.sbatch one per Slurm job): point
+# INDEX of the sweep for N disks, run with tools/pressure, its row written
+# to DIR/points/point_INDEX.dat (complete or not at all) and printed. A
+# point whose row is already there is not run again: its row is printed
+# and kept (docs/sweeps.md: a sweep resumes, it never replaces a result).
 #
 #   sh tools/analysis/eos_point.sh INDEX DIR [N] [RELAX] [BLOCKS] [BLOCK]
 #   sh tools/analysis/eos_point.sh --count          (prints how many points)
 #   sh tools/analysis/eos_point.sh --list [N] [RELAX] [BLOCKS] [BLOCK]
-#                                                   (prints what each would run)
+#                                   (prints what each would run: the sweep's definition)
+#   sh tools/analysis/eos_point.sh --name [N] [RELAX] [BLOCKS] [BLOCK]
+#                                   (prints the sweep's directory, eos.N16384.relax50.blocks15x10)
+#   sh tools/analysis/eos_point.sh --order [N] [RELAX] [BLOCKS] [BLOCK]
+#                                   (prints the indices, longest point first)
+#   sh tools/analysis/eos_point.sh --memory INDEX [N] [RELAX] [BLOCKS] [BLOCK]
+#                                   (prints the megabytes to ask Slurm for)
 #
 # The points (defaults N 16384, RELAX 50, BLOCKS 15, BLOCK 10):
 #    0- 2  area fraction 0.1, 0.3, 0.5: relaxation 10, 20 blocks of 1
@@ -21,10 +29,13 @@
 # periodic box of aspect sqrt(3)/2 started on the lattice that fits it.
 #
 # On failure it says which point failed and why (tools/pressure's words),
-# on stderr, and exits 1; DIR/point_INDEX.dat is then absent.
+# on stderr, and exits 1; DIR/points/point_INDEX.dat is then absent.
 set -eu
-top=$(cd "$(dirname "$0")/../.." && pwd)
-pressure=${PRESSURE:-$top/tools/pressure}
+# Where the other pieces are: in the checkout, tools/pressure one folder
+# up; `make install` rewrites these two lines with the installed places
+# (docs/install.md).
+scripts=$(cd "$(dirname "$0")" && pwd)
+pressure=${PRESSURE:-$scripts/../pressure}
 height=866.0254037844386 # 1000 sqrt(3) / 2
 count=17
 high="0.60 0.65 0.67 0.68 0.69 0.70 0.705 0.71 0.716 0.72 0.73 0.75"
@@ -46,15 +57,57 @@ point() { # INDEX N RELAX BLOCKS BLOCK
     }'
 }
 
-if [ "${1:-}" = --list ]; then
-    shift
+# Every point, "INDEX N ETA RELAX BLOCKS BLOCK" a line.
+points() { # N RELAX BLOCKS BLOCK
     k=0
     while [ "$k" -lt "$count" ]; do
-        echo "$k $(point "$k" "${1:-16384}" "${2:-50}" "${3:-15}" "${4:-10}")"
+        echo "$k $(point "$k" "$1" "$2" "$3" "$4")"
         k=$((k + 1))
     done
+}
+
+case ${1:-} in
+--list)
+    shift
+    points "${1:-16384}" "${2:-50}" "${3:-15}" "${4:-10}"
     exit 0
-fi
+    ;;
+--name)
+    shift
+    echo "eos.N${1:-16384}.relax${2:-50}.blocks${3:-15}x${4:-10}"
+    exit 0
+    ;;
+--order)
+    # The cost of a point is its collisions: N nu T / 2, with nu the
+    # collisions per disk per unit time, nu ~ (Z - 1) / sigma, Z from
+    # Henderson's equation of state (1 + eta^2 / 8) / (1 - eta)^2 and the
+    # diameter sigma ~ sqrt(eta / N) at a fixed box; each costs ~log N (the
+    # event queue). So cost ~ T N^1.5 log N (Z - 1) / sqrt(eta), good
+    # enough to put the longest first (docs/sweeps.md compares it with the
+    # seconds the points took).
+    shift
+    points "${1:-16384}" "${2:-50}" "${3:-15}" "${4:-10}" | awk '{
+        n = $2; eta = $3; t = $4 + $5 * $6
+        z = (1 + eta * eta / 8) / ((1 - eta) * (1 - eta))
+        printf "%s %.6e\n", $1, t * n ^ 1.5 * log(n + 1) * (z - 1) / sqrt(eta)
+    }' | sort -k2,2gr -k1,1n | awk '{ print $1 }'
+    exit 0
+    ;;
+--memory)
+    # What the point's simulation allocates (ds_memory_needed, through
+    # tools/pressure --memory) and a quarter more, plus 64 MB for the
+    # program itself, the shell and awk: the peak resident size measured
+    # was the estimate plus 2 to 6 MB (docs/sweeps.md).
+    shift
+    [ $# -ge 1 ] || { echo "usage: eos_point.sh --memory INDEX [N] [RELAX] [BLOCKS] [BLOCK]" >&2; exit 2; }
+    # shellcheck disable=SC2046 # the point's five words become $1 .. $5
+    set -- $(point "$1" "${2:-16384}" "${3:-50}" "${4:-15}" "${5:-10}")
+    [ $# -eq 5 ] || { echo "eos_point: INDEX must be 0 to $((count - 1))" >&2; exit 2; }
+    bytes=$("$pressure" "$1" "$2" --periodic --lattice --box-y "$height" --memory) || exit 1
+    awk -v b="$bytes" 'BEGIN { m = b * 1.25 / 1048576; printf "%d\n", (m == int(m) ? m : int(m) + 1) + 64 }'
+    exit 0
+    ;;
+esac
 
 if [ $# -lt 2 ]; then
     echo "usage: sh tools/analysis/eos_point.sh INDEX DIR [N] [RELAX] [BLOCKS] [BLOCK]" >&2
@@ -72,19 +125,26 @@ fi
 # shellcheck disable=SC2046 # the point's five words become $1 .. $5
 set -- $(point "$index" "${3:-16384}" "${4:-50}" "${5:-15}" "${6:-10}")
 what="point $index (N = $1, area fraction $2, relaxation $3, $4 blocks of $5)"
+out="$dir/points/point_$index.dat"
+if [ -s "$out" ]; then
+    echo "eos_point: $what: done before, kept ($out)" >&2
+    cat "$out"
+    exit 0
+fi
 if [ ! -x "$pressure" ]; then
     echo "eos_point: $what: $pressure is not built (run make)" >&2
     exit 1
 fi
-mkdir -p "$dir"
-out="$dir/point_$index.dat"
-rm -f "$out"
+mkdir -p "$dir/points"
+# The partial files carry this process's id: a point started twice at once
+# (a Slurm job run again while the first still runs) writes two, not one.
+tmp="$out.$$"
 if ! "$pressure" "$1" "$2" --periodic --lattice --box-y "$height" --relax "$3" --blocks "$4" \
-    --block "$5" >"$out.tmp" 2>"$out.err"; then
+    --block "$5" >"$tmp" 2>"$out.err"; then
     echo "eos_point: $what failed: $(cat "$out.err")" >&2
-    rm -f "$out.tmp"
+    rm -f "$tmp"
     exit 1
 fi
-mv "$out.tmp" "$out"
+mv "$tmp" "$out"
 rm -f "$out.err"
 cat "$out"

@@ -116,7 +116,7 @@ int main(int argc, char **argv)
     }
     if (f.count < 2)
         die(EXIT_RUN, "%s: g(r) needs at least two disks", path);
-    double radius = 0.0;
+    double radius = 0.0, covered = 0.0;
     for (size_t j = 0; j < f.count; ++j) {
         const ds_frame_disk *d = &f.disks[j];
         if (!(d->x >= 0.0 && d->x <= box && d->y >= 0.0 && d->y <= box_y))
@@ -124,6 +124,7 @@ int main(int argc, char **argv)
                 "%s: disk %zu at (%g, %g) is outside the %g x %g box (give --box, --box-y)", path,
                 j + 1, d->x, d->y, box, box_y);
         radius = fmax(radius, d->r);
+        covered += PI * d->r * d->r;
     }
     const double area =
         periodic ? box * box_y : fmax(box - 2.0 * radius, 0.0) * fmax(box_y - 2.0 * radius, 0.0);
@@ -156,8 +157,10 @@ int main(int argc, char **argv)
     free(xy);
 
     const double n = (double)f.count;
-    printf("# g(r) of %s: N = %zu, d = %g, box %g x %g, %s, dr = %g\n", path, f.count, 2.0 * radius,
-           box, box_y, periodic ? "periodic" : "walls (normalisation ignores them)", dr);
+    /* The state point, which tools/analysis/plot_gr.plt puts in its title. */
+    printf("# g(r) of %s: N = %zu, area fraction %.4g, d = %g, box %g x %g, %s, dr = %g\n", path,
+           f.count, covered / (box * box_y), 2.0 * radius, box, box_y,
+           periodic ? "periodic" : "walls (normalisation ignores them)", dr);
     for (size_t b = 0; b < nbins; ++b) {
         const double r0 = (double)b * dr, r1 = r0 + dr;
         const double ideal = 0.5 * n * (n - 1.0) * PI * (r1 * r1 - r0 * r0) / area;

@@ -3,10 +3,14 @@
 # tools/analysis/eos.sh (eos.dat: columns eta N integrator dt boundary Z error ...),
 # with the virial series through B10 (Clisby and McCoy 2006) and the
 # published points of Li et al. 2022 and Engel et al. 2013.
-#   gnuplot tools/analysis/plot_eos.plt    (after sh tools/analysis/eos.sh, in its directory;
-#                                           writes eos.png; the N in the legend is the data's)
-set terminal pngcairo size 900,640 font ",11"
-set output "eos.png"
+#   cd eos.N16384.relax50.blocks15x10 && gnuplot CHECKOUT/tools/analysis/plot_eos.plt
+#       (tools/analysis/eos_gather.sh runs it in the sweep's directory; the N in
+#        the legend is the data's)
+# Writes eos.png and, for print, eos.pdf (set out='name.png' to change
+# both, formats='png' for the PNG alone, formats='png svg' for an SVG too).
+if (!exists("out")) out = 'eos.png'
+if (!exists("formats")) formats = 'png pdf'
+stem = strlen(out) > 4 && out[strlen(out) - 3:] eq '.png' ? out[1:strlen(out) - 4] : out
 # Reduced virial coefficients B_k / B_2^(k-1), k = 2..10, in powers of 2 eta.
 b2 = 1.0; b3 = 0.78200443; b4 = 0.53223180; b5 = 0.33355604; b6 = 0.19884
 b7 = 0.11487; b8 = 0.06499; b9 = 0.03622; b10 = 0.01995
@@ -40,30 +44,42 @@ z_lo = STATS_min < z_lo ? STATS_min : z_lo
 stats "eos_size.dat" using (in_inset($1) ? $6 + $7 : NaN) nooutput
 z_hi = STATS_max > z_hi ? STATS_max : z_hi
 margin = 0.08 * (z_hi - z_lo)
-set multiplot
-# The whole range.
-set xlabel "area fraction {/Symbol h}"
-set ylabel "Z = P A / (N kT)"
-set key bottom right
-set grid
-set xrange [0:0.78]
-set yrange [0:z_top]
-plot series(x) with lines lw 2 lc rgb "#888888" title "virial series B_2..B_{10}", \
-     $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728" title "Li 2022 (0.670, 0.698), Engel 2013 (0.700 to 0.720)", \
-     "eos.dat" using 1:6:7 with yerrorbars pt 7 ps 1 lc rgb "#1f77b4" title sprintf("disksim: event-driven, periodic, N = %d", n), \
-     "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c" title sprintf("disksim at 0.70, N = %d, %d, %d", n_small, n, n_large)
-# The melting region, enlarged: the loop between 0.70 and 0.72.
-set origin 0.09, 0.42
-set size 0.55, 0.52
-set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb "white" fillstyle solid noborder
-unset xlabel
-unset ylabel
-unset key
-set xrange [inset_lo:inset_hi]
-set yrange [z_lo - margin:z_hi + margin]
-set xtics 0.02
-set ytics autofreq
-plot $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728", \
-     "eos.dat" using 1:6:7 with yerrorlines pt 7 ps 1 lc rgb "#1f77b4", \
-     "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c"
-unset multiplot
+do for [format in formats] {
+    reset
+    if (format eq 'png') { set terminal pngcairo size 900,640 font ',11' }
+    if (format eq 'pdf') { set terminal pdfcairo size 7in,5in font ',9' }
+    if (format eq 'svg') { set terminal svg size 900,640 font ',11' }
+    set output format eq 'png' ? out : stem . '.' . format
+    set multiplot
+    # The whole range.
+    set xlabel "area fraction {/Symbol h}"
+    set ylabel "Z = P A / (N kT)"
+    # The state of disksim's runs (tools/analysis/eos_point.sh) in the title,
+    # their N in the key, which sits under the curve, clear of it.
+    set title "Hard disks, event-driven, in a periodic 1000 x 866.03 box, from a lattice"
+    set key bottom right
+    set grid
+    set xrange [0:0.78]
+    set yrange [0:z_top]
+    plot series(x) with lines lw 2 lc rgb "#888888" title "virial series B_2..B_{10}", \
+         $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728" title "Li 2022 (< 0.70), Engel 2013", \
+         "eos.dat" using 1:6:7 with yerrorbars pt 7 ps 1 lc rgb "#1f77b4" title sprintf("disksim, N = %d", n), \
+         "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c" title sprintf("disksim at 0.70, N = %d, %d, %d", n_small, n, n_large)
+    # The melting region, enlarged: the loop between 0.70 and 0.72.
+    set origin 0.09, 0.40
+    set size 0.55, 0.50
+    set object 1 rectangle from graph 0,0 to graph 1,1 behind fillcolor rgb "white" fillstyle solid noborder
+    unset title
+    unset xlabel
+    unset ylabel
+    unset key
+    set xrange [inset_lo:inset_hi]
+    set yrange [z_lo - margin:z_hi + margin]
+    set xtics 0.02
+    set ytics autofreq
+    plot $ref using 1:2 with points pt 6 ps 2 lw 2 lc rgb "#d62728", \
+         "eos.dat" using 1:6:7 with yerrorlines pt 7 ps 1 lc rgb "#1f77b4", \
+         "eos_size.dat" using 1:6:7 with yerrorbars pt 5 ps 0.8 lc rgb "#2ca02c"
+    unset multiplot
+    unset output
+}

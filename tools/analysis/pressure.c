@@ -5,7 +5,7 @@
  *
  *   pressure N ETA [--integrator step|event] [--dt DT] [--periodic]
  *            [--lattice] [--box-y H] [--relax T] [--blocks B] [--block T]
- *            [--seed S]
+ *            [--seed S] [--memory]
  *
  * The N disks cover the area fraction ETA of the 1000 x H box (H = 1000
  * unless --box-y): R = sqrt(ETA 1000 H / (N pi)). After T time units of relaxation (default
@@ -22,7 +22,9 @@
  *
  * Prints one line:
  *   eta N integrator dt boundary Z_virial error Z_walls error collisions seconds
- * (Z_walls and its error are "-" in a periodic box). */
+ * (Z_walls and its error are "-" in a periodic box). With --memory it runs
+ * nothing and prints the bytes the simulation would allocate
+ * (ds_memory_needed), which tools/analysis/eos.sbatch asks Slurm for. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -34,11 +36,28 @@
 
 #define PI 3.14159265358979323846
 
+static const char usage_text[] =
+    "usage: pressure N ETA [--integrator step|event] [--dt DT] [--periodic] [--lattice]\n"
+    "                [--box-y H] [--relax T] [--blocks B] [--block T] [--seed S] [--memory]\n"
+    "Prints Z = P A / (N kT) of N disks covering the area fraction ETA of the\n"
+    "1000 x H box, with the standard error of its mean over B blocks, as one line\n"
+    "  eta N integrator dt boundary Z_virial error Z_walls error collisions seconds\n"
+    "  --integrator I  step or event (default event)\n"
+    "  --dt DT         time step, and with events the interval between observations\n"
+    "  --periodic      periodic box instead of walls\n"
+    "  --lattice       start on a triangular lattice instead of random placement\n"
+    "  --box-y H       height of the box (default 1000)\n"
+    "  --relax T       time units of relaxation before the blocks (default 5)\n"
+    "  --blocks B      number of blocks (default 20)\n"
+    "  --block T       time units per block (default 1)\n"
+    "  --seed S        seed (default 20260101)\n"
+    "  --memory        run nothing: print the bytes the simulation would allocate\n"
+    "  --help          show this help and exit\n"
+    "exit status: 0 success, 1 parameters the library refuses, 2 usage error\n";
+
 static void usage(void)
 {
-    fputs("usage: pressure N ETA [--integrator step|event] [--dt DT] [--periodic] [--lattice]\n"
-          "                [--box-y H] [--relax T] [--blocks B] [--block T] [--seed S]\n",
-          stderr);
+    fputs(usage_text, stderr);
     exit(2);
 }
 
@@ -49,6 +68,11 @@ static double number(const char *s, double lo, double hi, const char *what)
 
 int main(int argc, char **argv)
 {
+    for (int i = 1; i < argc; ++i)
+        if (strcmp(argv[i], "--help") == 0) {
+            fputs(usage_text, stdout);
+            return 0;
+        }
     if (argc < 3)
         usage();
     const size_t n = (size_t)number(argv[1], 1, 1e8, "N");
@@ -57,7 +81,7 @@ int main(int argc, char **argv)
     p.integrator = DS_EVENT_DRIVEN;
     p.box_y = 1000.0;
     double relax = 5.0, block = 1.0;
-    int blocks = 20;
+    int blocks = 20, memory = 0;
     for (int i = 3; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--periodic") == 0) {
@@ -66,6 +90,10 @@ int main(int argc, char **argv)
         }
         if (strcmp(a, "--lattice") == 0) {
             p.placement = DS_LATTICE;
+            continue;
+        }
+        if (strcmp(a, "--memory") == 0) {
+            memory = 1;
             continue;
         }
         if (!v)
@@ -94,6 +122,14 @@ int main(int argc, char **argv)
     ds_sim *sim = NULL;
     ds_params_error why;
     ds_status st = ds_diagnose_params(&p, NULL, &why);
+    if (memory && st == DS_OK) {
+        size_t bytes = 0;
+        st = ds_memory_needed(&p, &bytes);
+        if (st == DS_OK) {
+            printf("%zu\n", bytes);
+            return 0;
+        }
+    }
     if (st == DS_OK)
         st = ds_create(&p, &sim);
     if (st != DS_OK) {
