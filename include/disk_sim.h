@@ -135,7 +135,11 @@ typedef enum ds_placement {
     DS_LATTICE
 } ds_placement;
 
-/* How candidate pairs are found. All give exactly the same pairs. */
+/* How candidate pairs are found. In the same state every one finds the
+ * same pairs; each resolves them in its own order, so the time step's
+ * trajectories are the same to the bit only until a step in which a disk
+ * overlaps two others, and the event-driven ones the same up to rounding
+ * (docs/library.md, "What the broad phases share"). */
 typedef enum ds_broadphase {
     DS_SAP = 0,     /* sweep and prune along x, insertion sort (the seed's) */
     DS_BRUTE_FORCE, /* all pairs, O(N^2): the reference (both integrators) */

@@ -1,7 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* The time step's broad phases: which pairs of disks overlap after a
  * move. Interchangeable behind broad_phase.c's dispatcher, all reporting
- * exactly the same pairs:
+ * exactly the same pairs, each in an order of its own (SAP by x, strips
+ * strip by strip, brute force by slot, the seam pass after a sweep). The
+ * order matters only when a disk is in two overlapping pairs: otherwise
+ * the pairs share no disk and their collisions commute to the bit
+ * (docs/library.md, "What the broad phases share"):
  *
  * - DS_SAP (sap.c): the seed's sweep and prune along x, the slots kept in
  *   x order by insertion sort (insertion_sort.c);
@@ -59,7 +63,8 @@ ds_status ds_bp_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds
 size_t ds_bp_bytes(const ds_world *w);
 
 /* Brings the slots into the order the sweep needs, then reports every
- * overlapping pair exactly once. Returns the number of narrow-phase tests. */
+ * overlapping pair exactly once, in the broad phase's own order. Returns
+ * the number of narrow-phase tests. */
 uint64_t ds_bp_find_pairs(ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);
 
 /* Insertion sort of slots [lo, hi) by x, all arrays moving together
