@@ -3,11 +3,11 @@
  * data and of every operation that moves or permutes it.
  *
  * Slot k of every array is one disk. The broad phases keep the slots in
- * the order their sweeps read (x order for DS_SAP, strip then x for
- * DS_SAP_STRIPS, cell order for the event-driven integrator), so a disk's
+ * the order their sweeps read (x order for DS_BROADPHASE_SAP, strip then x for
+ * DS_BROADPHASE_STRIPS, cell order for the event-driven integrator), so a disk's
  * slot changes and id[k] says which disk (its generation index) slot k
  * holds; slot[i] is the inverse, rebuilt after the slots move. Every
- * array has one element past n: DS_SAP keeps x[n] = +infinity there as a
+ * array has one element past n: DS_BROADPHASE_SAP keeps x[n] = +infinity there as a
  * sweep sentinel.
  *
  * Adding a per-disk array (a radius, a mass, image counters) is one edit
@@ -65,7 +65,7 @@ ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses);
 /* The image counters of a periodic box, zero, sentinel slot included. */
 ds_status ds_disks_add_images(ds_disks *d);
 /* A second set of the moving arrays of `like` (no slot[]), for a broad
- * phase that rebuilds the order into it and swaps (DS_SAP_STRIPS). */
+ * phase that rebuilds the order into it and swaps (DS_BROADPHASE_STRIPS). */
 ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like);
 void ds_disks_free(ds_disks *d); /* NULL pointers are allowed */
 

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_EVENT_DRIVEN: exact dynamics of hard disks.
+/* DS_INTEGRATOR_EVENT_DRIVEN: exact dynamics of hard disks.
  *
  * Between events every disk flies in a straight line, so the state is
  * advanced from event to event instead of by a fixed step: a pair
@@ -209,13 +209,14 @@ static void rebase(ds_events *e, size_t n, double t)
     e->growth.window_start -= t;
 }
 
-static void run(ds_sim *sim, uint64_t steps)
+static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
     ds_events *e = sim->state;
+    ds_status st = DS_OK;
     ds_timer_start(&sim->collision_timer);
     double target = (double)sim->steps * sim->world.dt - e->epoch;
     sim->tally.stress_clock = target;
-    for (uint64_t s = 0; s < steps; ++s) {
+    for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
         for (;;) {
@@ -243,11 +244,17 @@ static void run(ds_sim *sim, uint64_t steps)
         }
         /* Growing: cells wide enough for the next step's contacts, or the
          * state made again (it then starts at the present time, 0), or
-         * without memory for that the growth stopped and the steps go on. */
+         * without memory for that the growth stopped, and the run stops
+         * at this step's end. */
         if (e->growth.rate > 0.0) {
             sim->tally.pairs_tested += e->tested;
             e->tested = 0;
-            (void)ds_ed_growth_step_end(sim, target + sim->world.dt); /* no memory: it stopped */
+            st = ds_ed_growth_step_end(sim, target + sim->world.dt);
+            if (st != DS_OK)
+                ds_refuse(err, st, "steps", (double)sim->steps, NAN,
+                          "steps: no memory for the wider cells growth needs after step %llu: "
+                          "the growth stopped there, and the run",
+                          (unsigned long long)sim->steps);
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
             sim->tally.stress_clock = target; /* the state made again has its own clock */
@@ -258,18 +265,22 @@ static void run(ds_sim *sim, uint64_t steps)
     e->tested = 0;
     ds_ed_show_at(&sim->disks, e, target);
     ds_ed_show_radii(sim, e, target);
+    return st;
 }
 
 /* ------------------------------------------------------------------ */
-/* Creation, ds_set                                                     */
+/* Creation, ds_sim_set_disk                                                     */
 /* ------------------------------------------------------------------ */
 
-static ds_broadphase grid_of(ds_broadphase bp) { return bp == DS_BRUTE_FORCE ? bp : DS_CELLS; }
+static ds_broadphase grid_of(ds_broadphase bp)
+{
+    return bp == DS_BROADPHASE_BRUTE ? bp : DS_BROADPHASE_CELLS;
+}
 
 static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp)
 {
     size_t cells = ds_cells_bytes(n, box_x, box_y, 2.0 * radius,
-                                  grid_of(bp) == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
+                                  grid_of(bp) == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
     return sizeof(ds_events) + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
 }
 
@@ -279,7 +290,7 @@ static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_b
 static size_t event_bytes(const ds_world *w)
 {
     return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase) +
-           (w->boundary == DS_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
+           (w->boundary == DS_BOUNDARY_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
 }
 
 static size_t bytes(const ds_world *w) { return event_bytes(w) + w->n * sizeof(double); }
@@ -347,12 +358,12 @@ ds_status ds_ed_alloc(ds_sim *sim)
     sim->state = e;
     e->box_x = w->box;
     e->box_y = w->box_y;
-    e->periodic = w->boundary == DS_PERIODIC;
+    e->periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     e->lo_x = e->lo_y = w->radius;
     e->hi_x = w->box - w->radius;
     e->hi_y = w->box_y - w->radius;
     e->sigma2 = 4.0 * w->radius * w->radius;
-    /* The clock starts at the present step boundary (ds_set_all comes
+    /* The clock starts at the present step boundary (ds_sim_set_disks comes
      * here later in a run). */
     e->epoch = (double)sim->steps * w->dt;
     /* Move the epoch about once per time a disk takes to cross the box:
@@ -368,7 +379,7 @@ ds_status ds_ed_alloc(ds_sim *sim)
         st = DS_ERR_NOMEM;
     if (st == DS_OK)
         st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius_max,
-                           w->broadphase == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
+                           w->broadphase == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
     if (st == DS_OK)
         st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));
     /* Fetching ahead pays once the state outgrows the caches; below, it is
@@ -506,22 +517,31 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
 /* ------------------------------------------------------------------ */
 
 /* The integrator's cell grid, or brute force: one cell for everyone. */
-static int fits(ds_broadphase bp) { return bp == DS_CELLS || bp == DS_BRUTE_FORCE; }
+static int fits(ds_broadphase bp) { return bp == DS_BROADPHASE_CELLS || bp == DS_BROADPHASE_BRUTE; }
 
 static ds_broadphase choose(const ds_world *w)
 {
     (void)w;
-    return DS_CELLS;
+    return DS_BROADPHASE_CELLS;
 }
 
 /* Disk numbers share 32 bits with the EV_* kinds, and the calendar's
  * entries keep them in 30. */
-static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *err)
+static ds_status check(const ds_world *w, unsigned *warnings, ds_error *err)
 {
     (void)warnings;
     if (w->n >= ((size_t)1 << 30))
-        return ds_refuse(err, DS_ERR_NOMEM, "n",
+        return ds_refuse(err, DS_ERR_NOMEM, "n", (double)w->n, (double)((size_t)1 << 30),
                          "n = %zu disks: the event-driven integrator takes fewer than 2^30", w->n);
+    return DS_OK;
+}
+
+static ds_status create(ds_sim *sim, ds_error *err)
+{
+    const ds_status st = ds_ed_create(sim);
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)sim->world.n, NAN,
+                         "n = %zu disks: no memory for the event-driven integrator", sim->world.n);
     return DS_OK;
 }
 
@@ -534,7 +554,7 @@ const ds_integrator_ops ds_event_driven_ops = {
     .choose = choose,
     .check = check,
     .bytes = bytes,
-    .create = ds_ed_create,
+    .create = create,
     .destroy = ds_ed_destroy,
     .run = run,
     .set = set,

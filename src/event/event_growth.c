@@ -255,8 +255,8 @@ static ds_status build_again(const ds_sim *sim, ds_events *e, ds_sim *fresh, dou
  * step's end, with wider cells, and swapped in once it stands, the growth
  * going on in it. Without memory for it the state stays as it was and the
  * growth stops now, its heat out, since its cells cannot hold the next
- * step's contacts: DS_ERR_NOMEM, and ds_growth_state_of says
- * DS_GROWTH_NONE (ds_run, which returns nothing in 2.x, goes on). */
+ * step's contacts: DS_ERR_NOMEM, and ds_sim_get_growth_state says
+ * DS_GROWTH_NONE (the run stops there with that status). */
 ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next)
 {
     ds_events *e = sim->state;
@@ -299,7 +299,7 @@ int ds_ed_growth_state(const ds_sim *sim, double *z)
 {
     const ds_growth *g = &((const ds_events *)sim->state)->growth;
     *z = g->last_z;
-    return g->rate > 0.0     ? DS_GROWING
+    return g->rate > 0.0     ? DS_GROWTH_GROWING
            : g->stopped == 1 ? DS_GROWTH_REACHED_ETA
            : g->stopped == 2 ? DS_GROWTH_JAMMED
                              : DS_GROWTH_NONE;
