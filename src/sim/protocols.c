@@ -13,16 +13,14 @@ static ds_status check_targets(const ds_sim *sim, double until_eta, double until
     const double eta = ds_sim_get_area_fraction(sim);
     if (!(until_eta >= 0.0 && until_eta < 1.0))
         return ds_refuse(err, DS_ERR_ARG, "until_eta", until_eta, until_eta < 1.0 ? 0.0 : 1.0,
-                         "until_eta = %g must be an area fraction between 0 and 1 (0: no target)",
-                         until_eta);
+                         "until_eta = %g must be an area fraction between 0 and 1", until_eta);
     if (until_eta > 0.0 && until_eta <= eta)
         return ds_refuse(err, DS_ERR_ARG, "until_eta", until_eta, eta,
-                         "until_eta = %g must be above the area fraction of now, %.6g", until_eta,
+                         "until_eta = %g must be above the start's area fraction %.6g", until_eta,
                          eta);
     if (!(until_z == 0.0 || (until_z > 1.0 && until_z <= 1e9)))
         return ds_refuse(err, DS_ERR_ARG, "until_z", until_z, until_z > 1.0 ? 1e9 : 1.0,
-                         "until_z = %g must be a reduced pressure > 1 and <= 1e9 (0: %g)", until_z,
-                         DS_JAMMED_Z);
+                         "until_z = %g must be a reduced pressure > 1 and <= 1e9", until_z);
     return DS_OK;
 }
 
@@ -56,8 +54,8 @@ ds_status ds_sim_set_growth(ds_sim *sim, double rate, double until_eta, double u
         return ds_refuse(err, DS_ERR_ARG, "sim", NAN, NAN, "sim: NULL");
     if (!sim->integrator->set_growth)
         return ds_refuse(err, DS_ERR_ARG, "integrator", NAN, NAN,
-                         "integrator = %s cannot grow disks: growth needs the event integrator's "
-                         "exact contact times",
+                         "integrator = %s: growth needs the event-driven integrator (its exact "
+                         "contact times)",
                          sim->integrator->name);
     if (sim->world.boundary != DS_BOUNDARY_PERIODIC)
         return ds_refuse(err, DS_ERR_ARG, "boundary", NAN, NAN,

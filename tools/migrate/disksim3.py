@@ -169,10 +169,37 @@ def closing(text, start):
     return None
 
 
+def code_mask(text):
+    """For each character of C text, whether it is code (not inside a
+    string, a character literal or a comment): calls are rewritten in
+    code only, names everywhere."""
+    mask, k, n = bytearray(b"\1" * len(text)), 0, len(text)
+    while k < n:
+        c = text[k]
+        if text.startswith("//", k):
+            end = text.find("\n", k)
+            end = n if end < 0 else end
+        elif text.startswith("/*", k):
+            end = text.find("*/", k + 2)
+            end = n if end < 0 else end + 2
+        elif c in "\"'":
+            end = k + 1
+            while end < n and text[end] not in (c, "\n"):
+                end += 2 if text[end] == "\\" else 1
+            end += 1
+        else:
+            k += 1
+            continue
+        mask[k:end] = b"\0" * (min(end, n) - k)
+        k = end
+    return mask
+
+
 def rewrite_calls(text, where):
     out, at = [], 0
+    code = code_mask(text)
     for m in CALL_RE.finditer(text):
-        if m.start() < at:
+        if m.start() < at or not code[m.start()]:
             continue
         name = m.group(1)
         if name in BY_HAND:
