@@ -13,10 +13,11 @@ int main(void)
     /* 400 disks of radius 5; box 1000, speed 100, dt 0.001 by default. */
     ds_params params = ds_params_default(400, 5.0);
     ds_sim *sim = NULL;
-    ds_status status = ds_sim_create(&params, NULL, &sim, NULL);
-    if (status != DS_OK) {
-        /* The library never prints: what went wrong comes back as a status. */
-        fprintf(stderr, "ds_sim_create: %s\n", ds_status_name(status));
+    ds_error err;
+    if (ds_sim_create(&params, NULL, &sim, &err) != DS_OK) {
+        /* The library never prints: what went wrong comes back as a status
+         * and, in err, the field at fault, its value, the limit and why. */
+        fprintf(stderr, "ds_sim_create: %s\n", err.message);
         return 1;
     }
 

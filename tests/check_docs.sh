@@ -24,7 +24,8 @@
 #  5. man/disk_sim.3 and docs/library.md name every function of the
 #     public headers (include/disk_sim.h and include/disksim/*.h), and no
 #     page names a ds_ or DS_ identifier that the sources do not define or
-#     use;
+#     use (CHANGELOG.md may name the 2.x names that
+#     tools/migrate/disksim3.py renames);
 #  6. the manual pages render without a groff warning and carry the
 #     header's version in their .TH line.
 #
@@ -345,7 +346,12 @@ awk '{
         print FILENAME, FNR, w
     }
 }' $MD_FILES $MAN_FILES > "$work/mentions"
+# The 2.x names, which only the changelog's history and table may name.
+grep -oh '\(ds\|DS\)_[A-Za-z0-9_]*' tools/migrate/disksim3.py | sort -u > "$work/old_names"
 while read -r file line w; do
+    if [ "$file" = CHANGELOG.md ] && grep -qxF "${w%\*}" "$work/old_names"; then
+        continue
+    fi
     case $w in
     *_\*) grep -q "^${w%\*}" "$work/identifiers" ||
               problem "$file:$line: $w matches no identifier of the sources" ;;
