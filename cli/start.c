@@ -254,8 +254,10 @@ ds_sim *start_from_frame(options *o)
     check_request(&p, NULL, path);
     ds_sim *sim = create_fresh(&p, NULL);
     ds_disk *disks = malloc(frame.count * sizeof *disks);
-    if (!disks)
+    if (!disks) {
+        ds_sim_destroy(sim);
         refuse(path, EXIT_RUN, "out of memory for %zu disks", frame.count);
+    }
     const double box = ds_sim_get_box_width(sim), box_y = ds_sim_get_box_height(sim);
     const int periodic = ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC;
     for (size_t k = 0; k < frame.count; ++k) {
@@ -273,8 +275,10 @@ ds_sim *start_from_frame(options *o)
     ds_error err;
     st = ds_sim_set_disks(sim, disks, &err);
     free(disks);
-    if (st != DS_OK)
+    if (st != DS_OK) { /* nothing left behind, for the leak checkers too */
+        ds_sim_destroy(sim);
         refuse(path, EXIT_RUN, "%s", err.message);
+    }
     return sim;
 }
 
