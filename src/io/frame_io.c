@@ -203,6 +203,24 @@ static void clear_frame(ds_frame *frame, ds_error *err)
     }
 }
 
+/* d after the count disks of *disks (room for cap), which grows by
+ * doubling. */
+static ds_status add_disk(ds_frame_disk **disks, size_t *count, size_t *cap, ds_frame_disk d,
+                          ds_error *err)
+{
+    if (*count == *cap) {
+        const size_t ncap = *cap ? 2 * *cap : 256;
+        ds_frame_disk *grown = realloc(*disks, ncap * sizeof *grown);
+        if (!grown)
+            return ds_refuse(err, DS_ERR_NOMEM, "frame", NAN, NAN, "frame: no memory for %zu disks",
+                             ncap);
+        *disks = grown;
+        *cap = ncap;
+    }
+    (*disks)[(*count)++] = d;
+    return DS_OK;
+}
+
 ds_status ds_frame_parse(const char *text, size_t len, ds_frame *frame, ds_error *err)
 {
     clear_frame(frame, err);
@@ -261,19 +279,9 @@ ds_status ds_frame_parse(const char *text, size_t len, ds_frame *frame, ds_error
             st = fail(err, line_no, "radius must be positive");
             goto out;
         }
-        if (count == cap) {
-            size_t ncap = cap ? 2 * cap : 256;
-            ds_frame_disk *grown = realloc(disks, ncap * sizeof *grown);
-            if (!grown) {
-                st = ds_refuse(err, DS_ERR_NOMEM, "frame", NAN, NAN,
-                               "frame: no memory for %zu disks", ncap);
-                goto out;
-            }
-            disks = grown;
-            cap = ncap;
-        }
         ds_frame_disk d = {v[0], v[1], v[2], got == 5 ? v[3] : 0.0, got == 5 ? v[4] : 0.0};
-        disks[count++] = d;
+        if ((st = add_disk(&disks, &count, &cap, d, err)) != DS_OK)
+            goto out;
     }
     if (count == 0) {
         st = fail(err, 0, "empty frame: no disks");
