@@ -63,9 +63,13 @@ typedef struct ds_error {
      * "state", the 1-based line for "frame" (0 if not about a line); 0
      * otherwise. */
     size_t index;
-    /* One sentence that begins with the field and names the value, e.g.
-     * "radius = 600 does not fit a box of 1000 x 1000: it must be below
-     * half of its shorter side (500)"; "" on success. */
+    /* One sentence naming the value, e.g. "radius = 600 does not fit a
+     * box of 1000 x 1000: it must be below half of its shorter side
+     * (500)": a refusal of a request or of an argument begins with the
+     * field ("radius = ...", "rate = ...", "mixture: ...", "disk 3 ...");
+     * a frame's is the reason alone ("expected 3 or 5 numbers"), a
+     * checkpoint's what is wrong with it ("the checksum does not match:
+     * the file is corrupted"). "" on success. */
     char message[256];
     /* A call that succeeded with a warning (ds_params_check): the first
      * warning as a sentence; "" otherwise. */
