@@ -277,7 +277,8 @@ static PyObject *mixture_repr(PyObject *text, PyObject *mixture_args)
         const char *name = dspy_mixture_names[k];
         PyObject *v = PyDict_GetItemString(mixture_args, name);
         const int plain = !v || v == Py_None ||
-                          (PyUnicode_Check(v) && PyUnicode_CompareWithASCIIString(v, "equal") == 0);
+                          (PyUnicode_Check(v) && PyUnicode_CompareWithASCIIString(
+                                                     v, ds_mass_rule_name(DS_MASS_EQUAL)) == 0);
         if (plain)
             continue;
         PyObject *part = PyUnicode_FromFormat(", %s=%R", name, v);
