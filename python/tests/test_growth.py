@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Compression from Python: Sim.set_growth (ds_set_growth), growth_state,
+"""Compression from Python: Sim.set_growth (ds_sim_set_growth), growth_state,
 growth_z, scale_velocities and contacts(), and checkpoints of mixtures and
 of growing runs, which go on bit for bit as the C tests check."""
 import copy
@@ -71,7 +71,7 @@ def test_scale_velocities_scales_the_energy_by_its_square():
 
 
 def test_contacts_of_a_lattice_are_its_coordination_number():
-    # ds_count_contacts's own case: 64 disks on the 8 x 8 triangular
+    # ds_sim_get_contacts's own case: 64 disks on the 8 x 8 triangular
     # lattice, diameters 1e-6 short of the spacing: six contacts each within
     # a gap of 1e-5, none within 1e-7 (all rattlers).
     spacing = 1000.0 / 8
