@@ -269,7 +269,7 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 }
 
 /* ------------------------------------------------------------------ */
-/* Creation, ds_sim_set_disk                                                     */
+/* Creation, ds_sim_set_disk                                            */
 /* ------------------------------------------------------------------ */
 
 static ds_broadphase grid_of(ds_broadphase bp)
