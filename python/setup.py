@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: MIT
 """Builds the extension disksim._disksim from python/src/*.c and the
 library's own sources (../src/*/*.c), so neither a PIC static library nor
-an installed libdisksim is needed. The version is the header's
-DS_VERSION_STRING, the one place it is written.
+an installed libdisksim is needed. The version is DS_VERSION_STRING of
+include/disksim/base.h, the one place it is written.
 
 Honours CC and CFLAGS from the environment (as setuptools does), which is
 how `make python` passes the Makefile's.
@@ -16,7 +16,7 @@ from setuptools import Extension, setup
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(HERE)
-HEADER = os.path.join(TOP, "include", "disk_sim.h")
+HEADER = os.path.join(TOP, "include", "disksim", "base.h")
 
 if not os.path.exists(HEADER):
     sys.exit("disksim: %s is missing: build the module from a checkout of the "
@@ -43,7 +43,8 @@ def relative(pattern):
 
 lib_sources = relative("../src/*/*.c")
 module_sources = relative("src/*.c")
-headers = relative("../include/disk_sim.h") + relative("../src/*/*.h") + relative("src/*.h")
+headers = (relative("../include/disk_sim.h") + relative("../include/disksim/*.h") +
+           relative("../src/*/*.h") + relative("src/*.h"))
 
 extension = Extension(
     "disksim._disksim",

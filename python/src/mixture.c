@@ -3,7 +3,7 @@
  * mass]), ...], or radii= (and masses=) per disk, and mass=, the rule for
  * the masses not given.
  *
- * The library judges the values (ds_diagnose_mixture: counts that do not
+ * The library judges the values (ds_params_check: counts that do not
  * add up to n, radii or masses that are not positive finite numbers,
  * both forms or neither) and its sentence is what is raised; the module
  * refuses only what the library cannot see: wrong types, negative counts,

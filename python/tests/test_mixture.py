@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """Mixtures from Python: Sim(..., species=...) or radii= and masses= per
-disk, through ds_create_mixture. The radii and masses come back as given,
+disk, through ds_sim_create. The radii and masses come back as given,
 and an event-driven periodic run with unequal masses conserves energy and
 momentum to rounding (the bounds below say how much rounding)."""
 import math

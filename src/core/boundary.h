@@ -3,7 +3,7 @@
  * the separation to the nearest image. Every part that meets the
  * boundary (the integrators, the broad phases, placement) calls these.
  *
- * ds_nearest assumes what ds_check_params guarantees: a periodic box is
+ * ds_nearest assumes what ds_params_check guarantees: a periodic box is
  * more than two diameters wide along each axis, so two disks within 2R of
  * each other are so along exactly one image. */
 #ifndef DS_BOUNDARY_H

@@ -5,8 +5,9 @@
  *
  * The pipeline is create (sim/params.c, init/) -> step (an integrator,
  * through its table: timestep/, event/) -> observe (observe/) -> write
- * (io/). sim/sim.c keeps the public API and dispatches through the table;
- * the parts never call sim/. Not installed. */
+ * (io/). sim/ keeps the public API and dispatches through the table;
+ * the parts never call sim/. Refusals are made through core/error.c.
+ * Not installed. */
 #ifndef DS_CORE_H
 #define DS_CORE_H
 
@@ -37,7 +38,7 @@ typedef struct ds_world {
     double radius_min, radius_max, covered;
     ds_integrator integrator;
     ds_boundary boundary;
-    ds_broadphase broadphase; /* resolved, never DS_AUTO */
+    ds_broadphase broadphase; /* resolved, never DS_BROADPHASE_AUTO */
     ds_placement placement;
     uint64_t seed;
 } ds_world;
@@ -65,9 +66,9 @@ typedef struct ds_tally {
     double wall_reach;
     double virial; /* sum over collisions of r_ij . dp_i since the reset */
     /* The pressure tensor's parts, components xx, yy, xy, never reset
-     * (ds_stress_integral): the collisions' virial tensor, sum of
+     * (ds_sim_get_stress_integral): the collisions' virial tensor, sum of
      * (r_i - r_j)_a dp_i,b; the kinetic tensor sum m v_a v_b as a run
-     * goes (ds_run computes it at the start, then every collision and
+     * goes (ds_sim_run computes it at the start, then every collision and
      * wall turn changes it, collide.h); and the kinetic tensor's time
      * integral, which has reached the integrator's time stress_clock. */
     double stress_virial[3], kinetic[3], kinetic_integral[3];
@@ -78,7 +79,7 @@ typedef struct ds_integrator_ops ds_integrator_ops;
 
 struct ds_sim {
     ds_world world;
-    /* The disks at ds_time in generation-indexed slots (disk_arrays.h).
+    /* The disks at ds_sim_get_time in generation-indexed slots (disk_arrays.h).
      * An integrator with records of its own refreshes them after each
      * run. */
     ds_disks disks;
@@ -104,41 +105,46 @@ typedef struct ds_growth_law {
 
 /* One integrator: a way to advance the disks by whole steps of dt. Each
  * fills one table (timestep/time_step.c, event/event_driven.c), listed in
- * sim/integrators.c by its ds_integrator value. */
+ * sim/tables.c by its ds_integrator value. */
 struct ds_integrator_ops {
     const char *name; /* ds_integrator_name */
     /* The least room between disks it takes, as a fraction of a diameter
      * (DS_ROOM_TO_MOVE, or 0): sim/params.c refuses lattices and walls
      * closer than that. */
     double min_room;
-    /* Whether broad phase bp (never DS_AUTO) serves this integrator. */
+    /* Whether broad phase bp (never DS_BROADPHASE_AUTO) serves this
+     * integrator. */
     int (*fits)(ds_broadphase bp);
-    /* The broad phase DS_AUTO means for world w. */
+    /* The broad phase DS_BROADPHASE_AUTO means for world w. */
     ds_broadphase (*choose)(const ds_world *w);
     /* Refusals and warnings of its own for world w, beyond those
      * params.c makes for every integrator: DS_OK, or a status with err
-     * filled as ds_diagnose_params describes; warnings gets DS_WARN_*
+     * filled as ds_params_check describes; warnings gets DS_WARN_*
      * bits (err->warning the first one's sentence). */
-    ds_status (*check)(const ds_world *w, unsigned *warnings, ds_params_error *err);
+    ds_status (*check)(const ds_world *w, unsigned *warnings, ds_error *err);
     /* Bytes its state allocates for world w (broad phase resolved). */
     size_t (*bytes)(const ds_world *w);
     /* Builds its state (sim->state) from the disks in sim->disks, in
      * generation order, at the time sim->steps stands for (0 when the
-     * simulation is created, later for ds_set_all); it may permute the
-     * slots (ds_disks_permute). */
-    ds_status (*create)(ds_sim *sim);
+     * simulation is created, later for ds_sim_set_disks); it may permute
+     * the slots (ds_disks_permute). A failure (DS_ERR_NOMEM) says why in
+     * err. */
+    ds_status (*create)(ds_sim *sim, ds_error *err);
     void (*destroy)(ds_sim *sim); /* frees sim->state; safe after a failed create */
     /* Advances steps steps (>= 1) of dt; sim->disks shows the disks at
-     * the new time afterwards, slot[] valid. */
-    void (*run)(ds_sim *sim, uint64_t steps);
+     * the new time afterwards, slot[] valid. A run that cannot go on
+     * (DS_ERR_NOMEM, with err filled: a protocol's step's end failed) stops
+     * at the end of a whole step, sim->steps counting it, every part of sim
+     * as at that step's end. */
+    ds_status (*run)(ds_sim *sim, uint64_t steps, ds_error *err);
     /* Replaces the disk in slot k (already checked to be inside the box,
      * finite), or refuses it without changing anything. */
     ds_status (*set)(ds_sim *sim, size_t k, ds_disk d);
     /* Writes whatever of its state the next step depends on, beyond what
-     * sim/state.c writes (the world, the steps, the tally, the disk
+     * sim/checkpoint.c writes (the world, the steps, the tally, the disk
      * arrays in their slots), so that a run loaded from it goes on to the
      * bit as if it had never stopped. */
-    void (*save)(const ds_sim *sim, ds_writer *w);
+    void (*save)(const ds_sim *sim, ds_state_writer *w);
     /* Reads that back into sim->state, the rest of sim already restored:
      * DS_OK, or DS_ERR_FORMAT (or DS_ERR_NOMEM) with a reason, leaving
      * what it made for destroy. It checks what could make the library
@@ -147,7 +153,7 @@ struct ds_integrator_ops {
      * format version; what an older one kept here that a protocol keeps
      * now goes to legacy (core/protocol.h). */
     ds_status (*load)(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
-                      ds_state_error *err);
+                      ds_error *err);
     /* Every velocity times factor (> 0), at the present time. */
     ds_status (*scale_velocities)(ds_sim *sim, double factor);
 
@@ -174,19 +180,34 @@ struct ds_integrator_ops {
     ds_status (*widen)(ds_sim *sim, double until, int *rebuilt);
 };
 
-/* Fills err (if not NULL) with a printf-style sentence; returns status. */
-ds_status ds_state_refuse(ds_state_error *err, ds_status status, const char *fmt, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
+#define DS_PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define DS_PRINTF(f, a)
 #endif
-    ;
 
-/* Fills err (if not NULL) with field and a printf-style message; returns
- * status, so a check reads `return ds_refuse(err, DS_ERR_ARG, "n", ...)`. */
-ds_status ds_refuse(ds_params_error *err, ds_status status, const char *field, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 4, 5)))
-#endif
-    ;
+/* The error model (core/error.c). ds_error_clear empties err (NULL does
+ * nothing): every public call that takes one starts with it. */
+void ds_error_clear(ds_error *err);
+/* Fills err (if not NULL) with the status, the field at fault, the value
+ * and the limit it broke (NAN where they are not numbers) and a
+ * printf-style sentence; returns status, so a check reads
+ * `return ds_refuse(err, DS_ERR_ARG, "n", (double)n, 1.0, "n = %zu ...", n)`. */
+ds_status ds_refuse(ds_error *err, ds_status status, const char *field, double value, double limit,
+                    const char *fmt, ...) DS_PRINTF(6, 7);
+/* A checkpoint refused: ds_refuse with field "checkpoint" and no numbers. */
+ds_status ds_state_refuse(ds_error *err, ds_status status, const char *fmt, ...) DS_PRINTF(3, 4);
+/* The disk (or line) at fault, beside a refusal. */
+void ds_error_index(ds_error *err, size_t index);
+/* The status a public call returns, into err: on DS_OK the refusal parts
+ * are emptied (a warning stays), and a failure no refusal explained gets
+ * ds_status_name's words. Returns status. */
+ds_status ds_error_done(ds_error *err, ds_status status);
+
+/* An enumeration's value by name (core/names.c): *out = the v < count
+ * whose name_of(v) is name, or DS_ERR_ARG naming field and the names
+ * known. Clears err first. */
+ds_status ds_parse_name(const char *field, const char *name, int count,
+                        const char *(*name_of)(int value), int *out, ds_error *err);
 
 #endif

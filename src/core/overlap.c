@@ -8,7 +8,7 @@ ds_status ds_find_overlap(const ds_world *w, const double *x, const double *y, c
                           size_t *a, size_t *b)
 {
     const size_t n = w->n;
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     const double keep = 1.0 - DS_CONTACT_TOLERANCE;
     ds_grid g;
     ds_grid_init(&g, w->box, w->box_y, 2.0 * w->radius_max, 4 * n + 16, periodic);

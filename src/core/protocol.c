@@ -133,7 +133,7 @@ ds_protocol_clock *ds_protocols_clock(ds_sim *sim, ds_protocol_kind kind)
     return &sim->protocols.slot[kind].clock;
 }
 
-void ds_protocols_save(const ds_sim *sim, ds_writer *w)
+void ds_protocols_save(const ds_sim *sim, ds_state_writer *w)
 {
     const ds_protocols *p = &sim->protocols;
     uint32_t count = 0;
@@ -153,7 +153,7 @@ void ds_protocols_save(const ds_sim *sim, ds_writer *w)
 }
 
 ds_status ds_protocols_load(ds_sim *sim, const ds_protocol_ops *const *table, ds_reader *r,
-                            ds_state_error *err)
+                            ds_error *err)
 {
     const uint32_t count = ds_get_u32(r);
     if (r->failed || count > DS_PROTOCOL_KIND_COUNT)

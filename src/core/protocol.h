@@ -66,8 +66,8 @@ typedef struct ds_protocol_ops {
     void (*scaled)(ds_sim *sim, void *self, double factor);
     /* Its part of a checkpoint, and reading it back into a fresh state
      * (self allocated by load, which destroy frees). */
-    void (*save)(const ds_sim *sim, const void *self, ds_writer *w);
-    ds_status (*load)(ds_sim *sim, void **self, ds_reader *r, ds_state_error *err);
+    void (*save)(const ds_sim *sim, const void *self, ds_state_writer *w);
+    ds_status (*load)(ds_sim *sim, void **self, ds_reader *r, ds_error *err);
     void (*destroy)(void *self);
 } ds_protocol_ops;
 
@@ -136,8 +136,8 @@ ds_protocol_clock *ds_protocols_clock(ds_sim *sim, ds_protocol_kind kind);
 /* A checkpoint's protocols: their count, then each one's kind and part.
  * Load reads them into sim (every slot empty before), their tables from
  * table[kind] (sim/tables.c's list). */
-void ds_protocols_save(const ds_sim *sim, ds_writer *w);
+void ds_protocols_save(const ds_sim *sim, ds_state_writer *w);
 ds_status ds_protocols_load(ds_sim *sim, const ds_protocol_ops *const *table, ds_reader *r,
-                            ds_state_error *err);
+                            ds_error *err);
 
 #endif

@@ -35,12 +35,12 @@ void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
 }
 
 
-static ds_broadphase grid_of(ds_broadphase bp) { return bp == DS_BRUTE_FORCE ? bp : DS_CELLS; }
+static ds_broadphase grid_of(ds_broadphase bp) { return bp == DS_BROADPHASE_BRUTE ? bp : DS_BROADPHASE_CELLS; }
 
 static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp)
 {
     size_t cells = ds_cells_bytes(n, box_x, box_y, 2.0 * radius,
-                                  grid_of(bp) == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
+                                  grid_of(bp) == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
     return sizeof(ds_events) + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
 }
 
@@ -50,7 +50,7 @@ static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_b
 static size_t event_bytes(const ds_world *w)
 {
     return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase) +
-           (w->boundary == DS_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
+           (w->boundary == DS_BOUNDARY_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
 }
 
 size_t ds_ed_bytes(const ds_world *w) { return event_bytes(w) + w->n * sizeof(double); }
@@ -118,12 +118,12 @@ ds_status ds_ed_alloc(ds_sim *sim)
     sim->state = e;
     e->box_x = w->box;
     e->box_y = w->box_y;
-    e->periodic = w->boundary == DS_PERIODIC;
+    e->periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     e->lo_x = e->lo_y = w->radius;
     e->hi_x = w->box - w->radius;
     e->hi_y = w->box_y - w->radius;
     e->sigma2 = 4.0 * w->radius * w->radius;
-    /* The clock starts at the present step boundary (ds_set_all comes
+    /* The clock starts at the present step boundary (ds_sim_set_disks comes
      * here later in a run). */
     e->epoch = (double)sim->steps * w->dt;
     /* Move the epoch about once per time a disk takes to cross the box:
@@ -138,7 +138,7 @@ ds_status ds_ed_alloc(ds_sim *sim)
         st = DS_ERR_NOMEM;
     if (st == DS_OK)
         st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius_max,
-                           w->broadphase == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
+                           w->broadphase == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
     if (st == DS_OK)
         st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));
     /* Fetching ahead pays once the state outgrows the caches; below, it is

@@ -16,7 +16,7 @@
 #include "core/overlap.h"
 #include "event/event_state.h"
 
-void ds_ed_save(const ds_sim *sim, ds_writer *w)
+void ds_ed_save(const ds_sim *sim, ds_state_writer *w)
 {
     const ds_events *e = sim->state;
     const size_t n = sim->world.n, cells = (size_t)e->cells.nx * e->cells.ny;
@@ -86,7 +86,7 @@ static void read_law_2x(ds_ed_law *g, ds_reader *r, ds_legacy *legacy)
 }
 
 static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r,
-                             uint32_t version, ds_legacy *legacy, ds_state_error *err)
+                             uint32_t version, ds_legacy *legacy, ds_error *err)
 {
     const size_t n = sim->world.n;
     const uint32_t has = ds_get_u32(r);
@@ -135,7 +135,7 @@ static int is_event_kind(uint32_t partner)
            partner == EV_CELL_Y || partner == EV_NONE;
 }
 
-static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, ds_state_error *err)
+static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, ds_error *err)
 {
     for (size_t k = 0; k < n; ++k) {
         ed_disk *d = &e->disk[k];
@@ -172,7 +172,7 @@ static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, 
 /* Reads the cells and checks they hold every disk once, in the cell its
  * record names, packed from the first slot, with an overflow list only
  * behind four taken slots: what predicting and fetching rely on. */
-static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_state_error *err)
+static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_error *err)
 {
     ds_cells *c = &e->cells;
     const size_t cells = (size_t)c->nx * c->ny;
@@ -231,13 +231,13 @@ static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_state_error
 
 /* The records against the disk arrays, which were shown from them when
  * the state was saved: each record, flown from its time to now, is its
- * slot's disk to the bit (whose values sim/state.c checked as ds_set
+ * slot's disk to the bit (whose values sim/state.c checked as ds_sim_set_disk
  * checks a disk: finite, no faster than it allows, in the box); it lies
  * in the cell it names (up to rounding); and no two disks overlap. A
  * state that passes is one the integrator could have reached, so a run
  * from it is a run (a forged record far from its cell would have it
  * cross cells at one instant for ever). */
-static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_state_error *err)
+static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_error *err)
 {
     const ds_disks *a = &sim->disks;
     const ds_cells *c = &e->cells;
@@ -272,7 +272,7 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_s
 }
 
 ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
-                     ds_state_error *err)
+                     ds_error *err)
 {
     const size_t n = sim->world.n;
     if (ds_ed_alloc(sim) != DS_OK)

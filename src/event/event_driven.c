@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_EVENT_DRIVEN: exact dynamics of hard disks.
+/* DS_INTEGRATOR_EVENT_DRIVEN: exact dynamics of hard disks.
  *
  * Between events every disk flies in a straight line, so the state is
  * advanced from event to event instead of by a fixed step: a pair
@@ -186,13 +186,14 @@ static void rebase(ds_events *e, size_t n, double t)
     e->law.from -= t;
 }
 
-static void run(ds_sim *sim, uint64_t steps)
+static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
     ds_events *e = sim->state;
+    ds_status st = DS_OK;
     ds_timer_start(&sim->collision_timer);
     double target = (double)sim->steps * sim->world.dt - e->epoch;
     sim->tally.stress_clock = target;
-    for (uint64_t s = 0; s < steps; ++s) {
+    for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
         for (;;) {
@@ -221,11 +222,16 @@ static void run(ds_sim *sim, uint64_t steps)
         }
         /* The protocols' step's end (growth's wider cells may build the
          * state again: it then starts at the present time, 0; without
-         * memory for that the growth stopped and the steps go on). */
+         * memory for that the growth stopped there, and the run stops). */
         if (sim->protocols.stepping) {
             sim->tally.pairs_tested += e->tested;
             e->tested = 0;
-            (void)ds_protocols_step_end(sim);
+            st = ds_protocols_step_end(sim);
+            if (st != DS_OK)
+                ds_refuse(err, st, "steps", (double)sim->steps, NAN,
+                          "steps: no memory for what a protocol needs after step %llu (growth's "
+                          "wider cells): it stopped there, and the run",
+                          (unsigned long long)sim->steps);
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
             sim->tally.stress_clock = target; /* a state made again has its own clock */
@@ -236,10 +242,11 @@ static void run(ds_sim *sim, uint64_t steps)
     e->tested = 0;
     ds_ed_show_at(&sim->disks, e, target);
     ds_ed_show_radii(sim, e, target);
+    return st;
 }
 
 /* ------------------------------------------------------------------ */
-/* ds_set, the services                                                 */
+/* ds_sim_set_disk, the services                                                 */
 /* ------------------------------------------------------------------ */
 
 /* Whether disk k (record p) at time now is closer to (x, y) than the
@@ -362,22 +369,31 @@ static void kinetic(const ds_sim *sim, double *kinetic, double *momentum_energy)
 /* ------------------------------------------------------------------ */
 
 /* The integrator's cell grid, or brute force: one cell for everyone. */
-static int fits(ds_broadphase bp) { return bp == DS_CELLS || bp == DS_BRUTE_FORCE; }
+static int fits(ds_broadphase bp) { return bp == DS_BROADPHASE_CELLS || bp == DS_BROADPHASE_BRUTE; }
 
 static ds_broadphase choose(const ds_world *w)
 {
     (void)w;
-    return DS_CELLS;
+    return DS_BROADPHASE_CELLS;
 }
 
 /* Disk numbers share 32 bits with the EV_* kinds, and the calendar's
  * entries keep them in 30. */
-static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *err)
+static ds_status check(const ds_world *w, unsigned *warnings, ds_error *err)
 {
     (void)warnings;
     if (w->n >= ((size_t)1 << 30))
-        return ds_refuse(err, DS_ERR_NOMEM, "n",
+        return ds_refuse(err, DS_ERR_NOMEM, "n", (double)w->n, (double)((size_t)1 << 30),
                          "n = %zu disks: the event-driven integrator takes fewer than 2^30", w->n);
+    return DS_OK;
+}
+
+static ds_status create(ds_sim *sim, ds_error *err)
+{
+    const ds_status st = ds_ed_create(sim);
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)sim->world.n, NAN,
+                         "n = %zu disks: no memory for the event-driven integrator", sim->world.n);
     return DS_OK;
 }
 
@@ -390,7 +406,7 @@ const ds_integrator_ops ds_event_driven_ops = {
     .choose = choose,
     .check = check,
     .bytes = ds_ed_bytes,
-    .create = ds_ed_create,
+    .create = create,
     .destroy = ds_ed_destroy,
     .run = run,
     .set = set,

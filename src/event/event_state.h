@@ -12,7 +12,7 @@
 #include "event/event_queue.h"
 
 /* What a disk's scheduled event is, kept in its partner field above any
- * disk index (the integrator takes n < 2^30, ds_check_params). */
+ * disk index (the integrator takes n < 2^30, ds_params_check). */
 #define EV_WALL_X (UINT32_MAX - 1)
 #define EV_WALL_Y (UINT32_MAX - 2)
 #define EV_CELL_X (UINT32_MAX - 3)
@@ -161,9 +161,9 @@ ds_status ds_ed_widen(ds_sim *sim, double until, int *rebuilt);
 
 /* A checkpoint of the integrator's state (event_checkpoint.c): the
  * table's save and load. */
-void ds_ed_save(const ds_sim *sim, ds_writer *w);
+void ds_ed_save(const ds_sim *sim, ds_state_writer *w);
 ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
-                     ds_state_error *err);
+                     ds_error *err);
 
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):
  * records it in the disk and returns its time. */

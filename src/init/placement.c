@@ -5,9 +5,10 @@
 ds_status ds_place(ds_disks *d, const ds_world *w)
 {
     switch (w->placement) {
-    case DS_LATTICE:
+    case DS_PLACEMENT_LATTICE:
         return ds_place_lattice(d, w);
-    case DS_RANDOM:
+    case DS_PLACEMENT_RANDOM:
+    case DS_PLACEMENT_COUNT:
         break;
     }
     return ds_place_random(d, w);

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Lattice placement (DS_LATTICE): the disks on a triangular lattice that
+/* Lattice placement (DS_PLACEMENT_LATTICE): the disks on a triangular lattice that
  * fills the box as evenly as it can, the way dense states are started.
  *
  * The lattice has m rows of c sites, alternate rows shifted by half a site,
@@ -103,7 +103,7 @@ int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int per
 
 ds_status ds_place_lattice(ds_disks *d, const ds_world *w)
 {
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     const size_t n = w->n;
     /* Sites for the largest disk of a mixture. */
     const double r = w->radius_max;

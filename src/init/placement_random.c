@@ -65,7 +65,7 @@ static int overlaps_in_cell(const grid *g, size_t cell, double px, double py, do
 static int overlaps_mixed(const ds_world *w, const grid *g, const double *r, double radius,
                           double px, double py)
 {
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     size_t around[9];
     const int count = ds_grid_neighbours(&g->cells, ds_grid_column(&g->cells, px),
                                          ds_grid_row(&g->cells, py), around);
@@ -101,7 +101,7 @@ static int overlaps_any(const ds_world *w, const grid *g, double px, double py)
                     return 1;
         return 0;
     }
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     size_t around[9];
     const int count = ds_grid_neighbours(&g->cells, cx, cy, around);
     for (int c = 0; c < count; ++c)
@@ -161,7 +161,7 @@ typedef struct range {
 
 static range centre_range(const ds_world *w, double r)
 {
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     const range c = {periodic ? 0.0 : r, periodic ? w->box : w->box - r, periodic ? 0.0 : r,
                      periodic ? w->box_y : w->box_y - r};
     return c;
@@ -200,7 +200,7 @@ static uint32_t *placement_order(const ds_disks *d)
 ds_status ds_place_random(ds_disks *d, const ds_world *w)
 {
     const double box = w->box, box_y = w->box_y;
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     grid g;
     /* Cells at least the largest diameter wide, but no more than ~4 per
      * disk so tiny radii with few disks do not allocate a huge empty grid. */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The contacts of a packing and its rattlers (ds_count_contacts): every
+/* The contacts of a packing and its rattlers (ds_sim_get_contacts): every
  * pair within the gap through the cell grid, each disk's contacts in a
  * list, then the disks with fewer than 3 taken away one at a time, each
  * taking its contacts from its neighbours, which may then go too. */
@@ -25,7 +25,7 @@ static size_t for_each_contact(const ds_sim *sim, double gap, uint32_t *count, s
     const ds_world *w = &sim->world;
     const ds_disks *d = &sim->disks;
     const size_t n = d->n;
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     ds_grid g;
     ds_grid_init(&g, w->box, w->box_y, 2.0 * w->radius_max * (1.0 + gap), 4 * n + 16, periodic);
     ds_grid_bins bins;
@@ -64,10 +64,15 @@ static size_t for_each_contact(const ds_sim *sim, double gap, uint32_t *count, s
     return pairs;
 }
 
-ds_status ds_count_contacts(const ds_sim *sim, double gap, ds_contacts *out)
+ds_status ds_sim_get_contacts(const ds_sim *sim, double gap, ds_contacts *out, ds_error *err)
 {
-    if (!sim || !out || !(gap >= 0.0 && gap < 1.0))
-        return DS_ERR_ARG;
+    ds_error_clear(err);
+    if (!sim || !out)
+        return ds_refuse(err, DS_ERR_ARG, sim ? "out" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "out" : "sim");
+    if (!(gap >= 0.0 && gap < 1.0))
+        return ds_refuse(err, DS_ERR_ARG, "gap", gap, gap < 0.0 ? 0.0 : 1.0,
+                         "gap = %g must be in [0, 1)", gap);
     const size_t n = sim->disks.n;
     contact_lists c;
     c.start = calloc(n + 1, sizeof *c.start);
@@ -131,5 +136,8 @@ ds_status ds_count_contacts(const ds_sim *sim, double gap, ds_contacts *out)
     free(c.count);
     free(c.removed);
     free(c.other);
-    return st;
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)n, NAN,
+                         "n = %zu disks: no memory for their contacts", n);
+    return DS_OK;
 }

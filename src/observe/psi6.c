@@ -47,27 +47,61 @@ static ds_status local_psi6(size_t n, const double *x, const double *y, const do
                             double factor, double box_x, double box_y, int periodic, double cutoff,
                             double *re, double *im);
 
-ds_status ds_local_psi6(size_t n, const double *x, const double *y, double box_x, double box_y,
-                        ds_boundary boundary, double cutoff, double *re, double *im)
+/* A length that must be finite and > 0, refused with its name. */
+static ds_status check_length(const char *field, double v, ds_error *err)
+{
+    if (v > 0.0 && isfinite(v))
+        return DS_OK;
+    return ds_refuse(err, DS_ERR_ARG, field, v, 0.0, "%s = %g must be finite and > 0", field, v);
+}
+
+static ds_status check_arguments(size_t n, const double *x, const double *y, double box_x,
+                                 double box_y, ds_boundary boundary, double cutoff,
+                                 const double *re, const double *im, ds_error *err)
 {
     /* No disks: nothing to read or write, whatever the pointers. */
-    if (n > 0 && (!x || !y || !re || !im))
-        return DS_ERR_ARG;
-    if (!(box_x > 0.0) || !isfinite(box_x) || !(box_y > 0.0) || !isfinite(box_y) ||
-        !(cutoff > 0.0) || !isfinite(cutoff))
-        return DS_ERR_ARG;
-    if (boundary != DS_WALLS && boundary != DS_PERIODIC)
-        return DS_ERR_ARG;
-    const int periodic = boundary == DS_PERIODIC;
+    if (n > 0 && (!x || !y || !re || !im)) {
+        const char *which = !x ? "x" : !y ? "y" : !re ? "re" : "im";
+        return ds_refuse(err, DS_ERR_ARG, which, NAN, NAN, "%s: NULL", which);
+    }
+    ds_status st = check_length("box_x", box_x, err);
+    if (st == DS_OK)
+        st = check_length("box_y", box_y, err);
+    if (st == DS_OK)
+        st = check_length("cutoff", cutoff, err);
+    if (st != DS_OK)
+        return st;
+    if (boundary != DS_BOUNDARY_WALLS && boundary != DS_BOUNDARY_PERIODIC)
+        return ds_refuse(err, DS_ERR_ARG, "boundary", (double)boundary, NAN,
+                         "boundary = %d is not a ds_boundary", (int)boundary);
     /* Beyond half the box a second image could be as close as the first. */
-    if (periodic && !(cutoff < 0.5 * fmin(box_x, box_y)))
-        return DS_ERR_ARG;
+    const double half = 0.5 * fmin(box_x, box_y);
+    if (boundary == DS_BOUNDARY_PERIODIC && !(cutoff < half))
+        return ds_refuse(err, DS_ERR_ARG, "cutoff", cutoff, half,
+                         "cutoff = %g must be below half the shorter side (%g) in a periodic box",
+                         cutoff, half);
     for (size_t j = 0; j < n; ++j)
-        if (!isfinite(x[j]) || !isfinite(y[j]))
-            return DS_ERR_ARG;
-    if (n == 0)
-        return DS_OK;
-    return local_psi6(n, x, y, NULL, 0.0, box_x, box_y, periodic, cutoff, re, im);
+        if (!isfinite(x[j]) || !isfinite(y[j])) {
+            ds_error_index(err, j);
+            return ds_refuse(err, DS_ERR_ARG, "x", isfinite(x[j]) ? y[j] : x[j], NAN,
+                             "x: centre %zu is not finite", j);
+        }
+    return DS_OK;
+}
+
+ds_status ds_psi6_local(size_t n, const double *x, const double *y, double box_x, double box_y,
+                        ds_boundary boundary, double cutoff, double *re, double *im, ds_error *err)
+{
+    ds_error_clear(err);
+    ds_status st = check_arguments(n, x, y, box_x, box_y, boundary, cutoff, re, im, err);
+    if (st != DS_OK || n == 0)
+        return st;
+    st = local_psi6(n, x, y, NULL, 0.0, box_x, box_y, boundary == DS_BOUNDARY_PERIODIC, cutoff, re,
+                    im);
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)n, NAN, "n = %zu centres: no memory for the cells",
+                         n);
+    return DS_OK;
 }
 
 static ds_status local_psi6(size_t n, const double *x, const double *y, const double *radii,
@@ -130,38 +164,45 @@ static ds_status local_psi6(size_t n, const double *x, const double *y, const do
     return DS_OK;
 }
 
-double ds_psi6(const ds_sim *sim)
+ds_status ds_sim_get_psi6(const ds_sim *sim, double *psi6, ds_error *err)
 {
-    if (!sim)
-        return NAN;
+    ds_error_clear(err);
+    if (psi6)
+        *psi6 = NAN;
+    if (!sim || !psi6)
+        return ds_refuse(err, DS_ERR_ARG, sim ? "psi6" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "psi6" : "sim");
     const ds_world *w = &sim->world;
     const size_t n = w->n;
-    double *re = malloc(n * sizeof *re), *im = malloc(n * sizeof *im);
-    double result = NAN;
     /* The arrays hold the disks in slot order, which the mean ignores. A
      * mixture's pair is bonded within 1.4 times its own contact distance;
      * its cells are as wide as the largest pair's cutoff. */
     const double cutoff = PSI6_CUTOFF_DIAMETERS * 2.0 * w->radius_max;
-    const int periodic = w->boundary == DS_PERIODIC;
-    if (re && im && periodic && !(cutoff < 0.5 * fmin(w->box, w->box_y))) {
-        free(re);
-        free(im);
-        return NAN;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
+    if (periodic && !(cutoff < 0.5 * fmin(w->box, w->box_y))) {
+        const int y = w->box_y < w->box;
+        return ds_refuse(err, DS_ERR_ARG, y ? "box_y" : "box", y ? w->box_y : w->box, 2.0 * cutoff,
+                         "%s = %g: psi6's cutoff, 1.4 diameters (%g), must be below half each "
+                         "side of a periodic box",
+                         y ? "box_y" : "box", y ? w->box_y : w->box, cutoff);
     }
-    if (re && im &&
-        (sim->disks.r
-             ? local_psi6(n, sim->disks.x, sim->disks.y, sim->disks.r, PSI6_CUTOFF_DIAMETERS,
-                          w->box, w->box_y, periodic, cutoff, re, im)
-             : ds_local_psi6(n, sim->disks.x, sim->disks.y, w->box, w->box_y, w->boundary, cutoff,
-                             re, im)) == DS_OK) {
+    double *re = malloc(n * sizeof *re), *im = malloc(n * sizeof *im);
+    ds_status st = re && im ? DS_OK : DS_ERR_NOMEM;
+    if (st == DS_OK)
+        st = local_psi6(n, sim->disks.x, sim->disks.y, sim->disks.r,
+                        sim->disks.r ? PSI6_CUTOFF_DIAMETERS : 0.0, w->box, w->box_y, periodic,
+                        cutoff, re, im);
+    if (st == DS_OK) {
         double sum_re = 0.0, sum_im = 0.0;
         for (size_t j = 0; j < n; ++j) {
             sum_re += re[j];
             sum_im += im[j];
         }
-        result = hypot(sum_re, sum_im) / (double)n;
+        *psi6 = hypot(sum_re, sum_im) / (double)n;
     }
     free(re);
     free(im);
-    return result;
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)n, NAN, "n = %zu disks: no memory for psi6", n);
+    return DS_OK;
 }

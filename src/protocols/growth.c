@@ -207,7 +207,7 @@ static void scaled(ds_sim *sim, void *self, double factor)
     set_clock(sim, g);
 }
 
-static void save(const ds_sim *sim, const void *self, ds_writer *w)
+static void save(const ds_sim *sim, const void *self, ds_state_writer *w)
 {
     (void)sim;
     const growth *g = self;
@@ -227,7 +227,7 @@ static void save(const ds_sim *sim, const void *self, ds_writer *w)
 
 /* What a growth's numbers must be for the run to go on (the checksum
  * catches the rest): numbers, targets in range, a clock not behind. */
-static ds_status check(const ds_growth_record *r, ds_state_error *err)
+static ds_status check(const ds_growth_record *r, ds_error *err)
 {
     if (!(r->asked >= 0.0 && isfinite(r->asked)) || isnan(r->stop_time) ||
         !(r->until_eta >= 0.0 && r->until_eta < 1.0) ||
@@ -239,7 +239,7 @@ static ds_status check(const ds_growth_record *r, ds_state_error *err)
     return DS_OK;
 }
 
-static ds_status adopt(growth *g, const ds_growth_record *r, ds_state_error *err)
+static ds_status adopt(growth *g, const ds_growth_record *r, ds_error *err)
 {
     const ds_status st = check(r, err);
     if (st != DS_OK)
@@ -260,7 +260,7 @@ static ds_status adopt(growth *g, const ds_growth_record *r, ds_state_error *err
     return DS_OK;
 }
 
-static ds_status load(ds_sim *sim, void **self, ds_reader *r, ds_state_error *err)
+static ds_status load(ds_sim *sim, void **self, ds_reader *r, ds_error *err)
 {
     (void)sim;
     ds_growth_record rec;
@@ -322,7 +322,7 @@ ds_status ds_growth_adopt(ds_sim *sim, const ds_growth_record *r)
 ds_status ds_growth_start(ds_sim *sim, double rate, double until_eta, double until_z)
 {
     const ds_integrator_ops *in = sim->integrator;
-    if (!in->grow || sim->world.boundary != DS_PERIODIC)
+    if (!in->grow || sim->world.boundary != DS_BOUNDARY_PERIODIC)
         return DS_ERR_ARG;
     growth *g = ds_protocols_get(sim, DS_PROTOCOL_GROWTH);
     const double now = in->now(sim);
@@ -369,7 +369,7 @@ int ds_growth_state_get(const ds_sim *sim, double *z)
     *z = g ? g->last_z : 0.0;
     if (!g)
         return DS_GROWTH_NONE;
-    return g->growing        ? DS_GROWING
+    return g->growing        ? DS_GROWTH_GROWING
            : g->stopped == 1 ? DS_GROWTH_REACHED_ETA
            : g->stopped == 2 ? DS_GROWTH_JAMMED
                              : DS_GROWTH_NONE;

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_BRUTE_FORCE: every pair tested, O(N^2), in any slot order. The
+/* DS_BROADPHASE_BRUTE: every pair tested, O(N^2), in any slot order. The
  * reference the sweeps are checked against; in a periodic box it takes
  * each pair to its nearest image itself, so it needs no seam pass. */
 #include "core/boundary.h"

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The pairs across the seams of a periodic box, for the sweeps.
  *
- * DS_SAP and DS_SAP_STRIPS sweep the box as if it had walls: they find
+ * DS_BROADPHASE_SAP and DS_BROADPHASE_STRIPS sweep the box as if it had walls: they find
  * every pair closer than 2R as the coordinates stand. In a periodic box
  * the pairs they miss are those that touch through the boundary, whose
  * nearest image lies one box away along x, along y, or both. Such a pair

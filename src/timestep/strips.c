@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_SAP_STRIPS: sweep and prune in horizontal strips.
+/* DS_BROADPHASE_STRIPS: sweep and prune in horizontal strips.
  *
  * Plain SAP tests every pair closer than 2R in x, wherever they are in y:
  * at fixed area fraction that is ~ n 2R / box candidates per disk, which
@@ -301,7 +301,7 @@ ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d)
 
 /* Which slots each strip holds is history (a disk changes strip only past
  * a margin): a checkpoint keeps it. */
-void ds_strips_save(const ds_bp *bp, ds_writer *w)
+void ds_strips_save(const ds_bp *bp, ds_state_writer *w)
 {
     const struct ds_strips *st = bp->strips;
     ds_put_u64(w, st->count);
@@ -309,8 +309,7 @@ void ds_strips_save(const ds_bp *bp, ds_writer *w)
         ds_put_u32(w, st->start[t]);
 }
 
-ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r,
-                         ds_state_error *err)
+ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_error *err)
 {
     ds_status status = strips_alloc(bp, w, d);
     if (status != DS_OK)

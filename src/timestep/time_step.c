@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_TIME_STEP: the seed's fixed time step. Each step moves every disk by
+/* DS_INTEGRATOR_TIME_STEP: the seed's fixed time step. Each step moves every disk by
  * v dt and turns those past a wall, or wraps them in a periodic box
  * (free_flight.c), then the broad phase (broad_phase.c) finds the
  * overlapping pairs and the approaching ones exchange their normal
  * velocities. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -56,11 +57,12 @@ static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
             c->tally);
 }
 
-static void run(ds_sim *sim, uint64_t steps)
+static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
+    (void)err; /* a step needs no memory */
     ds_bp *bp = sim->state;
     const ds_world *w = &sim->world;
-    const int periodic = w->boundary == DS_PERIODIC;
+    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
     const ds_pair_fn on_pair = periodic ? resolve_pair_periodic : resolve_pair;
     pair_context ctx = {&sim->tally, w->box, w->box_y};
     for (uint64_t s = 0; s < steps; ++s) {
@@ -76,12 +78,13 @@ static void run(ds_sim *sim, uint64_t steps)
         ++sim->steps;
     }
     ds_disks_rebuild_slots(&sim->disks);
+    return DS_OK;
 }
 
 /* The time step has the sweeps and brute force. */
 static int fits(ds_broadphase bp)
 {
-    return bp == DS_SAP || bp == DS_SAP_STRIPS || bp == DS_BRUTE_FORCE;
+    return bp == DS_BROADPHASE_SAP || bp == DS_BROADPHASE_STRIPS || bp == DS_BROADPHASE_BRUTE;
 }
 
 static ds_broadphase choose(const ds_world *w)
@@ -93,13 +96,13 @@ static ds_broadphase choose(const ds_world *w)
      * 1.1-1.2x faster at 8 at N <= 2000; they break even between 8 and 9;
      * strips are 1.15-1.35x faster at 10. */
     const double per_disk = (double)w->n * 2.0 * w->radius / w->box;
-    return per_disk > 8.5 ? DS_SAP_STRIPS : DS_SAP;
+    return per_disk > 8.5 ? DS_BROADPHASE_STRIPS : DS_BROADPHASE_SAP;
 }
 
 /* A head-on pair at 3x the initial speed (which the Rayleigh tail exceeds
  * with probability e^-9) can pass through each other between two steps
  * when 2 * speed_max * dt > 4 R (the smallest R of a mixture). */
-static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *err)
+static ds_status check(const ds_world *w, unsigned *warnings, ds_error *err)
 {
     if (2.0 * 3.0 * w->speed * w->dt > 4.0 * w->radius_min) {
         if (warnings)
@@ -115,13 +118,17 @@ static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *e
 
 static size_t bytes(const ds_world *w) { return sizeof(ds_bp) + ds_bp_bytes(w); }
 
-static ds_status create(ds_sim *sim)
+static ds_status create(ds_sim *sim, ds_error *err)
 {
     ds_bp *bp = calloc(1, sizeof *bp);
-    if (!bp)
-        return DS_ERR_NOMEM;
     sim->state = bp;
-    return ds_bp_create(bp, sim->world.broadphase, &sim->world, &sim->disks);
+    const ds_status st =
+        bp ? ds_bp_create(bp, sim->world.broadphase, &sim->world, &sim->disks) : DS_ERR_NOMEM;
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)sim->world.n, NAN,
+                         "n = %zu disks: no memory for the %s broad phase", sim->world.n,
+                         ds_broadphase_name(sim->world.broadphase));
+    return DS_OK;
 }
 
 static void destroy(ds_sim *sim)
@@ -144,10 +151,10 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     return DS_OK;
 }
 
-static void save(const ds_sim *sim, ds_writer *w) { ds_bp_save(sim->state, w); }
+static void save(const ds_sim *sim, ds_state_writer *w) { ds_bp_save(sim->state, w); }
 
 static ds_status load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
-                      ds_state_error *err)
+                      ds_error *err)
 {
     (void)version; /* the same part in every version */
     (void)legacy;

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The time step integrator (DS_TIME_STEP), the seed's: each step moves
+/* The time step integrator (DS_INTEGRATOR_TIME_STEP), the seed's: each step moves
  * every disk by v dt, turns those past a wall or wraps them in a periodic
  * box (free_flight.c), then the broad phase (broad_phase.h) finds the
  * overlapping pairs and the approaching ones exchange their normal
