@@ -457,17 +457,18 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 
 # ---------------------------------------------------------------- python
 # The Python module disksim (python/, docs/python.md), a C extension over
-# disk_sim.h that compiles the library's sources itself (python/setup.py).
-# `make python` builds it in place, python/disksim/_disksim*.so, for
-# PYTHONPATH=python; `make test` then runs its pytest suite. Debian's own
-# python3 by default (its python3-numpy, python3-dev, python3-setuptools
-# and python3-pytest), not whichever python3 comes first on PATH; without
-# them the suite is skipped with a one-line note naming the packages.
+# disk_sim.h that compiles the library's sources itself (setup.py at the
+# top, the one build definition, which pip uses too). `make python` builds
+# it in place, python/disksim/_disksim*.so, for PYTHONPATH=python; `make
+# test` then runs its pytest suite. Debian's own python3 by default (its
+# python3-numpy, python3-dev, python3-setuptools and python3-pytest), not
+# whichever python3 comes first on PATH; without them the suite is skipped
+# with a one-line note naming the packages.
 PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 PY_JOBS ?= 2
 PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo python3)
 PY_EXT = $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_config_var("EXT_SUFFIX"))' 2>/dev/null)
-PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py python/disksim/__init__.py
+PY_SRC := $(wildcard python/src/*.c python/src/*.h) setup.py python/disksim/__init__.py
 # SANITIZE=1 builds the module with the sanitizers into $(BUILD)/python/lib
 # (an instrumented module cannot replace the plain one in place) and runs
 # the suite with AddressSanitizer's runtime preloaded into python3, leak
@@ -475,7 +476,7 @@ PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py python/disks
 ifeq ($(SANITIZE),1)
   PY_LIB    := $(BUILD)/python/lib
   PY_MODULE  = $(PY_LIB)/disksim/_disksim$(PY_EXT)
-  PY_WHERE  := --build-lib ../$(PY_LIB)
+  PY_WHERE  := --build-lib $(PY_LIB)
   PY_ASAN    = $(shell $(CC) -print-file-name=libasan.so)
   PY_RUN     = $(if $(filter /%,$(PY_ASAN)),LD_PRELOAD=$(PY_ASAN) ASAN_OPTIONS=detect_leaks=0)
 else
@@ -494,8 +495,8 @@ python-deps:
 
 # setuptools recompiles every file when it builds: make decides when.
 $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
-	cd python && CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" $(PYTHON) setup.py -q \
-	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python/temp
+	CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" $(PYTHON) setup.py -q \
+	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp $(BUILD)/python/temp
 	$(if $(filter 1,$(SANITIZE)),cp python/disksim/__init__.py $(PY_LIB)/disksim/)
 
 # The suite runs the disks of this build (test_frames compares its frames).
@@ -506,6 +507,15 @@ python-test: $(DISKS) $(OUT)tools/pressure
 	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
 	    DISKSIM_PRESSURE="$(CURDIR)/$(OUT)tools/pressure" $(PY_RUN) \
 	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
+
+# The packaging, offline in a venv (tests/python_packaging.sh): pip install
+# . from the top and ./python, pip wheel ., the sdist and a wheel from it
+# alone, the stubs checked by mypy, the checkout left as it was. Five
+# builds of the library, about 30 s on two cores: .ci/run runs it, not make
+# test. Needs python3-venv, python3-wheel, python3-build and python3-mypy.
+.PHONY: python-packaging
+python-packaging:
+	PYTHON="$(PYTHON)" sh tests/python_packaging.sh
 
 clean: clean-python
 clean-python:
