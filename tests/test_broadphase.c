@@ -12,7 +12,7 @@
  * rounding. */
 #include "test_util.h"
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "timestep/broad_phase.h"
 
 /* ------------------------------------------------------------ helpers */

@@ -474,6 +474,12 @@ static void test_a_length_field_past_the_file_is_a_truncated_checkpoint(void **s
  * runs). */
 static size_t as_version_1(uint8_t *buf, size_t len)
 {
+    /* The columns' mask (112 bytes in): version 3's bit per column,
+     * 2.x's 1 radii, 2 masses, 4 image counts. */
+    const uint32_t bits = (uint32_t)buf[112] | (uint32_t)buf[113] << 8;
+    const uint32_t old = (bits >> 5 & 1u) | (bits >> 6 & 1u) << 1 | (bits >> 7 & 1u) << 2;
+    buf[112] = (uint8_t)old;
+    buf[113] = 0;
     const size_t at = 188, cut = 80;
     memmove(buf + at, buf + at + cut, len - at - cut);
     len -= cut;

@@ -548,7 +548,7 @@ static void test_impossible_boxes_are_refused(void **state)
     p = ds_params_default(1, 300.0);
     p.box_y = 500.0; /* walls: below half the height */
     assert_int_equal(ds_params_check(&p, NULL, NULL, NULL), DS_ERR_ARG);
-    p.boundary = (ds_boundary)2;
+    p.boundary = DS_BOUNDARY_COUNT;
     p.radius = 1.0;
     assert_int_equal(ds_params_check(&p, NULL, NULL, NULL), DS_ERR_ARG);
     /* More disks than the hexagonal packing of the torus holds. */

@@ -23,7 +23,8 @@
 typedef struct xyz_frame {
     size_t count;
     double time, box, box_y, height;
-    int periodic;         /* pbc="T T F", and each line ends with ix iy */
+    int periodic;         /* pbc="T T F" or "T F F" (a channel), and lines end with ix iy */
+    int periodic_y;       /* pbc="T T F" */
     ds_frame_disk *disks; /* x, y, r, vx, vy */
     long *image;          /* ix, iy of each disk when periodic, else NULL */
 } xyz_frame;
@@ -84,7 +85,8 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
         expect(&p, " Time=");
         f->time = number(&p);
         expect(&p, "pbc=\"");
-        f->periodic = next_is(&p, "T T F");
+        f->periodic_y = next_is(&p, "T T F");
+        f->periodic = f->periodic_y || next_is(&p, "T F F");
         if (!f->periodic)
             expect(&p, "F F F");
         expect(&p, "\"\n");
@@ -190,7 +192,8 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
     const ds_species kinds[2] = {{12, 3.0, 0.0}, {12, 4.5, 0.0}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
-        const int periodic = b == DS_BOUNDARY_PERIODIC;
+        /* Along x a channel is periodic too: images along x, 0 along y. */
+        const int periodic = b != DS_BOUNDARY_WALLS;
         ds_params p = ds_params_default(N, 3.0);
         p.box = 160.0;
         p.box_y = 230.0;
@@ -208,6 +211,7 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
         assert_int_equal(parse_trajectory(buf, &f, 1), 1);
         assert_int_equal(f.count, N);
         assert_int_equal(f.periodic, periodic);
+        assert_int_equal(f.periodic_y, b == DS_BOUNDARY_PERIODIC);
         /* Lx, Ly and H = 2 r_max in the shortest text that reads back. */
         assert_true(f.box == ds_sim_get_box_width(sim) && f.box_y == ds_sim_get_box_height(sim));
         assert_true(f.height == 2.0 * ds_sim_get_radius_max(sim) && f.height == 9.0);
@@ -226,6 +230,7 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
             if (periodic) {
                 assert_int_equal(f.image[2 * i], image[2 * i]);
                 assert_int_equal(f.image[2 * i + 1], image[2 * i + 1]);
+                assert_true(b == DS_BOUNDARY_PERIODIC || image[2 * i + 1] == 0);
                 crossed += image[2 * i] != 0 || image[2 * i + 1] != 0;
             }
         }

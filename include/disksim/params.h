@@ -52,6 +52,10 @@ typedef enum ds_boundary {
      * takes a disk. Needs every radius below box/4 and box_y/4 (so a pair
      * touches through one image only). */
     DS_BOUNDARY_PERIODIC,
+    /* "channel": periodic along x, walls along y (a channel, or a floor
+     * for a field along -y): each axis as above. Needs every radius below
+     * box/4 and below box_y/2. */
+    DS_BOUNDARY_CHANNEL,
     DS_BOUNDARY_COUNT
 } ds_boundary;
 const char *ds_boundary_name(ds_boundary boundary); /* "walls", "periodic" */

@@ -48,7 +48,7 @@ def test_the_signature_is_introspectable_and_its_defaults_are_the_librarys():
 
 def test_the_names_are_the_librarys():
     assert disksim.INTEGRATORS == ("step", "event")
-    assert disksim.BOUNDARIES == ("walls", "periodic")
+    assert disksim.BOUNDARIES == ("walls", "periodic", "channel")
     assert disksim.PLACEMENTS == ("random", "lattice")
     assert set(disksim.BROADPHASES) == {"sap", "brute", "strips", "auto", "cells"}
     assert disksim.MASS_RULES == ("equal", "area")

@@ -124,7 +124,7 @@ BAD = [
      NoMemoryError, "bins needs"),
     ("histogram too long, periodic",
      lambda: disksim.pair_histogram(np.zeros((2, 2)), 10, 100, boundary="periodic"),
-     ArgumentError, "the range bins dr = 1000 must be at most half the shorter side (500)"),
+     ArgumentError, "the range bins dr = 1000 must be at most half of each periodic side (500)"),
     ("histogram unknown boundary",
      lambda: disksim.pair_histogram(np.zeros((2, 2)), 1, 10, boundary="open"), ArgumentError,
      "boundary = 'open'"),

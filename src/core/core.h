@@ -11,6 +11,7 @@
 #ifndef DS_CORE_H
 #define DS_CORE_H
 
+#include "core/box.h"
 #include "core/disk_arrays.h"
 #include "core/protocol.h"
 #include "core/state_io.h"
@@ -27,21 +28,38 @@
 #define DS_ALWAYS_INLINE inline
 #endif
 
-/* What the parts read and never write: the parameters with the defaults
- * resolved, fixed at creation. */
+/* What the parts read: the parameters with the defaults resolved, fixed
+ * at creation, and two things that may change as the run goes, each with
+ * one writer: the box (its sides change only through a state built again
+ * for them; sheared images' shift moves with time) and the disks' sizes
+ * (ds_world_take_radii, whenever radii change: growth). */
 typedef struct ds_world {
     size_t n;
-    double radius, box, box_y, speed, dt; /* box is the width, box_y the height */
+    double radius, speed, dt;
+    /* The box: every part asks it (box.h), none keeps a flag of its own. */
+    ds_box box;
     /* The disks' smallest and largest radius (both radius for one kind;
      * a mixture's radii are in the disk arrays) and the area they cover,
      * sum of pi r^2. Pruning and cells take the largest. */
     double radius_min, radius_max, covered;
     ds_integrator integrator;
+    /* The request's name for the box (ds_sim_get_boundary, checkpoints):
+     * the parts read box's edges instead. */
     ds_boundary boundary;
     ds_broadphase broadphase; /* resolved, never DS_BROADPHASE_AUTO */
     ds_placement placement;
     uint64_t seed;
 } ds_world;
+
+/* The box a request names: its sides and, along each axis, walls or
+ * periodic as the boundary says (a channel: periodic along x, walls
+ * along y). */
+static inline ds_box ds_box_of(ds_boundary boundary, double width, double height)
+{
+    const ds_edge along_x = boundary == DS_BOUNDARY_WALLS ? DS_EDGE_WALLS : DS_EDGE_PERIODIC;
+    const ds_edge along_y = boundary == DS_BOUNDARY_PERIODIC ? DS_EDGE_PERIODIC : DS_EDGE_WALLS;
+    return ds_box_make(width, height, along_x, along_y);
+}
 
 /* The area n disks of radius r cover, n pi r^2, as one expression: the
  * world of one kind of disk, and each term of a mixture's sum (n = 1). */
@@ -156,6 +174,14 @@ struct ds_integrator_ops {
                       ds_error *err);
     /* Every velocity times factor (> 0), at the present time. */
     ds_status (*scale_velocities)(ds_sim *sim, double factor);
+
+    /* What only the integrator knows of what it samples (observe/ asks):
+     * the temperature kT, and the compressibility factor Z averaged since
+     * the last reset (0 before any step). NULL: molecular dynamics, kT
+     * from the velocities and Z from the collision virial. A sampler
+     * without velocities (event-chain Monte Carlo) fills both. */
+    double (*temperature)(const ds_sim *sim);
+    double (*compressibility)(const ds_sim *sim);
 
     /* Services to protocols, at integrator time t inside the present
      * step (each NULL where the integrator has none: a protocol that needs

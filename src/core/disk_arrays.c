@@ -158,6 +158,29 @@ void ds_disks_rebuild_slots(ds_disks *d)
         d->slot[d->id[k]] = (uint32_t)k;
 }
 
+void ds_disks_save(const ds_disks *d, ds_state_writer *w)
+{
+    for (size_t k = 0; k < d->n; ++k) {
+#define SAVE(name, type, every, fresh, sentinel, codec)                                           \
+    if ((every) || d->name)                                                                       \
+        ds_put_##codec(w, d->name[k]);
+        DS_DISK_COLUMNS(SAVE)
+#undef SAVE
+    }
+}
+
+int ds_disks_load_all(ds_disks *d, ds_reader *r)
+{
+    for (size_t k = 0; k < d->n && !r->failed; ++k) {
+#define LOAD(name, type, every, fresh, sentinel, codec)                                           \
+    if ((every) || d->name)                                                                       \
+        d->name[k] = ds_get_##codec(r);
+        DS_DISK_COLUMNS(LOAD)
+#undef LOAD
+    }
+    return !r->failed;
+}
+
 void ds_disks_kinetic_tensor(const ds_disks *d, double k[3])
 {
     double xx = 0.0, yy = 0.0, xy = 0.0;

@@ -29,6 +29,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/state_io.h"
 #include "disk_sim.h"
 
 /*  name  type      every  new         sentinel    codec */
@@ -110,6 +111,12 @@ ds_status ds_disks_permute(ds_disks *d, const uint32_t *order);
 
 /* slot[] from id[], after the slots moved. */
 void ds_disks_rebuild_slots(ds_disks *d);
+
+/* A checkpoint's disks: slot by slot, each column that is there in the
+ * table's order, by its codec (ds_disks_columns says which, and load reads
+ * into the columns d has). Load returns 0 if the bytes ran out. */
+void ds_disks_save(const ds_disks *d, ds_state_writer *w);
+int ds_disks_load_all(ds_disks *d, ds_reader *r);
 
 /* The kinetic tensor sum m v_a v_b over the disks: k[0] xx, k[1] yy,
  * k[2] xy (m = 1 without masses). */

@@ -14,6 +14,7 @@ const char *ds_version(void) { return DS_VERSION_STRING; }
 static const char *const boundary_names[DS_BOUNDARY_COUNT] = {
     [DS_BOUNDARY_WALLS] = "walls",
     [DS_BOUNDARY_PERIODIC] = "periodic",
+    [DS_BOUNDARY_CHANNEL] = "channel",
 };
 static const char *const placement_names[DS_PLACEMENT_COUNT] = {
     [DS_PLACEMENT_RANDOM] = "random",

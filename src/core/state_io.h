@@ -36,6 +36,8 @@ static inline void ds_put_u32(ds_state_writer *w, uint32_t v)
     w->len += 4;
 }
 
+static inline void ds_put_i32(ds_state_writer *w, int32_t v) { ds_put_u32(w, (uint32_t)v); }
+
 static inline void ds_put_f64(ds_state_writer *w, double v)
 {
     uint64_t bits;
@@ -76,6 +78,9 @@ static inline uint32_t ds_get_u32(ds_reader *r)
         v |= (uint32_t)p[k] << (8 * k);
     return v;
 }
+
+/* Any 32 bits are a count (image counts wrap past 2^31). */
+static inline int32_t ds_get_i32(ds_reader *r) { return (int32_t)ds_get_u32(r); }
 
 static inline double ds_get_f64(ds_reader *r)
 {

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/large_alloc.h"
 #include "event/event_state.h"
 
@@ -20,10 +20,9 @@ void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
         const ed_disk *d = &e->disk[k];
         const double lag = t - d->t;
         double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
-        if (e->periodic) {
+        if (e->image) { /* a periodic axis */
             int32_t ix = e->image[2 * k], iy = e->image[2 * k + 1];
-            x = ds_wrap_counting(x, e->box_x, &ix);
-            y = ds_wrap_counting(y, e->box_y, &iy);
+            ds_box_wrap(&e->box, &x, &y, &ix, &iy);
             disks->ix[k] = ix;
             disks->iy[k] = iy;
         }
@@ -35,7 +34,10 @@ void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
 }
 
 
-static ds_broadphase grid_of(ds_broadphase bp) { return bp == DS_BROADPHASE_BRUTE ? bp : DS_BROADPHASE_CELLS; }
+static ds_broadphase grid_of(ds_broadphase bp)
+{
+    return bp == DS_BROADPHASE_BRUTE ? bp : DS_BROADPHASE_CELLS;
+}
 
 static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp)
 {
@@ -49,8 +51,8 @@ static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_b
  * filed (ds_ed_schedule_all). */
 static size_t event_bytes(const ds_world *w)
 {
-    return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase) +
-           (w->boundary == DS_BOUNDARY_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
+    return ed_bytes(w->n, w->radius_max, w->box.side[0], w->box.side[1], w->broadphase) +
+           (ds_box_any_periodic(&w->box) ? 2 * w->n * sizeof(int32_t) : 0);
 }
 
 size_t ds_ed_bytes(const ds_world *w) { return event_bytes(w) + w->n * sizeof(double); }
@@ -116,12 +118,8 @@ ds_status ds_ed_alloc(ds_sim *sim)
     if (!e)
         return DS_ERR_NOMEM;
     sim->state = e;
-    e->box_x = w->box;
-    e->box_y = w->box_y;
-    e->periodic = w->boundary == DS_BOUNDARY_PERIODIC;
-    e->lo_x = e->lo_y = w->radius;
-    e->hi_x = w->box - w->radius;
-    e->hi_y = w->box_y - w->radius;
+    e->box = w->box;
+    e->one_radius = w->radius;
     e->sigma2 = 4.0 * w->radius * w->radius;
     /* The clock starts at the present step boundary (ds_sim_set_disks comes
      * here later in a run). */
@@ -129,15 +127,16 @@ ds_status ds_ed_alloc(ds_sim *sim)
     /* Move the epoch about once per time a disk takes to cross the box:
      * by then every disk has had several events, so the O(n) rebase is
      * cheap beside them, and times stay below ~10 crossing times. */
-    e->rebase_time = fmax(w->box, w->box_y) / w->speed;
+    e->rebase_time = fmax(w->box.side[0], w->box.side[1]) / w->speed;
     e->law.scale = 1.0;
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
     e->times = malloc((n ? n : 1) * sizeof *e->times);
     ds_status st = e->disk && e->times ? DS_OK : DS_ERR_NOMEM;
-    if (st == DS_OK && e->periodic && !(e->image = calloc(2 * (n ? n : 1), sizeof *e->image)))
+    if (st == DS_OK && ds_box_any_periodic(&e->box) &&
+        !(e->image = calloc(2 * (n ? n : 1), sizeof *e->image)))
         st = DS_ERR_NOMEM;
     if (st == DS_OK)
-        st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius_max,
+        st = ds_cells_init(&e->cells, n, e->box.side[0], e->box.side[1], 2.0 * w->radius_max,
                            w->broadphase == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
     if (st == DS_OK)
         st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));

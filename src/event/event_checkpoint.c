@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/overlap.h"
 #include "event/event_state.h"
 
@@ -95,7 +95,7 @@ static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r
     if (!has)
         return DS_OK;
     ds_ed_law *g = &e->law;
-    if (!sim->disks.r || !e->periodic)
+    if (!sim->disks.r || !ds_box_periodic(&e->box, 0) || !ds_box_periodic(&e->box, 1))
         return ds_state_refuse(err, DS_ERR_FORMAT, "growth without radii or walls around it");
     if (version < 3) {
         read_law_2x(g, r, legacy);
@@ -125,7 +125,7 @@ static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r
     /* 2.x kept no area fraction: the one its restart computed from the
      * same radii, to the bit. */
     if (version < 3)
-        g->eta = 0.5 * DS_TWO_PI * covered / (e->box_x * e->box_y);
+        g->eta = 0.5 * DS_TWO_PI * covered / (e->box.side[0] * e->box.side[1]);
     return DS_OK;
 }
 
@@ -241,17 +241,16 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_e
 {
     const ds_disks *a = &sim->disks;
     const ds_cells *c = &e->cells;
-    const double slack = 1e-9 * fmax(e->box_x, e->box_y);
+    const double slack = 1e-9 * fmax(e->box.side[0], e->box.side[1]);
     for (size_t k = 0; k < a->n; ++k) {
         const ed_disk *d = &e->disk[k];
         const double lag = now - d->t;
         double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
-        if (e->periodic) {
+        if (e->image) {
             /* The records' image counts: the arrays' less the wrap of
              * showing (ds_ed_show_at). */
             int32_t ix = 0, iy = 0;
-            x = ds_wrap_counting(x, e->box_x, &ix);
-            y = ds_wrap_counting(y, e->box_y, &iy);
+            ds_box_wrap(&e->box, &x, &y, &ix, &iy);
             e->image[2 * k] = (int32_t)((uint32_t)a->ix[k] - (uint32_t)ix);
             e->image[2 * k + 1] = (int32_t)((uint32_t)a->iy[k] - (uint32_t)iy);
         }
@@ -291,7 +290,7 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *leg
         return ds_state_refuse(err, DS_ERR_FORMAT, "the event cells do not match the box");
     if (nx != e->cells.nx || ny != e->cells.ny) {
         ds_cells_free(&e->cells);
-        if (ds_cells_init_shape(&e->cells, n, e->box_x, e->box_y, nx, ny) != DS_OK)
+        if (ds_cells_init_shape(&e->cells, n, e->box.side[0], e->box.side[1], nx, ny) != DS_OK)
             return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the event cells");
     }
     /* The clock: the epoch is a step boundary, the present one at most

@@ -37,7 +37,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/collide.h"
 #include "core/large_alloc.h"
 #include "event/event.h"
@@ -51,13 +51,6 @@ static void schedule(ds_events *e, uint32_t i) { ds_eq_set(e->queue, i, ds_ed_pr
 /* Events                                                               */
 /* ------------------------------------------------------------------ */
 
-/* The separation of two centres along one axis, to the nearest image in
- * a periodic box. */
-static inline double nearest(double r, double box, int periodic)
-{
-    return periodic ? ds_nearest(r, box) : r;
-}
-
 static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
 {
     ds_tally *tally = &sim->tally;
@@ -69,8 +62,8 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
     ed_disk *a = &e->disk[i], *b = &e->disk[j];
     ds_ed_advance(a, t);
     ds_ed_advance(b, t);
-    const double rx = nearest(b->x - a->x, e->box_x, e->periodic);
-    const double ry = nearest(b->y - a->y, e->box_y, e->periodic);
+    double rx = b->x - a->x, ry = b->y - a->y;
+    ds_box_nearest(&e->box, &rx, &ry);
     const double dvx = b->vx - a->vx, dvy = b->vy - a->vy;
     const double approach = rx * dvx + ry * dvy;
     /* Rounding can leave a predicted pair a hair from approaching; then
@@ -95,14 +88,13 @@ static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, in
     double *u = axis_y ? &d->y : &d->x, *v = axis_y ? &d->vy : &d->vx;
     /* Snap to the wall line (a mixture's disk: its own): rounding must not
      * let it creep. */
+    const double r = e->radius ? e->radius[i] : e->one_radius;
+    *u = *v < 0.0 ? r : e->box.side[axis_y] - r;
     if (e->radius || e->mass) {
-        const double r = e->radius ? e->radius[i] : e->lo_x, m = e->mass ? e->mass[i] : 1.0;
-        const double perimeter = 2.0 * (e->box_x - 2.0 * r) + 2.0 * (e->box_y - 2.0 * r);
-        *u = *v < 0.0 ? r : (axis_y ? e->box_y : e->box_x) - r;
+        const double m = e->mass ? e->mass[i] : 1.0;
         tally->wall_impulse += 2.0 * m * fabs(*v);
-        tally->wall_reach += 2.0 * m * fabs(*v) / perimeter;
+        tally->wall_reach += 2.0 * m * fabs(*v) / ds_box_wall_reached(&e->box, r);
     } else {
-        *u = *v < 0.0 ? (axis_y ? e->lo_y : e->lo_x) : (axis_y ? e->hi_y : e->hi_x);
         tally->wall_impulse += 2.0 * fabs(*v);
     }
     ++tally->wall_count;
@@ -120,7 +112,7 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
     uint16_t *c = axis_y ? &d->row : &d->column;
     const uint32_t count = axis_y ? cells->ny : cells->nx;
     double *u = axis_y ? &d->y : &d->x;
-    const double box = axis_y ? e->box_y : e->box_x;
+    const double box = e->box.side[axis_y];
     /* A periodic box's crossing counts in the disk's images. */
     int32_t *image = e->image ? &e->image[2 * (size_t)i + (axis_y ? 1 : 0)] : NULL;
     if ((axis_y ? d->vy : d->vx) > 0.0) {

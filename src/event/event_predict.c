@@ -20,19 +20,21 @@ static inline void boundary_event(const ds_events *e, const ed_disk *d, uint32_t
                                   double *best, uint32_t *kind)
 {
     const ds_cells *cells = &e->cells;
-    const int walls = !e->periodic;
+    const int walls_x = !ds_box_periodic(&e->box, 0), walls_y = !ds_box_periodic(&e->box, 1);
     /* The wall lines: R from each wall, a mixture's disk its own R. */
-    const double r = e->radius ? e->radius[i] : 0.0;
-    const double lo_x = e->radius ? r : e->lo_x, lo_y = e->radius ? r : e->lo_y;
-    const double hi_x = e->radius ? e->box_x - r : e->hi_x;
-    const double hi_y = e->radius ? e->box_y - r : e->hi_y;
+    const double r = e->radius ? e->radius[i] : e->one_radius;
+    const double hi_x = e->box.side[0] - r, hi_y = e->box.side[1] - r;
     const ds_x2 zero = ds_x2_set1(0.0), one = ds_x2_set1(1.0);
     const ds_x2 u = ds_x2_load(&d->x), v = ds_x2_load(&d->vx); /* (x, y), (vx, vy) */
     const ds_x2 cell = ds_x2_make((double)d->column, (double)d->row);
     const ds_x2 up = ds_x2_gt(v, zero);
-    const ds_x2 last = ds_x2_make((double)cells->nx - 1.0, (double)cells->ny - 1.0);
-    const ds_x2 at_wall = walls ? ds_x2_eq(cell, ds_x2_and(up, last)) : zero;
-    const ds_x2 wall = ds_x2_select(up, ds_x2_make(hi_x, hi_y), ds_x2_make(lo_x, lo_y));
+    /* The cells at a wall, the last one ahead or the first behind; along
+     * a periodic axis none (-1). */
+    const ds_x2 last = ds_x2_make(walls_x ? (double)cells->nx - 1.0 : -1.0,
+                                  walls_y ? (double)cells->ny - 1.0 : -1.0);
+    const ds_x2 first_cell = ds_x2_make(walls_x ? 0.0 : -1.0, walls_y ? 0.0 : -1.0);
+    const ds_x2 at_wall = ds_x2_eq(cell, ds_x2_select(up, last, first_cell));
+    const ds_x2 wall = ds_x2_select(up, ds_x2_make(hi_x, hi_y), ds_x2_set1(r));
     const ds_x2 edge_of_cell =
         ds_x2_mul(ds_x2_add(cell, ds_x2_and(up, one)), ds_x2_make(cells->wx, cells->wy));
     const ds_x2 edge = ds_x2_select(at_wall, wall, edge_of_cell);
@@ -58,21 +60,15 @@ void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_sten
     for (int oy = -1; oy <= 1; ++oy) {
         int64_t r = (int64_t)row + oy;
         double sy = 0.0;
-        if (r < 0 || r >= (int64_t)cells->ny) {
-            if (!e->periodic)
-                continue;
-            sy = r < 0 ? -e->box_y : e->box_y;
-            r = r < 0 ? r + cells->ny : r - cells->ny;
-        }
+        r = ds_box_cell_along(&e->box, 1, (long)r, (long)cells->ny, &sy);
+        if (r < 0)
+            continue;
         for (int ox = -1; ox <= 1; ++ox) {
             int64_t c = (int64_t)column + ox;
             double sx = 0.0;
-            if (c < 0 || c >= (int64_t)cells->nx) {
-                if (!e->periodic)
-                    continue;
-                sx = c < 0 ? -e->box_x : e->box_x;
-                c = c < 0 ? c + cells->nx : c - cells->nx;
-            }
+            c = ds_box_cell_along(&e->box, 0, (long)c, (long)cells->nx, &sx);
+            if (c < 0)
+                continue;
             st->cell[st->count] = ds_cells_index(cells, (uint32_t)c, (uint32_t)r);
             st->sx[st->count] = sx;
             st->sy[st->count++] = sy;

@@ -73,8 +73,10 @@ struct ds_events {
     uint64_t tested;    /* pair tests not yet added to the tally */
     double epoch;       /* simulated time of the integrator's t = 0 */
     double rebase_time; /* integrator time after which the epoch moves */
-    double box_x, box_y, lo_x, hi_x, lo_y, hi_y, sigma2;
-    int periodic;
+    /* The box (a copy: a state is built again when it changes), the
+     * radius of one kind of disk and its contact distance squared. */
+    ds_box box;
+    double one_radius, sigma2;
     /* A mixture's radii and masses by record (the disk arrays', whose
      * slot k is record k), or NULL for one radius (lo_x, ... and sigma2
      * above) and mass 1. */

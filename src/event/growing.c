@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/collide.h"
 #include "core/protocol.h"
 #include "event/event_state.h"
@@ -39,7 +39,7 @@ void ds_ed_restart_at(ds_events *e, size_t n, double t, double speed)
     g->rate = speed / g->scale;
     /* The area fraction of now, which grows as the square of the factor. */
     if (g->base)
-        g->eta = 0.5 * DS_TWO_PI * covered / (e->box_x * e->box_y);
+        g->eta = 0.5 * DS_TWO_PI * covered / (e->box.side[0] * e->box.side[1]);
     ds_ed_schedule_all(e, n);
     ds_eq_build(e->queue, t);
 }
@@ -54,7 +54,8 @@ void ds_ed_collide_growing(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, do
     ed_disk *a = &e->disk[i], *b = &e->disk[j];
     ds_ed_advance(a, t);
     ds_ed_advance(b, t);
-    const double rx = ds_nearest(b->x - a->x, e->box_x), ry = ds_nearest(b->y - a->y, e->box_y);
+    double rx = b->x - a->x, ry = b->y - a->y;
+    ds_box_nearest(&e->box, &rx, &ry);
     const double dvx = b->vx - a->vx, dvy = b->vy - a->vy;
     const double s0 = e->law.base[i] + e->law.base[j];
     /* Closing speed in the frame of the receding surfaces, times |r|. */

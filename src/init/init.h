@@ -28,7 +28,7 @@ ds_status ds_place_lattice(ds_disks *d, const ds_world *w);
 /* Whether the best triangular lattice of n disks has its closest sites at
  * least 2R apart (placement_lattice.c), and how far apart they are (0 if
  * there is no lattice: no sites). */
-int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int periodic);
-double ds_lattice_closest(size_t n, double radius, double box_x, double box_y, int periodic);
+int ds_lattice_fits(size_t n, double radius, const ds_box *box);
+double ds_lattice_closest(size_t n, double radius, const ds_box *box);
 
 #endif

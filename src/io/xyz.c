@@ -41,13 +41,16 @@ static size_t format_header(const ds_sim *sim, char *out)
 {
     char box[32], box_y[32], height[32], time[DS_FIELD_MAX];
     const ds_world *w = &sim->world;
-    ds_format_shortest(box, sizeof box, w->box);
-    ds_format_shortest(box_y, sizeof box_y, w->box_y);
+    ds_format_shortest(box, sizeof box, w->box.side[0]);
+    ds_format_shortest(box_y, sizeof box_y, w->box.side[1]);
     ds_format_shortest(height, sizeof height, 2.0 * w->radius_max);
     /* The time as ds_sim_get_time computes it (sim/ is above io/). */
     time[ds_format_fixed6(time, (double)sim->steps * w->dt)] = '\0';
-    /* Periodic along x and y, never along the flat z of the layer. */
-    const char *pbc = w->boundary == DS_BOUNDARY_PERIODIC ? "T T F" : "F F F";
+    /* Periodic as the box is along x and y, never along the flat z of the
+     * layer. */
+    char pbc[6] = "F F F";
+    pbc[0] = ds_box_periodic(&w->box, 0) ? 'T' : 'F';
+    pbc[2] = ds_box_periodic(&w->box, 1) ? 'T' : 'F';
     int len =
         snprintf(out, XYZ_HEADER_MAX,
                  "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES

@@ -50,30 +50,26 @@ double ds_sim_get_pressure(const ds_sim *sim)
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
     const ds_world *w = &sim->world;
-    if (w->boundary == DS_BOUNDARY_PERIODIC) /* no wall to push on */
+    const double perimeter = ds_box_wall_reached(&w->box, w->radius);
+    if (perimeter == 0.0) /* no wall to push on */
         return ds_sim_get_virial_pressure(sim);
     /* A mixture: the partial pressures of its disks add up, each over the
      * perimeter its own centre reaches (the integrators tally it). */
     if (sim->disks.r || sim->disks.m)
         return sim->tally.wall_reach / elapsed(sim);
-    const double perimeter = 2.0 * (w->box - 2.0 * w->radius) + 2.0 * (w->box_y - 2.0 * w->radius);
     return sim->tally.wall_impulse / (elapsed(sim) * perimeter);
 }
 
-/* The area the centres reach: with walls they stay R from each wall; a
+/* The area the centres reach: along walls they stay R from each; a
  * mixture's disks, each its own R: their mean area. */
 static double centre_area(const ds_sim *sim)
 {
     const ds_world *w = &sim->world;
-    if (w->boundary == DS_BOUNDARY_PERIODIC)
-        return w->box * w->box_y;
-    if (!sim->disks.r)
-        return (w->box - 2.0 * w->radius) * (w->box_y - 2.0 * w->radius);
+    if (!sim->disks.r || (ds_box_periodic(&w->box, 0) && ds_box_periodic(&w->box, 1)))
+        return ds_box_area_reached(&w->box, w->radius);
     double sum = 0.0;
-    for (size_t k = 0; k < sim->disks.n; ++k) {
-        const double r = sim->disks.r[k];
-        sum += (w->box - 2.0 * r) * (w->box_y - 2.0 * r);
-    }
+    for (size_t k = 0; k < sim->disks.n; ++k)
+        sum += ds_box_area_reached(&w->box, sim->disks.r[k]);
     return sum / (double)sim->disks.n;
 }
 
@@ -81,6 +77,9 @@ double ds_sim_get_virial_pressure(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
+    if (sim->integrator->compressibility) /* P A = Z N kT, as the integrator measures them */
+        return sim->integrator->compressibility(sim) * (double)sim->world.n *
+               ds_sim_get_temperature(sim) / centre_area(sim);
     return (ds_sim_get_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) /
            centre_area(sim);
 }
@@ -96,13 +95,21 @@ double ds_sim_get_virial_pressure(const ds_sim *sim)
  *   mass carries P^2 / (2 M) that no pair's relative motion sees, and the
  *   internal energy K_int = K - P^2 / (2 M) spreads over 2 (N - 1)
  *   degrees of freedom: <m_i m_j / (m_i + m_j) (v_i - v_j)_x^2> = kT with
- *   kT = K_int / (N - 1). (A single disk: no internal motion, 0.) */
+ *   kT = K_int / (N - 1). (A single disk: no internal motion, 0.)
+ * - a channel conserves P_x alone: K - P_x^2 / (2 M) over 2 N - 1
+ *   degrees of freedom, kT = (K - P_x^2 / (2 M)) / (N - 1/2).
+ * An integrator that knows its temperature otherwise (a sampler with no
+ * velocities) says so through its table. */
 double ds_sim_get_temperature(const ds_sim *sim)
 {
     if (!sim || sim->world.n == 0)
         return 0.0;
+    if (sim->integrator->temperature)
+        return sim->integrator->temperature(sim);
     const double n = (double)sim->world.n, kinetic = ds_sim_get_kinetic_energy(sim);
-    if (sim->world.boundary != DS_BOUNDARY_PERIODIC)
+    const int px_kept = ds_box_periodic(&sim->world.box, 0);
+    const int py_kept = ds_box_periodic(&sim->world.box, 1);
+    if (!px_kept && !py_kept)
         return kinetic / n;
     if (sim->world.n < 2)
         return 0.0;
@@ -113,8 +120,9 @@ double ds_sim_get_temperature(const ds_sim *sim)
         for (size_t k = 0; k < sim->disks.n; ++k)
             mass += sim->disks.m[k];
     }
-    const double internal = kinetic - (px * px + py * py) / (2.0 * mass);
-    return (internal > 0.0 ? internal : 0.0) / (n - 1.0);
+    const double kept = px_kept && py_kept ? px * px + py * py : px_kept ? px * px : py * py;
+    const double internal = kinetic - kept / (2.0 * mass);
+    return (internal > 0.0 ? internal : 0.0) / (px_kept && py_kept ? n - 1.0 : n - 0.5);
 }
 
 /* The canonical Z. The virial theorem with the collisions' impulses
@@ -133,6 +141,8 @@ double ds_sim_get_compressibility_factor(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
+    if (sim->integrator->compressibility)
+        return sim->integrator->compressibility(sim);
     const double kt = ds_sim_get_temperature(sim);
     if (!(kt > 0.0))
         return 1.0; /* no relative motion, no collisions: the ideal gas */

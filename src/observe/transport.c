@@ -156,7 +156,7 @@ ds_status ds_transport_sample(ds_transport *tr, const ds_sim *sim, ds_error *err
      * ds_sim_get_unwrapped gives them. */
     double *xy = tr->scratch, *v = tr->scratch + 2 * tr->n;
     const ds_disks *a = &sim->disks;
-    const double box_x = sim->world.box, box_y = sim->world.box_y;
+    const double box_x = sim->world.box.side[0], box_y = sim->world.box.side[1];
     for (size_t k = 0; k < a->n; ++k) {
         const size_t i = a->id[k];
         xy[2 * i] = a->ix ? a->x[k] + (double)a->ix[k] * box_x : a->x[k];

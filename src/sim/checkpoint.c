@@ -71,8 +71,8 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     const ds_world *wo = &sim->world;
     ds_put_u64(w, wo->n);
     ds_put_f64(w, wo->radius);
-    ds_put_f64(w, wo->box);
-    ds_put_f64(w, wo->box_y);
+    ds_put_f64(w, wo->box.side[0]);
+    ds_put_f64(w, wo->box.side[1]);
     ds_put_f64(w, wo->speed);
     ds_put_f64(w, wo->dt);
     ds_put_u32(w, (uint32_t)wo->integrator);
@@ -82,7 +82,7 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     ds_put_u64(w, wo->seed);
     /* Which of the optional arrays follow each disk: 1 radii, 2 masses,
      * 4 image counters (a periodic box; a state without them has 0). */
-    ds_put_u32(w, (sim->disks.r ? 1u : 0u) | (sim->disks.m ? 2u : 0u) | (sim->disks.ix ? 4u : 0u));
+    ds_put_u32(w, ds_disks_columns(&sim->disks)); /* a bit per column there */
     ds_put_u64(w, sim->steps);
     ds_put_u64(w, sim->observables_since_step);
     ds_put_u64(w, sim->tally.collisions);
@@ -93,22 +93,7 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     ds_put_f64(w, sim->tally.virial);
     ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
     put_stress(&sim->tally, w);
-    const ds_disks *d = &sim->disks;
-    for (size_t k = 0; k < d->n; ++k) {
-        ds_put_f64(w, d->x[k]);
-        ds_put_f64(w, d->y[k]);
-        ds_put_f64(w, d->vx[k]);
-        ds_put_f64(w, d->vy[k]);
-        ds_put_u32(w, d->id[k]);
-        if (d->r)
-            ds_put_f64(w, d->r[k]);
-        if (d->m)
-            ds_put_f64(w, d->m[k]);
-        if (d->ix) {
-            ds_put_u32(w, (uint32_t)d->ix[k]);
-            ds_put_u32(w, (uint32_t)d->iy[k]);
-        }
-    }
+    ds_disks_save(&sim->disks, w);
     sim->integrator->save(sim, w);
     ds_protocols_save(sim, w);
 }
@@ -276,7 +261,9 @@ static ds_status mixture_world(ds_sim *sim, ds_error *err)
     if (!sim->disks.r)
         return DS_OK;
     ds_world_take_radii(w, &sim->disks);
-    const double most = (w->boundary == DS_BOUNDARY_PERIODIC ? 0.25 : 0.5) * fmin(w->box, w->box_y);
+    double most = INFINITY;
+    for (int a = 0; a < 2; ++a)
+        most = fmin(most, (ds_box_periodic(&w->box, a) ? 0.25 : 0.5) * w->box.side[a]);
     if (!(w->radius_max < most))
         return ds_state_refuse(err, DS_ERR_FORMAT, "its largest radius %g does not fit its box",
                                w->radius_max);
@@ -293,8 +280,9 @@ static double past_the_walls(const ds_sim *sim)
 {
     const ds_world *w = &sim->world;
     const ds_disks *d = &sim->disks;
-    double past = 1e-9 * fmax(w->box, w->box_y);
-    if (w->boundary == DS_BOUNDARY_WALLS && w->integrator == DS_INTEGRATOR_TIME_STEP) {
+    double past = 1e-9 * fmax(w->box.side[0], w->box.side[1]);
+    if (!(ds_box_periodic(&w->box, 0) && ds_box_periodic(&w->box, 1)) &&
+        w->integrator == DS_INTEGRATOR_TIME_STEP) {
         double fastest = 0.0;
         for (size_t k = 0; k < d->n; ++k)
             fastest = fmax(fastest, hypot(d->vx[k], d->vy[k]));
@@ -307,26 +295,16 @@ static double past_the_walls(const ds_sim *sim)
  * numbers > 0, and every disk one ds_sim_set_disk would take (finite, no
  * faster than DS_VELOCITY_MAX, in the box up to past_the_walls): the same
  * check, so a forged file cannot start a run no caller could. */
-static ds_status read_disks(ds_reader *r, ds_sim *sim, int images, ds_error *err)
+static ds_status read_disks(ds_reader *r, ds_sim *sim, ds_error *err)
 {
     const ds_world *w = &sim->world;
     ds_disks *d = &sim->disks;
+    /* Any image counts: every pair of int32 is a place. */
+    if (!ds_disks_load_all(d, r))
+        return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside its disks");
+    if (ds_box_any_periodic(&w->box) && !d->ix && ds_disks_add_images(d) != DS_OK)
+        return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", d->n);
     for (size_t k = 0; k < d->n; ++k) {
-        d->x[k] = ds_get_f64(r);
-        d->y[k] = ds_get_f64(r);
-        d->vx[k] = ds_get_f64(r);
-        d->vy[k] = ds_get_f64(r);
-        d->id[k] = ds_get_u32(r);
-        if (d->r)
-            d->r[k] = ds_get_f64(r);
-        if (d->m)
-            d->m[k] = ds_get_f64(r);
-        if (images) { /* any counts: every pair of int32 is a place */
-            d->ix[k] = (int32_t)ds_get_u32(r);
-            d->iy[k] = (int32_t)ds_get_u32(r);
-        }
-        if (r->failed)
-            return ds_state_refuse(err, DS_ERR_FORMAT, "the file ends inside slot %zu", k);
         const double radius = d->r ? d->r[k] : w->radius;
         if (!(radius > 0.0) || !isfinite(radius) || (d->m && !(d->m[k] > 0.0 && isfinite(d->m[k]))))
             return ds_state_refuse(err, DS_ERR_FORMAT, "slot %zu's radius or mass is no number > 0",
@@ -362,6 +340,36 @@ static ds_status load_parts(ds_sim *sim, ds_reader *r, uint32_t version, ds_erro
     return st;
 }
 
+/* Which columns follow each disk, and the optional ones made: version 3
+ * names a bit per column of DS_DISK_COLUMNS (ds_disks_columns); 2.x's
+ * versions named 1 radii, 2 masses, 4 image counts, in the same order. */
+static ds_status read_columns(ds_reader *r, ds_sim *sim, uint32_t version, ds_error *err)
+{
+    uint32_t bits = ds_get_u32(r);
+    if (version < 3) {
+        if (bits > 7u)
+            return ds_state_refuse(err, DS_ERR_FORMAT, "it names arrays this library does not know");
+        bits = DS_DISKS_EVERY_COLUMN | (bits & 1u ? 1u << DS_COLUMN_r : 0u) |
+               (bits & 2u ? 1u << DS_COLUMN_m : 0u) |
+               (bits & 4u ? 1u << DS_COLUMN_ix | 1u << DS_COLUMN_iy : 0u);
+    }
+    const uint32_t images = 1u << DS_COLUMN_ix | 1u << DS_COLUMN_iy;
+    const int periodic = ds_box_any_periodic(&sim->world.box);
+    if ((bits & DS_DISKS_EVERY_COLUMN) != DS_DISKS_EVERY_COLUMN || bits >> DS_COLUMN_COUNT ||
+        ((bits & images) != 0u && (bits & images) != images))
+        return ds_state_refuse(err, DS_ERR_FORMAT, "it names arrays this library does not know");
+    if ((bits & images) && !periodic)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "it has image counters without a periodic box");
+    if (!(bits & images) && periodic && version >= 3)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "its periodic box has no image counters");
+    /* A 2.x state from before image counts: its disks start at 0 (added
+     * once the disks are read, read_disks). */
+    for (int c = 0; c < DS_COLUMN_COUNT; ++c)
+        if ((bits >> c & 1u) && ds_disks_add(&sim->disks, (ds_column)c) != DS_OK)
+            return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", sim->world.n);
+    return DS_OK;
+}
+
 ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_error *err)
 {
     ds_error_clear(err);
@@ -388,15 +396,8 @@ ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_err
     }
     sim->world = w;
     sim->integrator = ds_integrator_ops_of(w.integrator);
-    const uint32_t arrays = ds_get_u32(&r);
-    const int periodic = w.boundary == DS_BOUNDARY_PERIODIC;
-    if (arrays > 7u)
-        st = ds_state_refuse(err, DS_ERR_FORMAT, "it names arrays this library does not know");
-    else if ((arrays & 4u) && !periodic)
-        st = ds_state_refuse(err, DS_ERR_FORMAT, "it has image counters without a periodic box");
-    else if (ds_disks_add_mixture(&sim->disks, arrays & 1u, arrays & 2u) != DS_OK ||
-             (periodic && ds_disks_add_images(&sim->disks) != DS_OK))
-        st = ds_state_refuse(err, DS_ERR_NOMEM, "no memory for %zu disks", w.n);
+    const ds_status columns = read_columns(&r, sim, version, err);
+    st = columns;
     sim->steps = ds_get_u64(&r);
     sim->observables_since_step = ds_get_u64(&r);
     sim->tally.collisions = ds_get_u64(&r);
@@ -417,7 +418,7 @@ ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_err
     for (size_t k = 0; st == DS_OK && k < w.n; ++k)
         sim->disks.slot[k] = UINT32_MAX;
     if (st == DS_OK)
-        st = read_disks(&r, sim, (arrays & 4u) != 0, err);
+        st = read_disks(&r, sim, err);
     if (st == DS_OK)
         st = load_parts(sim, &r, version, err);
     if (st == DS_OK && ds_left(&r) != 0)

@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/overlap.h"
 #include "sim/sim.h"
 
@@ -91,7 +91,7 @@ ds_status ds_sim_get_unwrapped(const ds_sim *sim, double *xy, ds_error *err)
     if (!sim || !xy)
         return refuse_null(err, sim ? "xy" : "sim");
     const ds_disks *a = &sim->disks;
-    const double box_x = sim->world.box, box_y = sim->world.box_y;
+    const double box_x = sim->world.box.side[0], box_y = sim->world.box.side[1];
     for (size_t k = 0; k < a->n; ++k) {
         const size_t i = a->id[k];
         xy[2 * i] = a->ix ? a->x[k] + (double)a->ix[k] * box_x : a->x[k];
@@ -110,24 +110,27 @@ static ds_status check_values(const ds_world *w, size_t i, double radius, double
         return ds_refuse(err, DS_ERR_ARG, "disk", fmax(fabs(d.vx), fabs(d.vy)), DS_VELOCITY_MAX,
                          "disk %zu moves at (%g, %g): a velocity component beyond 1e12", i, d.vx,
                          d.vy);
-    /* With walls the centre stays R from each wall (past that by past); a
-     * periodic box takes any point of [0, box) x [0, box_y), as its
-     * frames show them. */
-    if (w->boundary == DS_BOUNDARY_PERIODIC) {
-        if (!(d.x >= 0.0 && d.x < w->box && d.y >= 0.0 && d.y < w->box_y))
-            return ds_refuse(err, DS_ERR_ARG, "disk", NAN, NAN,
-                             "disk %zu at (%g, %g) is outside the periodic box [0, %g) x "
-                             "[0, %g)",
-                             i, d.x, d.y, w->box, w->box_y);
+    /* Along walls the centre stays R from each (past that by past); a
+     * periodic side takes any point of [0, side), as frames show them. */
+    const ds_box *b = &w->box;
+    if (ds_box_holds(b, d.x, d.y, radius, past))
         return DS_OK;
-    }
-    const double lo = radius - past, hi_x = w->box - radius + past, hi_y = w->box_y - radius + past;
-    if (!(d.x >= lo && d.x <= hi_x && d.y >= lo && d.y <= hi_y))
+    if (ds_box_periodic(b, 0) && ds_box_periodic(b, 1))
+        return ds_refuse(err, DS_ERR_ARG, "disk", NAN, NAN,
+                         "disk %zu at (%g, %g) is outside the periodic box [0, %g) x [0, %g)", i,
+                         d.x, d.y, b->side[0], b->side[1]);
+    double lo_x, hi_x, lo_y, hi_y;
+    ds_box_reach(b, 0, radius, &lo_x, &hi_x);
+    ds_box_reach(b, 1, radius, &lo_y, &hi_y);
+    if (!ds_box_periodic(b, 0) && !ds_box_periodic(b, 1))
         return ds_refuse(err, DS_ERR_ARG, "disk", NAN, NAN,
                          "disk %zu at (%g, %g) is outside [%g, %g] x [%g, %g], where the "
                          "centre of a disk of radius %g stays between the walls",
-                         i, d.x, d.y, lo, hi_x, lo, hi_y, radius);
-    return DS_OK;
+                         i, d.x, d.y, lo_x - past, hi_x + past, lo_y - past, hi_y + past, radius);
+    return ds_refuse(err, DS_ERR_ARG, "disk", NAN, NAN,
+                     "disk %zu at (%g, %g) is outside the channel [0, %g) x [%g, %g], where the "
+                     "centre of a disk of radius %g stays between the walls along y",
+                     i, d.x, d.y, b->side[0], lo_y - past, hi_y + past, radius);
 }
 
 ds_status ds_check_disk(const ds_world *w, size_t i, double radius, double past, ds_disk d,
@@ -187,10 +190,7 @@ static ds_status check_overlaps(const ds_world *w, const ds_disk *disks, const d
         return ds_refuse(err, DS_ERR_NOMEM, "disks", NAN, NAN, "no memory to check %zu disks", n);
     if (st != DS_OK) {
         double dx = disks[k].x - disks[j].x, dy = disks[k].y - disks[j].y;
-        if (w->boundary == DS_BOUNDARY_PERIODIC) {
-            dx = ds_nearest(dx, w->box);
-            dy = ds_nearest(dy, w->box_y);
-        }
+        ds_box_nearest(&w->box, &dx, &dy);
         const double apart = sqrt(dx * dx + dy * dy);
         const double contact = radii ? radii[j] + radii[k] : 2.0 * w->radius;
         ds_error_index(err, j);

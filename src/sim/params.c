@@ -26,8 +26,8 @@ ds_world ds_world_of(const ds_params *p)
     memset(&w, 0, sizeof w);
     w.n = p->n;
     w.radius = p->radius;
-    w.box = p->box == 0.0 ? 1000.0 : p->box;
-    w.box_y = p->box_y == 0.0 ? w.box : p->box_y;
+    const double width = p->box == 0.0 ? 1000.0 : p->box;
+    w.box = ds_box_of(p->boundary, width, p->box_y == 0.0 ? width : p->box_y);
     w.speed = p->speed == 0.0 ? 100.0 : p->speed;
     w.dt = p->dt == 0.0 ? 0.001 : p->dt;
     w.integrator = p->integrator;
@@ -139,14 +139,16 @@ static ds_status check_mixture(const ds_mixture *m, double reference, ds_world *
  * (2/sqrt 3) s t + s + t + 1 disks fit. The bound is exact for one disk
  * and tends to the hexagonal packing, area fraction pi / (2 sqrt 3) =
  * 0.907, for many. A periodic box has no edge: the hexagonal packing
- * density bounds it, (2/sqrt 3) box box_y / (2R)^2 disks. */
+ * density bounds it, (2/sqrt 3) box box_y / (2R)^2 disks; a channel's two
+ * walls add s, a row's worth along them. */
 static int disks_cannot_fit(const ds_world *w)
 {
-    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
+    const int px = ds_box_periodic(&w->box, 0), py = ds_box_periodic(&w->box, 1);
     const double d = 2.0 * w->radius;
-    const double s = periodic ? w->box / d : (w->box - d) / d;
-    const double t = periodic ? w->box_y / d : (w->box_y - d) / d;
-    const double most = 1.1547005383792515 * s * t + (periodic ? 0.0 : s + t + 1.0);
+    const double s = px ? w->box.side[0] / d : (w->box.side[0] - d) / d;
+    const double t = py ? w->box.side[1] / d : (w->box.side[1] - d) / d;
+    const double edges = px && py ? 0.0 : !px && !py ? s + t + 1.0 : px ? s : t;
+    const double most = 1.1547005383792515 * s * t + edges;
     return (double)w->n > most * (1.0 + 1e-12); /* slack: never refuse a fit to rounding */
 }
 
@@ -217,8 +219,15 @@ static ds_status check_size(const ds_world *w, int mixture, double min_room, ds_
 {
     if (w->n < 1)
         return ds_refuse(err, DS_ERR_ARG, "n", 0.0, 1.0, "n = 0: there must be at least one disk");
-    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
-    const double most = (periodic ? 0.25 : 0.5) * fmin(w->box, w->box_y);
+    const ds_box *b = &w->box;
+    const int periodic = ds_box_periodic(b, 0) && ds_box_periodic(b, 1);
+    const int walls = !ds_box_periodic(b, 0) && !ds_box_periodic(b, 1);
+    double most = INFINITY, band = INFINITY;
+    for (int a = 0; a < 2; ++a) {
+        most = fmin(most, (ds_box_periodic(b, a) ? 0.25 : 0.5) * b->side[a]);
+        if (!ds_box_periodic(b, a))
+            band = fmin(band, b->side[a]);
+    }
     if (!(w->radius > 0.0) || !isfinite(w->radius))
         return ds_refuse(err, DS_ERR_ARG, "radius", w->radius, 0.0,
                          "radius = %g must be a number > 0", w->radius);
@@ -231,16 +240,19 @@ static ds_status check_size(const ds_world *w, int mixture, double min_room, ds_
         return ds_refuse(err, DS_ERR_ARG, field, r, most,
                          periodic ? "%s %g%s is too large for a periodic box of %g x %g: it "
                                     "must be below a quarter of each side (%g)"
-                                  : "%s %g%s does not fit a box of %g x %g: it must be below "
-                                    "half of its shorter side (%g)",
-                         what, r, sep, w->box, w->box_y, most);
-    /* The band a centre moves in between the walls, for an integrator that
+                         : walls  ? "%s %g%s does not fit a box of %g x %g: it must be below "
+                                    "half of its shorter side (%g)"
+                                  : "%s %g%s does not fit a channel of %g x %g: it must be "
+                                    "below a quarter of its periodic side and half of its "
+                                    "walled one (%g)",
+                         what, r, sep, b->side[0], b->side[1], most);
+    /* The band a centre moves in between walls, for an integrator that
      * needs room: a disk in a band a rounding error wider than itself
      * would turn at the walls a rounding error apart. */
-    const double band = fmin(w->box, w->box_y) - 2.0 * r;
+    const double side = band;
+    band -= 2.0 * r;
     if (!periodic && min_room > 0.0 && !(band >= 2.0 * r * min_room))
-        return ds_refuse(err, DS_ERR_ARG, field, r,
-                         fmin(w->box, w->box_y) / (2.0 * (1.0 + min_room)),
+        return ds_refuse(err, DS_ERR_ARG, field, r, side / (2.0 * (1.0 + min_room)),
                          "%s %.17g%s leaves its centre a band of %g between the walls: the %s "
                          "integrator needs %g of a diameter at least (%g)",
                          what, r, sep, band, ds_integrator_ops_of(w->integrator)->name, min_room,
@@ -261,8 +273,7 @@ static ds_status check_size(const ds_world *w, int mixture, double min_room, ds_
  * its distance (Oler's bound: centres 2 r_min apart at least). */
 static ds_status check_packing(const ds_world *w, int mixture, double min_room, ds_error *err)
 {
-    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
-    const double fraction = w->covered / (w->box * w->box_y);
+    const double fraction = w->covered / (w->box.side[0] * w->box.side[1]);
     const double site = w->radius_max; /* what a lattice's sites must hold */
     char disks[96];
     if (mixture)
@@ -270,12 +281,12 @@ static ds_status check_packing(const ds_world *w, int mixture, double min_room, 
     else
         snprintf(disks, sizeof disks, "disks of radius %g", w->radius);
     if (w->placement == DS_PLACEMENT_LATTICE) {
-        if (!ds_lattice_fits(w->n, site, w->box, w->box_y, periodic))
+        if (!ds_lattice_fits(w->n, site, &w->box))
             return ds_refuse(err, DS_ERR_PLACEMENT, "n", (double)w->n, NAN,
                              "n = %zu %s cover %.3f of the box; no triangular lattice of them "
                              "fits without overlap (close packing is 0.9069%s)",
                              w->n, disks, fraction, mixture ? " for the largest" : "");
-        const double closest = ds_lattice_closest(w->n, site, w->box, w->box_y, periodic);
+        const double closest = ds_lattice_closest(w->n, site, &w->box);
         if (min_room > 0.0 && !(closest >= 2.0 * site * (1.0 + min_room)))
             return ds_refuse(err, DS_ERR_PLACEMENT, "n", (double)w->n, NAN,
                              "n = %zu %s cover %.7f of the box: their lattice is at close "
@@ -364,7 +375,7 @@ ds_status ds_params_memory(const ds_params *params, const ds_mixture *mixture, s
         w.broadphase = ops->choose(&w);
     const size_t per_disk = DS_DISKS_BYTES_PER_DISK + DS_PLACEMENT_BYTES_PER_DISK +
                             (mixture ? DS_DISKS_MIXTURE_BYTES : 0) +
-                            (w.boundary == DS_BOUNDARY_PERIODIC ? DS_DISKS_IMAGE_BYTES : 0);
+                            (ds_box_any_periodic(&w.box) ? DS_DISKS_IMAGE_BYTES : 0);
     *bytes = (w.n + 1) * per_disk + ops->bytes(&w);
     return DS_OK;
 }

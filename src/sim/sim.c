@@ -41,7 +41,7 @@ static ds_status make_disks(ds_sim *sim, const ds_mixture *mixture, ds_error *er
      * from the arrays (a checkpoint's load, growth): the same bits. */
     if (st == DS_OK)
         ds_world_take_radii(&sim->world, &sim->disks);
-    if (st == DS_OK && w->boundary == DS_BOUNDARY_PERIODIC)
+    if (st == DS_OK && ds_box_any_periodic(&w->box))
         st = ds_disks_add_images(&sim->disks);
     if (st != DS_OK)
         return ds_refuse(err, st, "n", (double)w->n, NAN, "n = %zu disks: no memory for them",
@@ -121,11 +121,11 @@ ds_status ds_sim_step(ds_sim *sim, ds_error *err) { return ds_sim_run(sim, 1, er
 size_t ds_sim_get_count(const ds_sim *sim) { return sim ? sim->world.n : 0; }
 double ds_sim_get_radius(const ds_sim *sim) { return sim ? sim->world.radius : 0.0; }
 double ds_sim_get_radius_max(const ds_sim *sim) { return sim ? sim->world.radius_max : 0.0; }
-double ds_sim_get_box_width(const ds_sim *sim) { return sim ? sim->world.box : 0.0; }
-double ds_sim_get_box_height(const ds_sim *sim) { return sim ? sim->world.box_y : 0.0; }
+double ds_sim_get_box_width(const ds_sim *sim) { return sim ? sim->world.box.side[0] : 0.0; }
+double ds_sim_get_box_height(const ds_sim *sim) { return sim ? sim->world.box.side[1] : 0.0; }
 double ds_sim_get_area_fraction(const ds_sim *sim)
 {
-    return sim ? sim->world.covered / (sim->world.box * sim->world.box_y) : 0.0;
+    return sim ? sim->world.covered / (sim->world.box.side[0] * sim->world.box.side[1]) : 0.0;
 }
 double ds_sim_get_dt(const ds_sim *sim) { return sim ? sim->world.dt : 0.0; }
 /* steps * dt rather than a running sum, so time carries no rounding drift

@@ -7,9 +7,9 @@
 /* A sweep sees the box as the coordinates stand; in a periodic box the
  * pairs across its edges need the seam pass. Brute force takes every
  * pair to its nearest image itself. */
-static int needs_seam(ds_broadphase kind, int periodic)
+static int needs_seam(ds_broadphase kind, const ds_box *box)
 {
-    return periodic && kind != DS_BROADPHASE_BRUTE;
+    return ds_box_any_periodic(box) && kind != DS_BROADPHASE_BRUTE;
 }
 
 static void set_up(ds_bp *bp, ds_broadphase kind, const ds_world *w)
@@ -18,8 +18,6 @@ static void set_up(ds_bp *bp, ds_broadphase kind, const ds_world *w)
     bp->scan = ds_bp_widest_scan();
     bp->diameter = 2.0 * w->radius_max; /* a mixture prunes with its largest */
     bp->box = w->box;
-    bp->box_y = w->box_y;
-    bp->periodic = w->boundary == DS_BOUNDARY_PERIODIC;
 }
 
 ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disks *d)
@@ -36,7 +34,7 @@ ds_status ds_bp_create(ds_bp *bp, ds_broadphase kind, const ds_world *w, ds_disk
     default:
         break;
     }
-    if (st == DS_OK && needs_seam(kind, bp->periodic))
+    if (st == DS_OK && needs_seam(kind, &bp->box))
         st = ds_seam_create(bp, d->n);
     return st;
 }
@@ -55,7 +53,7 @@ ds_status ds_bp_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds
         return ds_state_refuse(err, DS_ERR_FORMAT, "the broad phase's part is not %s's",
                                ds_broadphase_name(bp->kind));
     ds_status st = bp->kind == DS_BROADPHASE_STRIPS ? ds_strips_load(bp, w, d, r, err) : DS_OK;
-    if (st == DS_OK && needs_seam(bp->kind, bp->periodic) && ds_seam_create(bp, d->n) != DS_OK)
+    if (st == DS_OK && needs_seam(bp->kind, &bp->box) && ds_seam_create(bp, d->n) != DS_OK)
         st = ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the seam pass of %zu disks", d->n);
     return st;
 }
@@ -71,7 +69,7 @@ size_t ds_bp_bytes(const ds_world *w)
     size_t bytes = 0;
     if (w->broadphase == DS_BROADPHASE_STRIPS)
         bytes += (w->n + 2) * DS_STRIPS_BYTES_PER_DISK;
-    if (needs_seam(w->broadphase, w->boundary == DS_BOUNDARY_PERIODIC))
+    if (needs_seam(w->broadphase, &w->box))
         bytes += ds_seam_bytes(w->n);
     return bytes;
 }

@@ -40,8 +40,7 @@ typedef struct ds_bp {
     ds_broadphase kind; /* DS_BROADPHASE_SAP, DS_BROADPHASE_STRIPS or DS_BROADPHASE_BRUTE */
     ds_scan scan;
     double diameter; /* centres closer than this overlap */
-    double box, box_y;
-    int periodic;
+    ds_box box;
     ds_strips *strips; /* DS_BROADPHASE_STRIPS only */
     ds_seam *seam;     /* a sweep in a periodic box only */
 } ds_bp;

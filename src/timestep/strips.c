@@ -59,7 +59,7 @@ struct ds_strips {
  * box * DBL_EPSILON; the slack keeps h - 2m above 2R despite it. */
 static void strips_geometry(const ds_world *w, size_t *count, double *height, double *margin)
 {
-    const double diameter = 2.0 * w->radius_max, box = w->box_y; /* strips cut the height */
+    const double diameter = 2.0 * w->radius_max, box = w->box.side[1]; /* strips cut the height */
     double s = floor(box / (STRIP_HEIGHT_DIAMETERS * diameter));
     /* No more strips than disks: empty strips cost a loop iteration each. */
     if (s > (double)w->n)
@@ -240,7 +240,7 @@ static void initial_layout(ds_disks *d, const ds_world *world, struct ds_strips 
         if (len == 0)
             continue;
         uint32_t *cell_start = count + lo;
-        const double cells_per_unit = (double)len / world->box;
+        const double cells_per_unit = (double)len / world->box.side[0];
         memset(cell_start, 0, (len + 1) * sizeof *cell_start);
         for (size_t m = lo; m < lo + len; ++m) {
             double c = floor(x[st->incoming[m]] * cells_per_unit);

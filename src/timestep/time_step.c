@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/collide.h"
 #include "timestep/broad_phase.h"
 #include "timestep/timestep.h"
@@ -17,7 +17,7 @@
  * sides for the nearest image. */
 typedef struct pair_context {
     ds_tally *tally;
-    double box, box_y;
+    const ds_box *box;
 } pair_context;
 
 /* The response to a pair whose separation from a to b is (dx, dy). A
@@ -53,8 +53,9 @@ static void resolve_pair(ds_disks *d, size_t a, size_t b, void *ctx)
 static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
 {
     const pair_context *c = ctx;
-    resolve(d, a, b, ds_nearest(d->x[b] - d->x[a], c->box), ds_nearest(d->y[b] - d->y[a], c->box_y),
-            c->tally);
+    double dx = d->x[b] - d->x[a], dy = d->y[b] - d->y[a];
+    ds_box_nearest(c->box, &dx, &dy);
+    resolve(d, a, b, dx, dy, c->tally);
 }
 
 static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
@@ -62,16 +63,12 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
     (void)err; /* a step needs no memory */
     ds_bp *bp = sim->state;
     const ds_world *w = &sim->world;
-    const int periodic = w->boundary == DS_BOUNDARY_PERIODIC;
-    const ds_pair_fn on_pair = periodic ? resolve_pair_periodic : resolve_pair;
-    pair_context ctx = {&sim->tally, w->box, w->box_y};
+    const ds_pair_fn on_pair = ds_box_any_periodic(&w->box) ? resolve_pair_periodic : resolve_pair;
+    pair_context ctx = {&sim->tally, &w->box};
     for (uint64_t s = 0; s < steps; ++s) {
         /* The step's flight is at the velocities its start has. */
         ds_tally_flight(&sim->tally, w->dt);
-        if (periodic)
-            ds_move_and_wrap(&sim->disks, w);
-        else
-            ds_move_and_reflect(&sim->disks, w, &sim->tally);
+        ds_move(&sim->disks, w, &sim->tally);
         ds_timer_start(&sim->collision_timer);
         sim->tally.pairs_tested += ds_bp_find_pairs(bp, &sim->disks, on_pair, &ctx);
         ds_timer_stop(&sim->collision_timer);
@@ -95,7 +92,7 @@ static ds_broadphase choose(const ds_world *w)
      * 4 to 11, best of 5): SAP is 3.6x faster at 4 (the seed case) and
      * 1.1-1.2x faster at 8 at N <= 2000; they break even between 8 and 9;
      * strips are 1.15-1.35x faster at 10. */
-    const double per_disk = (double)w->n * 2.0 * w->radius / w->box;
+    const double per_disk = (double)w->n * 2.0 * w->radius / w->box.side[0];
     return per_disk > 8.5 ? DS_BROADPHASE_STRIPS : DS_BROADPHASE_SAP;
 }
 
