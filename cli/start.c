@@ -88,8 +88,8 @@ const ds_mixture *mixture_of(const options *o, ds_species kinds[2], ds_mixture *
         return NULL;
     /* The large disks: the nearest whole number to FRACTION N. */
     const size_t large = o->mixture_text ? (size_t)floor(o->mix_fraction * (double)o->n + 0.5) : 0;
-    kinds[0] = (ds_species){o->n - large, o->radius, 0.0};
-    kinds[1] = (ds_species){large, o->mix_ratio * o->radius, 0.0};
+    kinds[0] = (ds_species){o->n - large, o->radius, 0.0, NULL};
+    kinds[1] = (ds_species){large, o->mix_ratio * o->radius, 0.0, NULL};
     *mix = (ds_mixture){large ? 2 : 1, kinds, NULL, NULL, o->mass_rule};
     return mix;
 }

@@ -161,7 +161,7 @@ static ds_params params_of(const config *c)
 
 /* The mixture of c: 1:1.4 in two species, or radii and masses disk by
  * disk. */
-static ds_species kinds[2] = {{N_DISKS / 2, 25.0, 0.0}, {N_DISKS - N_DISKS / 2, 35.0, 0.0}};
+static ds_species kinds[2] = {{N_DISKS / 2, 25.0, 0.0, NULL}, {N_DISKS - N_DISKS / 2, 35.0, 0.0, NULL}};
 static double radii[N_DISKS], masses[N_DISKS];
 static ds_mixture mixture_of(const config *c)
 {

@@ -301,8 +301,8 @@ static ds_sim *create_case(const lockstep_case *c, ds_broadphase bp)
     p.broadphase = bp;
     p.boundary = c->boundary;
     p.box_y = c->box_y;
-    const ds_species kinds[2] = {{c->n / 2, c->radius, 0.0},
-                                 {c->n - c->n / 2, 1.4 * c->radius, 0.0}};
+    const ds_species kinds[2] = {{c->n / 2, c->radius, 0.0, NULL},
+                                 {c->n - c->n / 2, 1.4 * c->radius, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     ds_sim *sim = NULL;
     assert_int_equal(ds_sim_create(&p, c->mixture ? &mixture : NULL, &sim, NULL), DS_OK);

@@ -337,7 +337,7 @@ static void test_a_loaded_run_goes_on_with_the_stress_integral(void **state)
 static void test_a_mixture_keeps_its_area_fraction_to_the_bit(void **state)
 {
     (void)state;
-    const ds_species kinds[] = {{300, 9.0, 0.0}, {300, 6.3, 0.0}};
+    const ds_species kinds[] = {{300, 9.0, 0.0, NULL}, {300, 6.3, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     for (size_t c = 0; c < sizeof ALL / sizeof ALL[0]; ++c) {
         ds_params p = ds_params_default(600, 9.0);
@@ -469,7 +469,7 @@ static void test_a_length_field_past_the_file_is_a_truncated_checkpoint(void **s
 
 /* The payload of format version 1: version 3's without the pressure
  * tensor's parts (10 doubles after the collision timer, 188 bytes into
- * the file) and without the list of protocols (its count at the end; a
+ * the file), without the kinds and without the list of protocols (its count at the end; a
  * growth, which version 1 kept in the integrator's part, is not in these
  * runs). */
 static size_t as_version_1(uint8_t *buf, size_t len)
@@ -483,6 +483,18 @@ static size_t as_version_1(uint8_t *buf, size_t len)
     const size_t at = 188, cut = 80;
     memmove(buf + at, buf + at + cut, len - at - cut);
     len -= cut;
+    /* Version 3's kinds (a count and 16 bytes a name) after the disks:
+     * n (40 bytes in) times x, y, vx, vy, id and the optional columns. */
+    uint64_t n = 0;
+    for (int b = 0; b < 8; ++b)
+        n |= (uint64_t)buf[40 + b] << (8 * b);
+    const size_t disk = 36 + 8 * (old & 1u) + 8 * (old >> 1 & 1u) + 8 * (old >> 2 & 1u);
+    assert_true((bits >> 9 & 1u) == 0); /* one kind: no kind column */
+    const size_t kinds = at + (size_t)n * disk;
+    const uint32_t count = (uint32_t)buf[kinds] | (uint32_t)buf[kinds + 1] << 8;
+    const size_t kinds_len = 4 + 16 * (size_t)count;
+    memmove(buf + kinds, buf + kinds + kinds_len, len - kinds - kinds_len);
+    len -= kinds_len;
     /* Version 3's list of protocols (a count, 0 here) is the last thing
      * before the checksum; version 1 had none. */
     memmove(buf + len - 12, buf + len - 8, 8);
@@ -517,7 +529,7 @@ static void test_a_version_2_checkpoint_of_a_growth_goes_on_to_the_bit(void **st
     p.boundary = DS_BOUNDARY_PERIODIC;
     p.box = 260.0;
     p.seed = 7;
-    const ds_species kinds[] = {{40, 12.0, 0.0}, {20, 8.0, 0.0}};
+    const ds_species kinds[] = {{40, 12.0, 0.0, NULL}, {20, 8.0, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     ds_sim *now = NULL;
     assert_int_equal(ds_sim_create(&p, &mixture, &now, NULL), DS_OK);
@@ -597,7 +609,7 @@ static void test_a_version_1_checkpoint_loads_with_the_stress_integral_at_zero(v
     p.boundary = DS_BOUNDARY_PERIODIC;
     p.box = 600.0;
     p.seed = 5;
-    const ds_species kinds[] = {{25, 20.0, 0.0}, {15, 13.0, 0.0}};
+    const ds_species kinds[] = {{25, 20.0, 0.0, NULL}, {15, 13.0, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     ds_sim *now = NULL;
     assert_int_equal(ds_sim_create(&p, &mixture, &now, NULL), DS_OK);

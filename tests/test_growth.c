@@ -52,7 +52,7 @@ static ds_sim *mixture(size_t n, double eta, uint64_t seed)
     p.boundary = DS_BOUNDARY_PERIODIC;
     p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     p.seed = seed;
-    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, 1.4 * r, 0.0}};
+    const ds_species kinds[2] = {{n / 2, r, 0.0, NULL}, {n - n / 2, 1.4 * r, 0.0, NULL}};
     ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
     ds_sim *sim = NULL;
     assert_int_equal(ds_sim_create(&p, &mix, &sim, NULL), DS_OK);

@@ -101,7 +101,7 @@ static ds_sim *binary(size_t n, double r, double ratio, double box_y, ds_integra
     p.boundary = boundary;
     p.box_y = box_y;
     p.seed = seed;
-    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, ratio * r, 0.0}};
+    const ds_species kinds[2] = {{n / 2, r, 0.0, NULL}, {n - n / 2, ratio * r, 0.0, NULL}};
     ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_AREA};
     ds_sim *sim = NULL;
     assert_int_equal(ds_sim_create(&p, &mix, &sim, NULL), DS_OK);
@@ -315,7 +315,7 @@ static void test_one_kind_is_the_plain_simulation_to_the_bit(void **state)
     for (int integ = 0; integ < DS_INTEGRATOR_COUNT; ++integ) {
         ds_params p = ds_params_default(400, 5.0);
         p.integrator = (ds_integrator)integ;
-        const ds_species one = {400, 5.0, 0.0};
+        const ds_species one = {400, 5.0, 0.0, NULL};
         ds_mixture mix = {1, &one, NULL, NULL, DS_MASS_AREA};
         ds_sim *plain = NULL, *mixed = NULL;
         assert_int_equal(ds_sim_create(&p, NULL, &plain, NULL), DS_OK);
@@ -375,7 +375,7 @@ static void test_a_bad_mixture_is_refused_with_its_reason(void **state)
     (void)state;
     ds_params p = ds_params_default(10, 5.0);
     ds_error why;
-    ds_species kinds[2] = {{4, 5.0, 0.0}, {5, 7.0, 0.0}};
+    ds_species kinds[2] = {{4, 5.0, 0.0, NULL}, {5, 7.0, 0.0, NULL}};
     ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
     assert_int_equal(ds_params_check(&p, &mix, NULL, &why), DS_ERR_ARG);
     assert_string_equal(why.field, "mixture");
@@ -416,7 +416,7 @@ static void test_a_bad_mixture_is_refused_with_its_reason(void **state)
     /* Many disks beyond random placement's reach, counted with each
      * radius. */
     ds_params many = ds_params_default(4000, 6.0);
-    const ds_species dense[2] = {{2000, 6.0, 0.0}, {2000, 8.4, 0.0}};
+    const ds_species dense[2] = {{2000, 6.0, 0.0, NULL}, {2000, 8.4, 0.0, NULL}};
     ds_mixture big = {2, dense, NULL, NULL, DS_MASS_EQUAL};
     assert_int_equal(ds_params_check(&many, &big, NULL, &why), DS_ERR_PLACEMENT);
     assert_non_null(strstr(why.message, "radii 6 to 8.4"));

@@ -290,7 +290,7 @@ static void test_every_allowed_speed_gives_a_finite_start(void **state)
             }
             /* Heavy disks at the fastest speed (m v^2 = 1e318), light ones
              * slow (1e-600). */
-            const ds_species heavy = {20, 5.0, 1e300}, light = {20, 5.0, 1e-300};
+            const ds_species heavy = {20, 5.0, 1e300, NULL}, light = {20, 5.0, 1e-300, NULL};
             const ds_mixture heavy_ones = {1, &heavy, NULL, NULL, DS_MASS_EQUAL};
             const ds_mixture light_ones = {1, &light, NULL, NULL, DS_MASS_EQUAL};
             p.speed = 1e9;

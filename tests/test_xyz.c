@@ -189,7 +189,7 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
 {
     (void)state;
     enum { N = 24 };
-    const ds_species kinds[2] = {{12, 3.0, 0.0}, {12, 4.5, 0.0}};
+    const ds_species kinds[2] = {{12, 3.0, 0.0, NULL}, {12, 4.5, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
         /* Along x a channel is periodic too: images along x, 0 along y. */

@@ -190,13 +190,20 @@ typedef struct ds_species {
     size_t count;  /* disks of this kind */
     double radius; /* > 0 */
     double mass;   /* > 0, or 0 for the mixture's mass rule */
+    /* Its name in output files (GSD's type names): 1 to DS_KIND_NAME_MAX
+     * - 1 printable characters, no space, each species its own; NULL for
+     * "A", "B", ... in order ("K26", "K27", ... past "Z"). */
+    const char *name;
 } ds_species;
+
+#define DS_KIND_NAME_MAX 16
 
 /* A mixture, given as species or disk by disk (one of the two):
  * - species: kinds[0 .. species) with counts that add up to ds_params.n;
- *   disks 0 .. count_0 - 1 are of the first kind, and so on;
+ *   disks 0 .. count_0 - 1 are of the first kind, and so on; each disk
+ *   knows its kind (ds_sim_get_kinds), which checkpoints carry;
  * - per disk: radii[i] and, if masses is not NULL, masses[i], for every
- *   disk i < n (kinds NULL, species 0).
+ *   disk i < n (kinds NULL, species 0); every disk is of one kind, "A".
  * Each disk then has its own radius and mass: the pair test is the sum of
  * the two radii, a collision is elastic along the line of centres for the
  * two masses, walls turn a disk at its own radius. ds_params.radius is the

@@ -97,6 +97,13 @@ ds_status ds_sim_get_disks(const ds_sim *sim, ds_disk *out, ds_error *err);
  * 1; a growth's radii as grown by now). */
 ds_status ds_sim_get_radii(const ds_sim *sim, double *radii, ds_error *err);
 ds_status ds_sim_get_masses(const ds_sim *sim, double *masses, ds_error *err);
+/* Each disk's kind: its species' index in the mixture (0 without
+ * species). ds_sim_get_kind_count says how many kinds there are (1
+ * without species) and ds_sim_get_kind_name the name of kind k (the
+ * species' name, or "A", "B", ...; NULL for k out of range or sim NULL). */
+ds_status ds_sim_get_kinds(const ds_sim *sim, uint32_t *kinds, ds_error *err);
+size_t ds_sim_get_kind_count(const ds_sim *sim);
+const char *ds_sim_get_kind_name(const ds_sim *sim, size_t k);
 /* Periodic images: image[2 i] and image[2 i + 1] are how many times disk
  * i has crossed the box along x and along y since it was placed (+1 each
  * time it leaves through the far edge, -1 through 0), so that its

@@ -101,6 +101,7 @@ static int one_species(PyObject *item, Py_ssize_t k, ds_species *kind, PyObject 
     kind->count = (size_t)count;
     kind->radius = radius;
     kind->mass = mass;
+    kind->name = NULL; /* "A", "B", ... */
     *normal = len == 2 ? Py_BuildValue("(Kd)", (unsigned long long)count, radius)
                        : Py_BuildValue("(Kdd)", (unsigned long long)count, radius, mass);
     return *normal ? 0 : -1;

@@ -118,6 +118,43 @@ static PyObject *masses_property(dspy_sim *self, void *closure)
     return per_disk(self, 1);
 }
 
+/* Every disk's kind as a new (n,) uint32 array. */
+static PyObject *kinds_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    npy_intp dims[1] = {(npy_intp)ds_sim_get_count(sim)};
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, dims, NPY_UINT32);
+    ds_error err;
+    if (a && ds_sim_get_kinds(sim, (uint32_t *)PyArray_DATA(a), &err) != DS_OK) {
+        Py_DECREF(a);
+        return dspy_raise_error(&err);
+    }
+    return (PyObject *)a;
+}
+
+/* The kinds' names, a tuple of str by kind. */
+static PyObject *kind_names_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    const size_t count = ds_sim_get_kind_count(sim);
+    PyObject *names = PyTuple_New((Py_ssize_t)count);
+    for (size_t k = 0; names && k < count; ++k) {
+        PyObject *name = PyUnicode_FromString(ds_sim_get_kind_name(sim, k));
+        if (!name) {
+            Py_CLEAR(names);
+            break;
+        }
+        PyTuple_SET_ITEM(names, (Py_ssize_t)k, name);
+    }
+    return names;
+}
+
 static PyObject *momentum_property(dspy_sim *self, void *closure)
 {
     (void)closure;
@@ -172,6 +209,14 @@ PyGetSetDef dspy_sim_getset[] = {
     {"masses", (getter)masses_property, NULL,
      "Every disk's mass as a new (n,) float64 array, in generation order (a copy;\n"
      "1 for each disk of one kind).",
+     NULL},
+    {"kinds", (getter)kinds_property, NULL,
+     "Every disk's kind as a new (n,) uint32 array, in generation order: its\n"
+     "species' index in species= (0 without species).",
+     NULL},
+    {"kind_names", (getter)kind_names_property, NULL,
+     "The kinds' names by kind, a tuple of str: 'A', 'B', ... in the order of\n"
+     "species= (('A',) without species).",
      NULL},
     REAL(radius_max, "The largest radius (radius with one kind of disk)."),
     REAL(area_fraction, "The fraction of the box the disks cover: sum of pi r^2 over box box_y."),

@@ -107,6 +107,11 @@ struct ds_sim {
     ds_timer collision_timer;
     ds_tally tally;
     uint64_t observables_since_step; /* step count at the last reset */
+    /* The kinds of disk (a mixture's species; one, "A", without) and
+     * their names: kind_names[k] for k < kind_count (NULL: one kind). A
+     * disk's kind is its column kind (absent: 0). */
+    size_t kind_count;
+    char (*kind_names)[DS_KIND_NAME_MAX];
     /* What acts on the run from outside its dynamics (core/protocol.h):
      * installed by their setters, their hooks called by the integrator. */
     ds_protocols protocols;

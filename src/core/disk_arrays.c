@@ -70,6 +70,22 @@ ds_status ds_disks_clone(ds_disks *d, const ds_disks *src)
     return DS_OK;
 }
 
+ds_status ds_disks_clone_ordered(ds_disks *d, const ds_disks *src)
+{
+    ds_status st = alloc_columns(d, src->n, src);
+    if (st == DS_OK && !(d->slot = malloc((src->n + 1) * sizeof *d->slot)))
+        st = DS_ERR_NOMEM;
+    if (st != DS_OK) {
+        ds_disks_free(d);
+        return st;
+    }
+    for (size_t i = 0; i < src->n; ++i)
+        ds_disks_copy(d, i, src, src->slot[i]);
+    for (size_t i = 0; i <= src->n; ++i)
+        d->slot[i] = i < src->n ? (uint32_t)i : UINT32_MAX;
+    return DS_OK;
+}
+
 ds_status ds_disks_add(ds_disks *d, ds_column c)
 {
     switch (c) {

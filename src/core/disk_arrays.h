@@ -100,6 +100,9 @@ ds_status ds_disks_alloc_like(ds_disks *d, const ds_disks *like);
 /* A whole copy of src (every column and slot[]): the disks of a state to
  * build beside src's. */
 ds_status ds_disks_clone(ds_disks *d, const ds_disks *src);
+/* The same with the slots in generation order (slot k holds disk k): the
+ * columns of a new state, which its integrator sorts as it needs. */
+ds_status ds_disks_clone_ordered(ds_disks *d, const ds_disks *src);
 void ds_disks_free(ds_disks *d); /* NULL pointers are allowed */
 
 /* Exchanges the columns of a and b (not slot[]). */

@@ -80,9 +80,10 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     ds_put_u32(w, ds_broadphase_code(wo->broadphase)); /* 2.x's numbers */
     ds_put_u32(w, (uint32_t)wo->placement);
     ds_put_u64(w, wo->seed);
-    /* Which of the optional arrays follow each disk: 1 radii, 2 masses,
-     * 4 image counters (a periodic box; a state without them has 0). */
-    ds_put_u32(w, ds_disks_columns(&sim->disks)); /* a bit per column there */
+    /* Which columns follow each disk: bit c for column c of
+     * DS_DISK_COLUMNS (format 2's 1 radii, 2 masses, 4 image counters are
+     * mapped when read). */
+    ds_put_u32(w, ds_disks_columns(&sim->disks));
     ds_put_u64(w, sim->steps);
     ds_put_u64(w, sim->observables_since_step);
     ds_put_u64(w, sim->tally.collisions);
@@ -94,6 +95,7 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
     put_stress(&sim->tally, w);
     ds_disks_save(&sim->disks, w);
+    ds_kinds_save(sim, w);
     sim->integrator->save(sim, w);
     ds_protocols_save(sim, w);
 }
@@ -419,6 +421,8 @@ ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_err
         sim->disks.slot[k] = UINT32_MAX;
     if (st == DS_OK)
         st = read_disks(&r, sim, err);
+    if (st == DS_OK)
+        st = ds_kinds_load(sim, &r, version, err);
     if (st == DS_OK)
         st = load_parts(sim, &r, version, err);
     if (st == DS_OK && ds_left(&r) != 0)

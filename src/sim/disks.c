@@ -209,22 +209,19 @@ static ds_status build_fresh(ds_sim *sim, const ds_disk *disks, ds_sim *fresh, d
     const size_t n = sim->world.n;
     *fresh = *sim;
     fresh->state = NULL;
-    ds_status st = ds_disks_alloc(&fresh->disks, n);
-    if (st == DS_OK)
-        st = ds_disks_add_mixture(&fresh->disks, sim->disks.r != NULL, sim->disks.m != NULL);
-    if (st == DS_OK && sim->disks.ix)
-        st = ds_disks_add_images(&fresh->disks); /* a new state: images 0 */
+    /* Every column of the disks (radii, masses, kinds) in generation
+     * order, the new centres and velocities, images 0 (a new state). */
+    ds_status st = ds_disks_clone_ordered(&fresh->disks, &sim->disks);
     if (st == DS_OK) {
+        ds_disks *d = &fresh->disks;
         for (size_t i = 0; i < n; ++i) {
-            fresh->disks.x[i] = disks[i].x;
-            fresh->disks.y[i] = disks[i].y;
-            fresh->disks.vx[i] = disks[i].vx;
-            fresh->disks.vy[i] = disks[i].vy;
+            d->x[i] = disks[i].x;
+            d->y[i] = disks[i].y;
+            d->vx[i] = disks[i].vx;
+            d->vy[i] = disks[i].vy;
+            if (d->ix)
+                d->ix[i] = d->iy[i] = 0;
         }
-        if (fresh->disks.r)
-            ds_sim_get_radii(sim, fresh->disks.r, NULL);
-        if (fresh->disks.m)
-            ds_sim_get_masses(sim, fresh->disks.m, NULL);
         st = fresh->integrator->create(fresh, NULL);
     }
     if (st != DS_OK) {

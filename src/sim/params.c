@@ -125,6 +125,9 @@ static ds_status check_mixture(const ds_mixture *m, double reference, ds_world *
                                  "mixture: species %zu's mass %g is not a finite number >= 0 (0 "
                                  "for the rule)",
                                  k, m->kinds[k].mass);
+    const ds_status named = ds_kinds_check(m, err);
+    if (named != DS_OK)
+        return named;
     w->radius_min = lo;
     w->radius_max = hi;
     w->covered = covered;

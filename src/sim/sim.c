@@ -37,6 +37,8 @@ static ds_status make_disks(ds_sim *sim, const ds_mixture *mixture, ds_error *er
     ds_status st = ds_disks_alloc(&sim->disks, w->n);
     if (st == DS_OK && mixture)
         st = fill_mixture(&sim->disks, mixture, w->radius);
+    if (st == DS_OK)
+        st = ds_kinds_make(sim, mixture);
     /* The radii and the area covered as every later part computes them
      * from the arrays (a checkpoint's load, growth): the same bits. */
     if (st == DS_OK)
@@ -99,6 +101,7 @@ void ds_sim_destroy(ds_sim *sim)
     if (sim->integrator)
         sim->integrator->destroy(sim);
     ds_disks_free(&sim->disks);
+    free(sim->kind_names);
     free(sim);
 }
 

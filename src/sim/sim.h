@@ -13,6 +13,14 @@ const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator);
 /* The protocols' tables by ds_protocol_kind (a checkpoint's loader). */
 extern const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT];
 
+/* The kinds of disk (kinds.c): a mixture's species names checked (each
+ * printable, none twice); made for a new simulation (mixture may be
+ * NULL: one kind), their column filled; a checkpoint's part. */
+ds_status ds_kinds_check(const ds_mixture *m, ds_error *err);
+ds_status ds_kinds_make(ds_sim *sim, const ds_mixture *m);
+void ds_kinds_save(const ds_sim *sim, ds_state_writer *w);
+ds_status ds_kinds_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_error *err);
+
 /* The world params describe, defaults resolved (broadphase as given,
  * maybe DS_BROADPHASE_AUTO). No checks. */
 ds_world ds_world_of(const ds_params *params);

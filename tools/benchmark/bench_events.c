@@ -95,7 +95,7 @@ static ds_sim *relaxed_mixture(size_t n, double per_disk)
     const double r = sqrt(0.5 * 1000.0 * 1000.0 / (PI * (double)n * 1.48));
     ds_params p = ds_params_default(n, r);
     p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
-    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, 1.4 * r, 0.0}};
+    const ds_species kinds[2] = {{n / 2, r, 0.0, NULL}, {n - n / 2, 1.4 * r, 0.0, NULL}};
     const ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
     ds_sim *sim = NULL;
     ds_status st = ds_sim_create(&p, &mix, &sim, NULL);
