@@ -36,7 +36,10 @@ static const char *const usage_text =
     "  --from FRAME         start at time 0 from the disks of FRAME, a frame written\n"
     "                       with --velocities (N and R from it)\n"
     "  --lattice            start on a triangular lattice instead of at random\n"
-    "  --periodic           periodic box (nearest image) instead of walls\n"
+    "  --boundary B         walls (the default), periodic (nearest image along both\n"
+    "                       axes) or channel (periodic along x, walls at y = 0 and\n"
+    "                       y = box_y)\n"
+    "  --periodic           the same as --boundary periodic\n"
     "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
     "  --mixture RATIO:FRACTION\n"
     "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
@@ -247,7 +250,8 @@ enum {
     GROW,
     UNTIL_ETA,
     UNTIL_Z,
-    MEASURE_AFTER
+    MEASURE_AFTER,
+    BOUNDARY
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -271,13 +275,27 @@ static const struct {
              {"--grow", 0},
              {"--until-eta", 0},
              {"--until-z", 0},
-             {"--measure-after", 0}};
+             {"--measure-after", 0},
+             {"--boundary", 1}};
 
-/* The first option given that describes the system, and the first that
- * describes the placement (see check_combination). */
+/* The first option given that describes the system, the first that
+ * describes the placement (see check_combination), and the boundary
+ * asked for (--boundary, --periodic), if any. */
 typedef struct first_options {
-    const char *system, *placement;
+    const char *system, *placement, *boundary;
 } first_options;
+
+/* --boundary B (--periodic being --boundary periodic): given twice, the
+ * same both times. */
+static void boundary_arg(options *o, const char *value, first_options *first)
+{
+    ds_error err;
+    refuse_name(ds_boundary_parse(value, &o->boundary, &err), &err);
+    if (first->boundary && strcmp(first->boundary, value) != 0)
+        die(EXIT_USAGE, "two boundaries asked for: %s and %s (--periodic is --boundary periodic)",
+            first->boundary, value);
+    first->boundary = value;
+}
 
 /* Option which (names[]) with its value. */
 static void set_option(options *o, int which, const char *value, first_options *first)
@@ -344,8 +362,11 @@ static void set_option(options *o, int which, const char *value, first_options *
     case UNTIL_Z:
         o->until_z = positive_arg("--until-z", value, 0.0);
         break;
-    default:
+    case MEASURE_AFTER:
         o->measure_after = positive_arg("--measure-after", value, 1e12);
+        break;
+    default:
+        boundary_arg(o, value, first);
     }
 }
 
@@ -392,7 +413,7 @@ static int flag_option(options *o, const char *a, first_options *first)
     else if (strcmp(a, "--lattice") == 0)
         o->placement = DS_PLACEMENT_LATTICE;
     else if (strcmp(a, "--periodic") == 0)
-        o->boundary = DS_BOUNDARY_PERIODIC;
+        boundary_arg(o, "periodic", first);
     else
         return 0;
     if (strcmp(a, "--lattice") == 0 && !first->placement)
@@ -414,7 +435,7 @@ options parse_args(int argc, char **argv)
 
     const char *positional[2];
     int npos = 0;
-    first_options first = {NULL, NULL};
+    first_options first = {NULL, NULL, NULL};
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (flag_option(&o, a, &first))

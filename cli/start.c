@@ -259,15 +259,19 @@ ds_sim *start_from_frame(options *o)
         refuse(path, EXIT_RUN, "out of memory for %zu disks", frame.count);
     }
     const double box = ds_sim_get_box_width(sim), box_y = ds_sim_get_box_height(sim);
-    const int periodic = ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC;
+    /* Periodic along x in a periodic box and a channel, along y only in
+     * a periodic box. */
+    const ds_boundary boundary = ds_sim_get_boundary(sim);
+    const int periodic_x = boundary != DS_BOUNDARY_WALLS;
+    const int periodic_y = boundary == DS_BOUNDARY_PERIODIC;
     for (size_t k = 0; k < frame.count; ++k) {
         const ds_frame_disk *f = &frame.disks[k];
         ds_disk d = {f->x, f->y, f->vx, f->vy};
         /* Six decimals can round a periodic centre just below the side up
          * to the side itself, the same point as 0. */
-        if (periodic && d.x == box)
+        if (periodic_x && d.x == box)
             d.x = 0.0;
-        if (periodic && d.y == box_y)
+        if (periodic_y && d.y == box_y)
             d.y = 0.0;
         disks[k] = d;
     }

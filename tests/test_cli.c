@@ -723,6 +723,8 @@ static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **stat
     restart_matches_one_run("--periodic");
     restart_matches_one_run("--integrator event");
     restart_matches_one_run("--integrator event --periodic");
+    restart_matches_one_run("--boundary channel --box-y 500");
+    restart_matches_one_run("--integrator event --boundary channel --box-y 500");
     /* A mixture's area fraction column too (a load summed the areas in
      * the slots' order, and its last bits moved). */
     restart_matches_one_run("--mixture 1.4:0.5");

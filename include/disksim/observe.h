@@ -25,8 +25,8 @@ uint64_t ds_sim_get_wall_count(const ds_sim *sim); /* wall reflections since the
 /* Momentum handed to the walls since the last reset: sum of 2 m |v_n|. */
 double ds_sim_get_wall_impulse(const ds_sim *sim);
 /* Wall impulse per unit time per unit length of wall the centres reach
- * (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the last
- * reset; 0 before any step. In 2D this is a force per length, the ideal
+ * (perimeter 2 (box - 2R) + 2 (box_y - 2R); a channel's two walls,
+ * 2 box), averaged since the last reset; 0 before any step. In 2D this is a force per length, the ideal
  * gas has P A = N <m v^2>/2. In a mixture each disk's impulse is over the
  * perimeter its own centre reaches, so that the partial pressures of the
  * kinds add up. A periodic box has no walls: there it is
@@ -37,8 +37,8 @@ double ds_sim_get_pressure(const ds_sim *sim);
  * r_ij . dp_i, with N kT = K the kinetic energy, r_ij joining the centres
  * (nearest image) and dp_i disk i's change of momentum. A is the area the
  * centres reach: (box - 2R) (box_y - 2R) with walls, where the virial
- * theorem makes it equal to ds_sim_get_pressure over a long run, and box
- * box_y in a periodic box. For a mixture with walls A is the mean of each
+ * theorem makes it equal to ds_sim_get_pressure over a long run, box
+ * box_y in a periodic box and box (box_y - 2R) in a channel. For a mixture with walls A is the mean of each
  * disk's (box - 2 r) (box_y - 2 r): the virial theorem weighs each kind's
  * area by its partial pressure, so this differs from ds_sim_get_pressure
  * at second order in the radii over the box; periodic, it is exact. With
@@ -48,7 +48,8 @@ double ds_sim_get_virial_pressure(const ds_sim *sim);
 /* The temperature the collisions see: with walls kT = K / N; in a
  * periodic box, where the total momentum P (total mass M) is conserved,
  * kT = K_int / (N - 1) with K_int = K - P^2 / (2 M) (0 for a single
- * disk). The canonical ensemble at this kT has the pressure a run
+ * disk); in a channel, which conserves P_x alone, kT = (K - P_x^2 /
+ * (2 M)) / (N - 1/2). The canonical ensemble at this kT has the pressure a run
  * measures. */
 double ds_sim_get_temperature(const ds_sim *sim);
 /* The canonical compressibility factor Z = P A / (N kT) with kT of

@@ -58,7 +58,7 @@ typedef enum ds_boundary {
     DS_BOUNDARY_CHANNEL,
     DS_BOUNDARY_COUNT
 } ds_boundary;
-const char *ds_boundary_name(ds_boundary boundary); /* "walls", "periodic" */
+const char *ds_boundary_name(ds_boundary boundary); /* "walls", "periodic", "channel" */
 ds_status ds_boundary_parse(const char *name, ds_boundary *out, ds_error *err);
 
 /* Where the disks start. */
