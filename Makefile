@@ -132,6 +132,14 @@ check-docs: all
 	    $(OUT)tools/transport
 test: check-docs
 
+# The structure docs/architecture.md promises (tests/check_structure.sh):
+# no two files of the library calling each other round a circle, no file
+# above 500 lines, no function above 80 without a "Long:" reason.
+.PHONY: check-structure
+check-structure: $(LIB)
+	sh tests/check_structure.sh $(BUILD)
+test: check-structure
+
 # ---------------------------------------------------------------- hardening
 .PHONY: fuzz check-symbols bad-input-table
 

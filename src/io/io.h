@@ -40,4 +40,13 @@ ds_status ds_write_formatted(const ds_sim *sim, int velocities, FILE *out, size_
  * refusal of ds_frame_format and ds_xyz_format. */
 ds_status ds_refuse_cap(ds_error *err, size_t cap, size_t need);
 
+/* The rest of stream in after the len bytes of head (copied first), up
+ * to want bytes in all, into *out (malloc'd; *got bytes): the buffer
+ * grows by doubling as bytes arrive, so a length a forged header
+ * announces costs what the stream holds, not what it says. DS_ERR_NOMEM
+ * if memory runs out (nothing allocated is left); a read error is the
+ * caller's to see in ferror(in). */
+ds_status ds_read_up_to(FILE *in, const uint8_t *head, size_t len, size_t want, uint8_t **out,
+                        size_t *got);
+
 #endif

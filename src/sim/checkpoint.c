@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/io.h"
 #include "protocols/protocols.h"
 #include "sim/sim.h"
 
@@ -350,7 +351,8 @@ static ds_status read_columns(ds_reader *r, ds_sim *sim, uint32_t version, ds_er
     uint32_t bits = ds_get_u32(r);
     if (version < 3) {
         if (bits > 7u)
-            return ds_state_refuse(err, DS_ERR_FORMAT, "it names arrays this library does not know");
+            return ds_state_refuse(err, DS_ERR_FORMAT,
+                                   "it names arrays this library does not know");
         bits = DS_DISKS_EVERY_COLUMN | (bits & 1u ? 1u << DS_COLUMN_r : 0u) |
                (bits & 2u ? 1u << DS_COLUMN_m : 0u) |
                (bits & 4u ? 1u << DS_COLUMN_ix | 1u << DS_COLUMN_iy : 0u);
@@ -436,36 +438,6 @@ ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_err
     return DS_OK;
 }
 
-/* The rest of a stream after the len bytes of head, up to want bytes in
- * all, into a buffer that grows (doubling) as the bytes arrive: a length
- * field forged to 2^42 costs what the stream holds, not what it says. */
-static ds_status read_up_to(FILE *in, const uint8_t *head, size_t len, size_t want, uint8_t **out,
-                            size_t *got)
-{
-    size_t cap = want < ((size_t)1 << 16) ? want : (size_t)1 << 16;
-    cap = cap > len ? cap : len;
-    uint8_t *buf = malloc(cap ? cap : 1);
-    if (!buf)
-        return DS_ERR_NOMEM;
-    memcpy(buf, head, len);
-    for (;;) {
-        len += fread(buf + len, 1, cap - len, in);
-        if (len < cap || cap >= want)
-            break; /* the stream ended, or all that was wanted is here */
-        const size_t next = cap > want / 2 ? want : 2 * cap;
-        uint8_t *more = realloc(buf, next);
-        if (!more) {
-            free(buf);
-            return DS_ERR_NOMEM;
-        }
-        buf = more;
-        cap = next;
-    }
-    *out = buf;
-    *got = len;
-    return DS_OK;
-}
-
 ds_status ds_checkpoint_load(FILE *in, ds_sim **out, ds_error *err)
 {
     ds_error_clear(err);
@@ -491,7 +463,7 @@ ds_status ds_checkpoint_load(FILE *in, ds_sim **out, ds_error *err)
         total = HEADER_BYTES + (size_t)payload + CHECKSUM_BYTES;
     }
     uint8_t *buf = NULL;
-    if (read_up_to(in, head, len, total > len ? total + 1 : len, &buf, &len) != DS_OK)
+    if (ds_read_up_to(in, head, len, total > len ? total + 1 : len, &buf, &len) != DS_OK)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory to read the state");
     if (ferror(in)) {
         free(buf);
