@@ -114,6 +114,8 @@ test: all $(TEST_BIN)
 	    sh tests/analysis_sweeps.sh || fail=1; \
 	echo "== tests/plots.sh"; \
 	DISKS="$(CURDIR)/$(DISKS)" GR="$(CURDIR)/$(OUT)tools/gr" sh tests/plots.sh || fail=1; \
+	echo "== tests/migrate.sh"; \
+	PYTHON="$(PYTHON)" CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" sh tests/migrate.sh $(LIB) || fail=1; \
 	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
