@@ -81,6 +81,23 @@ typedef enum layout {
     CLUSTERED    /* all in a small square: every disk overlaps ~20 */
 } layout;
 
+/* Whether sim's box is periodic along x (periodic box, channel) and
+ * along y (periodic box only). */
+static int periodic_x(const ds_sim *sim) { return ds_sim_get_boundary(sim) != DS_BOUNDARY_WALLS; }
+static int periodic_y(const ds_sim *sim)
+{
+    return ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC;
+}
+
+/* A separation taken to its nearest image along each periodic axis. */
+static void nearest_image(const ds_sim *sim, double *dx, double *dy)
+{
+    if (periodic_x(sim))
+        *dx = ds_nearest(*dx, ds_sim_get_box_width(sim));
+    if (periodic_y(sim))
+        *dy = ds_nearest(*dy, ds_sim_get_box_height(sim));
+}
+
 /* A periodic coordinate brought into [0, side). */
 static double wrapped(double u, double side)
 {
@@ -89,23 +106,23 @@ static double wrapped(double u, double side)
     return u < side ? u : 0.0;
 }
 
-/* Places every disk by ds_sim_set_disk (velocities random, speed ~100). With
- * walls the centres range over [R, box - R] x [R, box_y - R]; in a
- * periodic box over [0, box) x [0, box_y), the edges being the seams,
- * and the clusters sit on the corner, across both seams. */
+/* Places every disk by ds_sim_set_disk (velocities random, speed ~100).
+ * Between walls the centres range over [R, side - R], along a periodic
+ * axis over [0, side), the edges being the seams; the clusters sit on the
+ * corner, across the seams, in a channel on its seam at mid-height. */
 static void scatter(ds_sim *sim, layout how, ds_rng *rng)
 {
-    const int periodic = ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC;
+    const int px = periodic_x(sim), py = periodic_y(sim);
     const double r = ds_sim_get_radius(sim), box = ds_sim_get_box_width(sim),
                  box_y = ds_sim_get_box_height(sim);
-    const double lo = periodic ? 0.0 : r, hi = periodic ? nextafter(box, 0.0) : box - r;
-    const double hi_y = periodic ? nextafter(box_y, 0.0) : box_y - r;
+    const double lo = px ? 0.0 : r, hi = px ? nextafter(box, 0.0) : box - r;
+    const double lo_y = py ? 0.0 : r, hi_y = py ? nextafter(box_y, 0.0) : box_y - r;
     /* Clusters sized for ~20 overlapping neighbours per disk. */
     const double spread = 3.0 * r * sqrt((double)ds_sim_get_count(sim) / 50.0 + 1.0);
     for (size_t i = 0; i < ds_sim_get_count(sim); ++i) {
         ds_disk d;
         d.x = ds_rng_uniform(rng, lo, hi);
-        d.y = ds_rng_uniform(rng, lo, hi_y);
+        d.y = ds_rng_uniform(rng, lo_y, hi_y);
         switch (how) {
         case UNIFORM:
             break;
@@ -113,20 +130,21 @@ static void scatter(ds_sim *sim, layout how, ds_rng *rng)
             if (ds_rng_next(rng) & 1u)
                 d.x = (ds_rng_next(rng) & 1u) ? lo : hi;
             if (ds_rng_next(rng) & 1u)
-                d.y = (ds_rng_next(rng) & 1u) ? lo : hi_y;
+                d.y = (ds_rng_next(rng) & 1u) ? lo_y : hi_y;
             break;
         case COARSE_GRID:
             d.x = lo + 0.5 * r * floor((d.x - lo) / (0.5 * r));
-            d.y = lo + 0.5 * r * floor((d.y - lo) / (0.5 * r));
+            d.y = lo_y + 0.5 * r * floor((d.y - lo_y) / (0.5 * r));
             break;
         case CLUSTERED:
-            if (periodic) {
+            if (px)
                 d.x = wrapped(ds_rng_uniform(rng, -spread, spread), box);
-                d.y = wrapped(ds_rng_uniform(rng, -spread, spread), box_y);
-            } else {
+            else
                 d.x = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
-                d.y = fmin(fmax(0.5 * box_y + ds_rng_uniform(rng, -spread, spread), lo), hi_y);
-            }
+            if (py)
+                d.y = wrapped(ds_rng_uniform(rng, -spread, spread), box_y);
+            else
+                d.y = fmin(fmax(0.5 * box_y + ds_rng_uniform(rng, -spread, spread), lo_y), hi_y);
             break;
         }
         d.vx = ds_rng_uniform(rng, -100.0, 100.0);
@@ -142,15 +160,15 @@ static const struct {
 } CASES[] = {{1, 5.0},    {2, 300.0},  {9, 5.0},     {50, 40.0}, {400, 5.0},
              {400, 20.0}, {1000, 1.0}, {1500, 12.0}, {2000, 3.0}};
 
-/* The boxes every broad phase is checked in: the seed's, and periodic
- * ones, square and rectangular (both taller and wider than square). */
+/* The boxes every broad phase is checked in: the seed's, periodic ones,
+ * square and rectangular (both taller and wider than square), and
+ * channels (periodic along x only), square and wide. */
 static const struct {
     ds_boundary boundary;
     double box_y;
-} BOXES[] = {{DS_BOUNDARY_WALLS, 0.0},
-             {DS_BOUNDARY_PERIODIC, 0.0},
-             {DS_BOUNDARY_PERIODIC, 700.0},
-             {DS_BOUNDARY_PERIODIC, 1300.0}};
+} BOXES[] = {{DS_BOUNDARY_WALLS, 0.0},      {DS_BOUNDARY_PERIODIC, 0.0},
+             {DS_BOUNDARY_PERIODIC, 700.0}, {DS_BOUNDARY_PERIODIC, 1300.0},
+             {DS_BOUNDARY_CHANNEL, 0.0},    {DS_BOUNDARY_CHANNEL, 700.0}};
 
 static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
 {
@@ -169,7 +187,7 @@ static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
          * configuration, so create small disks and widen them here (a
          * periodic box takes R below a quarter of its shorter side). The
          * broad phase's geometry depends on R: it is made again. */
-        const double most = p.boundary == DS_BOUNDARY_PERIODIC
+        const double most = p.boundary != DS_BOUNDARY_WALLS
                                 ? 0.24 * fmin(ds_sim_get_box_width(sim), ds_sim_get_box_height(sim))
                                 : 1e9;
         sim->world.radius = fmin(CASES[c].radius, most);
@@ -218,10 +236,7 @@ static int overlap(const ds_sim *sim, uint64_t a, uint64_t b)
 {
     const ds_disk da = ds_sim_get_disk(sim, a), db = ds_sim_get_disk(sim, b);
     double dx = db.x - da.x, dy = db.y - da.y;
-    if (ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC) {
-        dx = ds_nearest(dx, ds_sim_get_box_width(sim));
-        dy = ds_nearest(dy, ds_sim_get_box_height(sim));
-    }
+    nearest_image(sim, &dx, &dy);
     const ds_disks *d = &sim->disks;
     const double sigma = d->r ? d->r[d->slot[a]] + d->r[d->slot[b]] : 2.0 * sim->world.radius;
     return dx * dx + dy * dy < sigma * sigma;
@@ -396,19 +411,19 @@ static void test_strips_agree_with_brute_force_over_a_long_run(void **state)
     ds_sim_destroy(sim);
 }
 
-/* The same in a periodic rectangle, where disks keep crossing the seams
- * and meeting through them: every broad phase of the time step (the
- * sweeps, with their seam pass) but the reference itself. */
+/* The same in a periodic rectangle and a channel, where disks keep
+ * crossing the seams and meeting through them: every broad phase of the
+ * time step (the sweeps, with their seam pass) but the reference itself. */
 static void test_sweeps_agree_with_brute_force_over_a_long_periodic_run(void **state)
 {
     (void)state;
-    for (int b = 0; b < DS_BROADPHASE_COUNT; ++b) {
+    for (int b = 0; b < 2 * DS_BROADPHASE_COUNT; ++b) {
         ds_params p = ds_params_default(2000, 4.0);
         p.seed = 12;
-        p.broadphase = (ds_broadphase)b;
-        p.boundary = DS_BOUNDARY_PERIODIC;
+        p.broadphase = (ds_broadphase)(b % DS_BROADPHASE_COUNT);
+        p.boundary = b < DS_BROADPHASE_COUNT ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_CHANNEL;
         p.box_y = 600.0;
-        if (b == DS_BROADPHASE_AUTO || b == DS_BROADPHASE_BRUTE ||
+        if (p.broadphase == DS_BROADPHASE_AUTO || p.broadphase == DS_BROADPHASE_BRUTE ||
             ds_params_check(&p, NULL, NULL, NULL) != DS_OK)
             continue;
         ds_sim *sim = NULL;
@@ -594,7 +609,7 @@ static void test_broad_phases_measure_the_same_pressure_after_they_part(void **s
     (void)state;
     const int blocks = 20;
     const uint64_t steps = long_run(500);
-    for (int b = DS_BOUNDARY_WALLS; b <= DS_BOUNDARY_PERIODIC; ++b) {
+    for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
         const lockstep_case c = {250, 20.0, (ds_boundary)b, 0.0, 0, 0};
         ds_sim *brute = create_case(&c, DS_BROADPHASE_BRUTE);
         const block_stats want = z_of(brute, blocks, steps);
@@ -615,14 +630,12 @@ static void test_broad_phases_measure_the_same_pressure_after_they_part(void **s
  * velocity component between the same disk of two runs. */
 static double largest_difference(const ds_sim *a, const ds_sim *b)
 {
-    const int periodic = ds_sim_get_boundary(a) == DS_BOUNDARY_PERIODIC;
     double worst = 0.0;
     for (size_t i = 0; i < ds_sim_get_count(a); ++i) {
         const ds_disk da = ds_sim_get_disk(a, i), db = ds_sim_get_disk(b, i);
-        const double dx = da.x - db.x, dy = da.y - db.y;
-        worst = fmax(worst, periodic ? fmax(fabs(ds_nearest(dx, ds_sim_get_box_width(a))),
-                                            fabs(ds_nearest(dy, ds_sim_get_box_height(a))))
-                                     : fmax(fabs(dx), fabs(dy)));
+        double dx = da.x - db.x, dy = da.y - db.y;
+        nearest_image(a, &dx, &dy);
+        worst = fmax(worst, fmax(fabs(dx), fabs(dy)));
         worst = fmax(worst, fmax(fabs(da.vx - db.vx), fabs(da.vy - db.vy)));
     }
     return worst;
@@ -644,7 +657,7 @@ static double largest_difference(const ds_sim *a, const ds_sim *b)
 static void test_event_cells_and_brute_force_differ_by_rounding_only(void **state)
 {
     (void)state;
-    for (int b = DS_BOUNDARY_WALLS; b <= DS_BOUNDARY_PERIODIC; ++b) {
+    for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
         ds_sim *sim[2];
         const ds_broadphase kinds[2] = {DS_BROADPHASE_CELLS, DS_BROADPHASE_BRUTE};
         for (int k = 0; k < 2; ++k) {
@@ -658,7 +671,8 @@ static void test_event_cells_and_brute_force_differ_by_rounding_only(void **stat
         for (int s = 1; s <= 100; ++s) {
             ds_sim_step(sim[0], NULL);
             ds_sim_step(sim[1], NULL);
-            assert_int_equal(ds_sim_get_collision_count(sim[0]), ds_sim_get_collision_count(sim[1]));
+            assert_int_equal(ds_sim_get_collision_count(sim[0]),
+                             ds_sim_get_collision_count(sim[1]));
             assert_int_equal(ds_sim_get_wall_count(sim[0]), ds_sim_get_wall_count(sim[1]));
             assert_true(largest_difference(sim[0], sim[1]) < (s == 1 ? 1e-12 : 1e-9));
         }
