@@ -3,16 +3,17 @@
  * calloc, realloc, posix_memalign or aligned_alloc made inside an
  * operation returns nothing (alone, or with every call after it: memory
  * that stays short), for k = 1, 2, ... until the operation makes fewer
- * than k calls. The operations are creation (ds_sim_create and
- * ds_sim_create, both integrators, both boundaries, both placements,
- * every broad phase), growth (ds_sim_set_growth, and a run in which growth
+ * than k calls. The operations are creation (ds_sim_create: both
+ * integrators, every boundary, both placements, every broad phase, one
+ * kind and mixtures), growth (ds_sim_set_growth, and a run in which growth
  * builds its state again), checkpoints (ds_checkpoint_parse, ds_checkpoint_load)
  * and ds_sim_set_disks. Each time the operation either refuses with
  * DS_ERR_NOMEM, leaving no simulation or one that steps on exactly as if
  * it had never been called, or does what it does without the failure
- * (a fallback), to the bit; a growing run has no status to return (ds_sim_run
- * is void in 2.x): there growth stops, says so (DS_GROWTH_NONE), and the
- * run goes on sound, every step taken. A plain run allocates nothing.
+ * (a fallback), to the bit; a growing run that cannot widen its cells
+ * returns DS_ERR_NOMEM at the end of a whole step: there growth stops,
+ * says so (DS_GROWTH_NONE), and the simulation runs on sound. A plain run
+ * allocates nothing.
  *
  * The calls are counted by the linker (-Wl,--wrap=malloc,...: the
  * Makefile's rule for this test), and the library's large arrays come
@@ -142,6 +143,10 @@ static const config configs[] = {
      DS_BROADPHASE_CELLS, DS_PLACEMENT_RANDOM, 1},
     {"event walls cells, per disk", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_WALLS,
      DS_BROADPHASE_CELLS, DS_PLACEMENT_RANDOM, 2},
+    {"step channel strips, species", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_CHANNEL,
+     DS_BROADPHASE_STRIPS, DS_PLACEMENT_RANDOM, 1},
+    {"event channel cells, species", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_CHANNEL,
+     DS_BROADPHASE_CELLS, DS_PLACEMENT_LATTICE, 1},
 };
 #define CONFIGS (sizeof configs / sizeof configs[0])
 
@@ -161,7 +166,8 @@ static ds_params params_of(const config *c)
 
 /* The mixture of c: 1:1.4 in two species, or radii and masses disk by
  * disk. */
-static ds_species kinds[2] = {{N_DISKS / 2, 25.0, 0.0, NULL}, {N_DISKS - N_DISKS / 2, 35.0, 0.0, NULL}};
+static ds_species kinds[2] = {{N_DISKS / 2, 25.0, 0.0, NULL},
+                              {N_DISKS - N_DISKS / 2, 35.0, 0.0, NULL}};
 static double radii[N_DISKS], masses[N_DISKS];
 static ds_mixture mixture_of(const config *c)
 {
@@ -307,14 +313,15 @@ static void assert_sound(const ds_sim *sim, const char *what, unsigned long k)
 {
     const shown s = show(sim);
     const double bx = ds_sim_get_box_width(sim), by = ds_sim_get_box_height(sim);
-    const int periodic = ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC;
+    const ds_boundary boundary = ds_sim_get_boundary(sim);
+    const int px = boundary != DS_BOUNDARY_WALLS, py = boundary == DS_BOUNDARY_PERIODIC;
     const double past = 1e-9 * fmax(bx, by); /* a centre shown a hair past its wall turn */
     for (size_t i = 0; i < s.n; ++i) {
         const ds_disk d = s.disk[i];
         const double r = s.radius[i];
-        const int inside = periodic ? d.x >= 0.0 && d.x < bx && d.y >= 0.0 && d.y < by
-                                    : d.x >= r - past && d.x <= bx - r + past && d.y >= r - past &&
-                                          d.y <= by - r + past;
+        const int inside =
+            (px ? d.x >= 0.0 && d.x < bx : d.x >= r - past && d.x <= bx - r + past) &&
+            (py ? d.y >= 0.0 && d.y < by : d.y >= r - past && d.y <= by - r + past);
         if (!isfinite(d.vx) || !isfinite(d.vy) || !inside)
             fail_msg("%s, allocation %lu failing: disk %zu at (%g, %g) is not in the box", what, k,
                      i, d.x, d.y);
@@ -324,10 +331,10 @@ static void assert_sound(const ds_sim *sim, const char *what, unsigned long k)
     for (size_t i = 0; i < s.n; ++i)
         for (size_t j = i + 1; j < s.n; ++j) {
             double dx = s.disk[j].x - s.disk[i].x, dy = s.disk[j].y - s.disk[i].y;
-            if (periodic) {
+            if (px)
                 dx -= bx * round(dx / bx);
+            if (py)
                 dy -= by * round(dy / by);
-            }
             const double gap = sqrt(dx * dx + dy * dy) / (s.radius[i] + s.radius[j]) - 1.0;
             if (gap < -1e-9)
                 fail_msg("%s, allocation %lu failing: disks %zu and %zu overlap by %g", what, k, i,
