@@ -37,7 +37,7 @@ DISKS := $(OUT)disks
 # timestep/ and event/ (the integrators), init/ (placement), observe/
 # (observables), io/ (text formats), and sim/ (the public API of the
 # simulation, over the parts). The command is every file of cli/.
-LIB_DIRS := core timestep event init observe io sim
+LIB_DIRS := core timestep event protocols init observe io sim
 LIB_SRC := $(sort $(foreach d,$(LIB_DIRS),$(wildcard src/$(d)/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 
@@ -54,13 +54,16 @@ FLAGS_NOW   := $(CC) $(CFLAGS) $(CPPFLAGS) $(LDFLAGS)
 $(shell mkdir -p $(BUILD); [ "$$(cat $(FLAGS_STAMP) 2>/dev/null)" = "$(FLAGS_NOW)" ] || \
     echo "$(FLAGS_NOW)" > $(FLAGS_STAMP))
 
-LIB_HDR := include/disk_sim.h $(wildcard src/*/*.h)
+# The public headers: disk_sim.h and the headers it includes, one per
+# concept (include/disksim/).
+PUB_HDR := include/disk_sim.h $(sort $(wildcard include/disksim/*.h))
+LIB_HDR := $(PUB_HDR) $(wildcard src/*/*.h)
 $(BUILD)/%.o: src/%.c $(LIB_HDR) $(FLAGS_STAMP) | $(BUILD)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
 CLI_OBJ := $(patsubst cli/%.c,$(BUILD)/cli/%.o,$(sort $(wildcard cli/*.c)))
-$(BUILD)/cli/%.o: cli/%.c include/disk_sim.h $(wildcard cli/*.h) $(FLAGS_STAMP) | $(BUILD)
+$(BUILD)/cli/%.o: cli/%.c $(PUB_HDR) $(wildcard cli/*.h) $(FLAGS_STAMP) | $(BUILD)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) -c $< -o $@
 
@@ -111,6 +114,8 @@ test: all $(TEST_BIN)
 	    sh tests/analysis_sweeps.sh || fail=1; \
 	echo "== tests/plots.sh"; \
 	DISKS="$(CURDIR)/$(DISKS)" GR="$(CURDIR)/$(OUT)tools/gr" sh tests/plots.sh || fail=1; \
+	echo "== tests/migrate.sh"; \
+	PYTHON="$(PYTHON)" CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" sh tests/migrate.sh $(LIB) || fail=1; \
 	$(MAKE) --no-print-directory python-test || fail=1; \
 	if [ $$fail -ne 0 ]; then echo "make test: some tests FAILED"; exit 1; fi; \
 	echo "make test: all test programs passed"
@@ -128,6 +133,14 @@ check-docs: all
 	sh tests/check_docs.sh $(DISKS) $(OUT)tools/render $(OUT)tools/gr $(OUT)tools/pressure \
 	    $(OUT)tools/transport
 test: check-docs
+
+# The structure docs/architecture.md promises (tests/check_structure.sh):
+# no two files of the library calling each other round a circle, no file
+# above 500 lines, no function above 80 without a "Long:" reason.
+.PHONY: check-structure
+check-structure: $(LIB)
+	sh tests/check_structure.sh $(BUILD)
+test: check-structure
 
 # ---------------------------------------------------------------- hardening
 .PHONY: fuzz check-symbols bad-input-table
@@ -169,14 +182,20 @@ fuzz-frame: build-fuzz/fuzz_frame
 	    -dict=tests/fuzz_frame.dict \
 	    build-fuzz/found tests/corpus
 
-# Library hygiene: every exported symbol starts with ds_, and the library
-# never prints or ends the process (it returns a ds_status instead).
-check-symbols: $(LIB)
+# Library hygiene: every exported symbol starts with ds_, the shared
+# library exports exactly the functions of the public headers, and the
+# library never prints or ends the process (it returns a ds_status instead).
+check-symbols: $(LIB) $(OUT)$(SHLIB) $(BUILD)/exports.map
 	@bad=$$(nm -g --defined-only $(LIB) | awk 'NF == 3 && $$3 !~ /^ds_/ { print $$3 }'); \
 	if [ -n "$$bad" ]; then echo "check-symbols: exported without ds_ prefix:" $$bad; exit 1; fi; \
+	nm -D --defined-only $(OUT)$(SHLIB) | awk '$$2 == "T" { print $$3 }' | sort > $(BUILD)/exported; \
+	sed -n 's/^    \(ds_[a-z0-9_]*\);$$/\1/p' $(BUILD)/exports.map | sort > $(BUILD)/declared; \
+	if ! cmp -s $(BUILD)/declared $(BUILD)/exported; then \
+	    echo "check-symbols: $(SHLIB) exports other functions than the public headers declare:"; \
+	    diff $(BUILD)/declared $(BUILD)/exported; exit 1; fi; \
 	calls=$$(nm -u $(LIB) | awk '{ print $$2 }' | grep -E '^(exit|_exit|_Exit|abort|__assert_fail|printf|vprintf|fprintf|vfprintf|puts|fputs|putchar|fputc|perror)$$' | sort -u); \
 	if [ -n "$$calls" ]; then echo "check-symbols: the library calls" $$calls; exit 1; fi; \
-	echo "check-symbols: $$(nm -g --defined-only $(LIB) | awk 'NF == 3' | wc -l) exported symbols, all ds_*, no printing or exit"
+	echo "check-symbols: $$(nm -g --defined-only $(LIB) | awk 'NF == 3' | wc -l) symbols of $(LIB), all ds_*; $(SHLIB) exports the $$(wc -l < $(BUILD)/declared) public functions; no printing or exit"
 
 # Regenerates the "Bad input" table of docs/cli.md from tests/cli_cases.txt.
 bad-input-table: all $(BUILD)/tests/test_cli
@@ -190,7 +209,7 @@ clean:
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
 BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_stats.c
-$(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) include/disk_sim.h
+$(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) $(LDLIBS)
 
@@ -200,14 +219,14 @@ bench: $(OUT)tools/bench
 # tools/pressure: Z with block-average errors for one system (public API
 # only), run by tools/analysis/pressure_vs_dt.sh and tools/analysis/eos.sh. Built by `make`.
 all: $(OUT)tools/pressure
-$(OUT)tools/pressure: tools/analysis/pressure.c tools/analysis/analysis_util.h $(LIB) include/disk_sim.h
+$(OUT)tools/pressure: tools/analysis/pressure.c tools/analysis/analysis_util.h $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
 # tools/gr: g(r) of one frame file (public API only), plotted by
 # tools/analysis/plot_gr.plt. Built by `make`.
 all: $(OUT)tools/gr
-$(OUT)tools/gr: tools/analysis/gr.c $(LIB) include/disk_sim.h
+$(OUT)tools/gr: tools/analysis/gr.c $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
@@ -215,7 +234,7 @@ $(OUT)tools/gr: tools/analysis/gr.c $(LIB) include/disk_sim.h
 # autocorrelation of one periodic system (public API only), plotted by
 # tools/analysis/plot_transport.plt. Built by `make`.
 all: $(OUT)tools/transport
-$(OUT)tools/transport: tools/analysis/transport.c tools/analysis/analysis_util.h $(LIB) include/disk_sim.h
+$(OUT)tools/transport: tools/analysis/transport.c tools/analysis/analysis_util.h $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
@@ -227,9 +246,9 @@ clean-bench:
 # The shared library beside the static one, disksim.pc, `make examples`,
 # `make install` and `make uninstall` (PREFIX, default /usr/local, and
 # DESTDIR for staging). The version, the .pc Version and the soname all come
-# from the DS_VERSION_* macros in disk_sim.h, the one place they are written.
-VERSION   := $(shell sed -n 's/^.define DS_VERSION_STRING "\(.*\)"/\1/p' include/disk_sim.h)
-SOVERSION := $(shell sed -n 's/^.define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' include/disk_sim.h)
+# from the DS_VERSION_* macros in disksim/base.h, the one place they are written.
+VERSION   := $(shell sed -n 's/^.define DS_VERSION_STRING "\(.*\)"/\1/p' include/disksim/base.h)
+SOVERSION := $(shell sed -n 's/^.define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' include/disksim/base.h)
 SONAME    := libdisksim.so.$(SOVERSION)
 SHLIB     := libdisksim.so.$(VERSION)
 PIC_OBJ   := $(LIB_SRC:src/%.c=$(BUILD)/pic/%.o)
@@ -263,10 +282,10 @@ $(BUILD)/pic/%.o: src/%.c $(LIB_HDR)
 	$(CC) $(WARN) $(CPPFLAGS) $(CFLAGS) -fPIC -c $< -o $@
 
 # Internal functions shared between src/ files are also named ds_*, so the
-# export list is every function declared in the public header, no more.
-$(BUILD)/exports.map: include/disk_sim.h | $(BUILD)
+# export list is every function declared in the public headers, no more.
+$(BUILD)/exports.map: $(PUB_HDR) | $(BUILD)
 	{ echo '{ global:'; \
-	  sed -n '/^[a-z]/s/^[^(]*[ *]\(ds_[a-z0-9_]*\)(.*/    \1;/p' include/disk_sim.h; \
+	  sed -n '/^[a-z]/s/^[^(]*[ *]\(ds_[a-z0-9_]*\)(.*/    \1;/p' $(PUB_HDR) | sort -u; \
 	  echo '  local: *; };'; } > $@
 
 $(OUT)$(SHLIB): $(PIC_OBJ) $(BUILD)/exports.map
@@ -281,7 +300,7 @@ $(OUT)libdisksim.so: $(OUT)$(SONAME)
 
 # Regenerated when PREFIX changes (FORCE), but rewritten only if different,
 # so `make install PREFIX=/usr` after `make` installs the right paths.
-disksim.pc: disksim.pc.in include/disk_sim.h FORCE
+disksim.pc: disksim.pc.in $(PUB_HDR) FORCE
 	@sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
 	     -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
 	     disksim.pc.in > $@.tmp
@@ -292,7 +311,7 @@ FORCE:
 
 examples: $(EXAMPLES)
 
-$(OUT)examples/%: examples/%.c include/disk_sim.h $(LIB)
+$(OUT)examples/%: examples/%.c $(PUB_HDR) $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
@@ -323,7 +342,7 @@ INSTALL_PATHS = sed -e 's|^\( *\)scripts=\$$(cd .*|\1scripts=$(DATADIR)/disksim|
 # really are.
 install: all
 	$(INSTALL) -d $(DESTDIR)$(BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR) \
-	    $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim \
+	    $(DESTDIR)$(INCLUDEDIR)/disksim $(DESTDIR)$(MANDIR)/man1 $(DESTDIR)$(DATADIR)/disksim \
 	    $(DESTDIR)$(MANDIR)/man3 $(DESTDIR)$(DOCDIR)/docs
 	$(INSTALL) -m 755 $(DISKS) $(DESTDIR)$(BINDIR)/disks
 	if [ -x $(OUT)tools/render ]; then \
@@ -334,6 +353,7 @@ install: all
 	ln -sf $(SHLIB) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libdisksim.so
 	$(INSTALL) -m 644 include/disk_sim.h $(DESTDIR)$(INCLUDEDIR)/disk_sim.h
+	$(INSTALL) -m 644 $(wildcard include/disksim/*.h) $(DESTDIR)$(INCLUDEDIR)/disksim/
 	$(INSTALL) -m 644 disksim.pc $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc
 	for page in disks $(ANALYSIS_MAN); do \
 	    sed 's|/usr/local/share/disksim|$(DATADIR)/disksim|g' man/$$page.1 \
@@ -359,6 +379,7 @@ uninstall:
 	    $(DESTDIR)$(LIBDIR)/libdisksim.a $(DESTDIR)$(LIBDIR)/libdisksim.so \
 	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(SHLIB) \
 	    $(DESTDIR)$(INCLUDEDIR)/disk_sim.h $(DESTDIR)$(PKGCONFIGDIR)/disksim.pc \
+	    $(addprefix $(DESTDIR)$(INCLUDEDIR)/,$(patsubst include/%,%,$(wildcard include/disksim/*.h))) \
 	    $(DESTDIR)$(MANDIR)/man1/disks.1 $(DESTDIR)$(MANDIR)/man1/disks-render.1 \
 	    $(DESTDIR)$(MANDIR)/man3/disk_sim.3 \
 	    $(addprefix $(DESTDIR)$(BINDIR)/,$(ANALYSIS_BIN)) \
@@ -368,6 +389,7 @@ uninstall:
 	    $(addprefix $(DESTDIR)$(DOCDIR)/,$(DOC_FILES)) \
 	    $(addprefix $(DESTDIR)$(DOCDIR)/docs/,$(notdir $(DOC_PAGES)))
 	rmdir $(DESTDIR)$(DATADIR)/disksim 2>/dev/null || true
+	rmdir $(DESTDIR)$(INCLUDEDIR)/disksim 2>/dev/null || true
 	rmdir $(DESTDIR)$(DOCDIR)/docs $(DESTDIR)$(DOCDIR) 2>/dev/null || true
 
 clean-packaging:
@@ -396,7 +418,7 @@ RENDER_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags libpng 2
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)
 .SECONDARY: $(RENDER_OBJ) # kept between builds, not intermediate
-RENDER_DEPS := include/disk_sim.h $(wildcard tools/renderer/*.h)
+RENDER_DEPS := $(PUB_HDR) $(wildcard tools/renderer/*.h)
 
 .PHONY: render render-skipped clean-render
 ifneq ($(RENDER_BACKENDS),)
@@ -445,17 +467,18 @@ $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDE
 
 # ---------------------------------------------------------------- python
 # The Python module disksim (python/, docs/python.md), a C extension over
-# disk_sim.h that compiles the library's sources itself (python/setup.py).
-# `make python` builds it in place, python/disksim/_disksim*.so, for
-# PYTHONPATH=python; `make test` then runs its pytest suite. Debian's own
-# python3 by default (its python3-numpy, python3-dev, python3-setuptools
-# and python3-pytest), not whichever python3 comes first on PATH; without
-# them the suite is skipped with a one-line note naming the packages.
+# disk_sim.h that compiles the library's sources itself (setup.py at the
+# top, the one build definition, which pip uses too). `make python` builds
+# it in place, python/disksim/_disksim*.so, for PYTHONPATH=python; `make
+# test` then runs its pytest suite. Debian's own python3 by default (its
+# python3-numpy, python3-dev, python3-setuptools and python3-pytest), not
+# whichever python3 comes first on PATH; without them the suite is skipped
+# with a one-line note naming the packages.
 PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 PY_JOBS ?= 2
 PY_MISSING = $$($(PYTHON) python/check_deps.py $(1) 2>/dev/null || echo python3)
 PY_EXT = $(shell $(PYTHON) -c 'import sysconfig; print(sysconfig.get_config_var("EXT_SUFFIX"))' 2>/dev/null)
-PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py python/disksim/__init__.py
+PY_SRC := $(wildcard python/src/*.c python/src/*.h) setup.py python/disksim/__init__.py
 # SANITIZE=1 builds the module with the sanitizers into $(BUILD)/python/lib
 # (an instrumented module cannot replace the plain one in place) and runs
 # the suite with AddressSanitizer's runtime preloaded into python3, leak
@@ -463,7 +486,7 @@ PY_SRC := $(wildcard python/src/*.c python/src/*.h) python/setup.py python/disks
 ifeq ($(SANITIZE),1)
   PY_LIB    := $(BUILD)/python/lib
   PY_MODULE  = $(PY_LIB)/disksim/_disksim$(PY_EXT)
-  PY_WHERE  := --build-lib ../$(PY_LIB)
+  PY_WHERE  := --build-lib $(PY_LIB)
   PY_ASAN    = $(shell $(CC) -print-file-name=libasan.so)
   PY_RUN     = $(if $(filter /%,$(PY_ASAN)),LD_PRELOAD=$(PY_ASAN) ASAN_OPTIONS=detect_leaks=0)
 else
@@ -482,8 +505,8 @@ python-deps:
 
 # setuptools recompiles every file when it builds: make decides when.
 $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
-	cd python && CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" $(PYTHON) setup.py -q \
-	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp ../$(BUILD)/python/temp
+	CC="$(CC)" CFLAGS="$(CFLAGS)" LDFLAGS="$(LDFLAGS)" $(PYTHON) setup.py -q \
+	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp $(BUILD)/python/temp
 	$(if $(filter 1,$(SANITIZE)),cp python/disksim/__init__.py $(PY_LIB)/disksim/)
 
 # The suite runs the disks of this build (test_frames compares its frames).
@@ -494,6 +517,15 @@ python-test: $(DISKS) $(OUT)tools/pressure
 	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
 	    DISKSIM_PRESSURE="$(CURDIR)/$(OUT)tools/pressure" $(PY_RUN) \
 	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
+
+# The packaging, offline in a venv (tests/python_packaging.sh): pip install
+# . from the top and ./python, pip wheel ., the sdist and a wheel from it
+# alone, the stubs checked by mypy, the checkout left as it was. Five
+# builds of the library, about 30 s on two cores: .ci/run runs it, not make
+# test. Needs python3-venv, python3-wheel, python3-build and python3-mypy.
+.PHONY: python-packaging
+python-packaging:
+	PYTHON="$(PYTHON)" sh tests/python_packaging.sh
 
 clean: clean-python
 clean-python:

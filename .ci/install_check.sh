@@ -14,9 +14,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tree=$(pwd)
 
-header=include/disk_sim.h
-version=$(sed -n 's/^#define DS_VERSION_STRING "\(.*\)"/\1/p' "$header")
-major=$(sed -n 's/^#define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' "$header")
+headers="include/disk_sim.h $(ls include/disksim/*.h)"
+version=$(sed -n 's/^#define DS_VERSION_STRING "\(.*\)"/\1/p' include/disksim/base.h)
+major=$(sed -n 's/^#define DS_VERSION_MAJOR \([0-9]*\).*/\1/p' include/disksim/base.h)
 stage=$(mktemp -d)
 work=$(mktemp -d)
 trap 'rm -rf "$stage" "$work"' EXIT
@@ -26,7 +26,8 @@ make -s install DESTDIR="$stage" PREFIX=/usr
 
 analysis="disks-gr disks-pressure disks-transport disks-eos disks-eos-slurm disks-diffusion disks-jamming"
 for f in usr/bin/disks usr/lib/libdisksim.a "usr/lib/libdisksim.so.$version" \
-         usr/include/disk_sim.h usr/lib/pkgconfig/disksim.pc \
+         usr/include/disk_sim.h $(ls include/disksim/*.h | sed 's|^|usr/|') \
+         usr/lib/pkgconfig/disksim.pc \
          usr/share/man/man1/disks.1 usr/share/man/man3/disk_sim.3 \
          usr/share/disksim/animate_disk.plt usr/share/disksim/eos_point.sh \
          usr/share/disksim/eos_gather.sh usr/share/disksim/sweep_dir.sh \
@@ -70,11 +71,12 @@ for page in "$stage"/usr/share/man/man*/*; do
 done
 "$stage/usr/bin/disks" --version | grep -qx "disks $version" || fail "installed disks --version"
 
-# The shared library exports exactly the functions of the public header.
+# The shared library exports exactly the functions of the public headers.
 nm -D --defined-only "$stage/usr/lib/libdisksim.so.$version" | awk '$2 == "T" { print $3 }' |
     sort > "$work/exported"
-sed -n '/^[a-z]/s/^[^(]*[ *]\(ds_[a-z0-9_]*\)(.*/\1/p' "$header" | sort > "$work/declared"
-diff -u "$work/declared" "$work/exported" || fail "libdisksim.so exports differ from $header"
+# shellcheck disable=SC2086
+sed -n '/^[a-z]/s/^[^(]*[ *]\(ds_[a-z0-9_]*\)(.*/\1/p' $headers | sort > "$work/declared"
+diff -u "$work/declared" "$work/exported" || fail "libdisksim.so exports differ from the public headers"
 
 # Only the staged copy is visible to pkg-config, with paths under the stage.
 export PKG_CONFIG_LIBDIR="$stage/usr/lib/pkgconfig" PKG_CONFIG_PATH=""

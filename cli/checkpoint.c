@@ -12,13 +12,13 @@
 
 void checkpoint_write(const ds_sim *sim, const char *path)
 {
-    size_t cap = ds_state_size(sim), len = 0;
+    size_t cap = ds_checkpoint_get_size(sim), len = 0;
     char *buf = malloc(cap ? cap : 1);
     if (!buf)
         die(EXIT_RUN, "cannot write --checkpoint %s: out of memory", path);
-    ds_status st = ds_format_state(sim, buf, cap, &len);
-    if (st != DS_OK)
-        die(EXIT_RUN, "cannot write --checkpoint %s: %s", path, ds_status_str(st));
+    ds_error err;
+    if (ds_checkpoint_format(sim, buf, cap, &len, &err) != DS_OK)
+        die(EXIT_RUN, "cannot write --checkpoint %s: %s", path, err.message);
     const char *why = "";
     int failed;
     if (is_special_file(path)) {

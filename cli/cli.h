@@ -63,6 +63,11 @@ typedef struct options {
 
 /* report.c: "disks: " and the message on one line of stderr, then exit. */
 void die(int code, const char *fmt, ...) DIES;
+/* report.c: the library's reason in the command's words: a sentence that
+ * begins with the field it names ("radius = 600 ...", "rate = 5 ...")
+ * begins with the command's name for it ("R = 600 ...", "--grow 5 ...");
+ * out (cap bytes) holds it, or the library's sentence is returned. */
+const char *in_command_words(const ds_error *err, char *out, size_t cap);
 
 /* options.c */
 options parse_args(int argc, char **argv);
@@ -74,10 +79,8 @@ ds_params params_of(const options *o);
 /* --mixture's two kinds into kinds and mix; NULL for one kind. */
 const ds_mixture *mixture_of(const options *o, ds_species kinds[2], ds_mixture *mix);
 ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture);
-/* --grow's target checked against a new request's area fraction; then
- * --grow started, once the simulation exists (a new one, a checkpoint's
- * or a frame's). */
-void check_growth_request(const options *o, const ds_params *p, const ds_mixture *mixture);
+/* --grow started, once the simulation exists (a new one, a checkpoint's
+ * or a frame's), or refused with the library's reason. */
 void start_growth(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */

@@ -6,12 +6,14 @@
  *
  * The order is the promise of docs/cli.md: the command line, then every
  * path, then where the run starts (its checkpoint or frame read and
- * checked), then the frames of another run, and only then is anything
- * made: --out, the outputs' temporaries, the disks. A failure up to the
- * first frame leaves nothing behind. */
+ * checked, or a new request checked and its disks placed) and its growth,
+ * then the frames of another run, and only then is anything made: --out,
+ * the outputs' temporaries. A failure up to the first frame leaves
+ * nothing behind. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,7 +31,7 @@ static void progress_show(const progress *pr, long frame, long frames, uint64_t 
 {
     if (!pr->enabled)
         return;
-    double elapsed = ds_now() - pr->started;
+    double elapsed = ds_timer_now() - pr->started;
     double rate = elapsed > 0.0 ? (double)steps / elapsed : 0.0;
     double left = frame > 0 ? elapsed * (double)(frames - frame) / (double)frame : 0.0;
     fprintf(stderr, "\rframe %ld of %ld  %.0f steps/s  %.0f s left  ", frame, frames, rate, left);
@@ -46,9 +48,10 @@ typedef struct run {
     const options *o;
     ds_sim *sim;
     long first, last; /* the frames this run writes */
-    char *frame_buf, *xyz_buf;
-    size_t frame_cap, xyz_cap;
+    char *frame_buf;
+    size_t frame_cap;
     output stats, trajectory;
+    ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
     long jammed_frame;     /* the frame in which growth jammed, -1 */
     progress pr;
@@ -63,14 +66,15 @@ static const char stats_header[] =
 static void stats_row(output *out, long frame, const ds_sim *sim)
 {
     char row[360];
-    double px, py;
-    ds_momentum(sim, &px, &py);
-    int l = snprintf(row, sizeof row,
-                     "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g,%.17g\n", frame,
-                     ds_time(sim), ds_kinetic_energy(sim), px, py,
-                     (unsigned long long)ds_collision_count(sim),
-                     (unsigned long long)ds_wall_count(sim), ds_pressure(sim),
-                     ds_virial_pressure(sim), ds_psi6(sim), ds_area_fraction(sim));
+    double px, py, psi6 = NAN; /* psi6 NaN where the library has none: a box too narrow */
+    ds_sim_get_momentum(sim, &px, &py);
+    (void)ds_sim_get_psi6(sim, &psi6, NULL);
+    int l =
+        snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g,%.17g\n",
+                 frame, ds_sim_get_time(sim), ds_sim_get_kinetic_energy(sim), px, py,
+                 (unsigned long long)ds_sim_get_collision_count(sim),
+                 (unsigned long long)ds_sim_get_wall_count(sim), ds_sim_get_pressure(sim),
+                 ds_sim_get_virial_pressure(sim), psi6, ds_sim_get_area_fraction(sim));
     output_write(out, row, (size_t)l);
 }
 
@@ -85,14 +89,16 @@ static void emit_frame(run *r, long frame)
     const char *why = "";
     size_t len = 0;
     snprintf(name, sizeof name, "frame_%04ld.txt", frame);
-    ds_format_frame(r->sim, o->velocities, r->frame_buf, r->frame_cap, &len);
+    ds_frame_format(r->sim, o->velocities, r->frame_buf, r->frame_cap, &len, NULL);
     if (write_file_atomic(o->out_dir, name, r->frame_buf, len, 0, &why) != 0) {
         progress_clear(&r->pr);
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, why);
     }
-    if (r->trajectory.f) {
-        ds_format_xyz_frame(r->sim, r->xyz_buf, r->xyz_cap, &len);
-        output_write(&r->trajectory, r->xyz_buf, len);
+    if (r->xyz) {
+        errno = 0;
+        if (ds_writer_write(r->xyz, r->sim, NULL) != DS_OK)
+            die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path,
+                strerror(errno ? errno : EIO));
     }
     if (r->stats.f)
         stats_row(&r->stats, frame, r->sim);
@@ -108,6 +114,9 @@ static void write_checkpoint(run *r, long frame)
 
 static void close_outputs(run *r)
 {
+    if (r->xyz && ds_writer_close(r->xyz, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path, strerror(EIO));
+    r->xyz = NULL;
     if (r->trajectory.f)
         output_close(&r->trajectory);
     if (r->stats.f)
@@ -147,8 +156,12 @@ static void open_outputs(run *r)
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, strerror(err));
     if (o->checkpoint_path)
         checkpoint_probe(o->checkpoint_path);
-    if (o->trajectory_path)
+    if (o->trajectory_path) {
         output_open(&r->trajectory, "--trajectory", o->trajectory_path);
+        ds_error err;
+        if (ds_writer_open(DS_FORMAT_XYZ, r->trajectory.f, 0, &r->xyz, &err) != DS_OK)
+            die(EXIT_RUN, "cannot write --trajectory %s: %s", o->trajectory_path, err.message);
+    }
     if (o->stats_path) {
         output_open(&r->stats, "--stats", o->stats_path);
         output_write(&r->stats, stats_header, sizeof stats_header - 1);
@@ -161,12 +174,13 @@ static void print_start(const run *r)
     const ds_sim *sim = r->sim;
     /* The box is named only when it is not the seed's square with walls. */
     char box[96] = "", start[PATH_CAP + 128], frames[64];
-    if (ds_boundary_used(sim) != DS_WALLS || ds_box_y(sim) != ds_box(sim))
-        snprintf(box, sizeof box, ", box = %g x %g %s", ds_box(sim), ds_box_y(sim),
-                 ds_boundary_name(ds_boundary_used(sim)));
+    if (ds_sim_get_boundary(sim) != DS_BOUNDARY_WALLS ||
+        ds_sim_get_box_height(sim) != ds_sim_get_box_width(sim))
+        snprintf(box, sizeof box, ", box = %g x %g %s", ds_sim_get_box_width(sim),
+                 ds_sim_get_box_height(sim), ds_boundary_name(ds_sim_get_boundary(sim)));
     if (o->restart_path)
         snprintf(start, sizeof start, "restart of %s at frame %ld (t = %g): ", o->restart_path,
-                 r->first - 1, ds_time(sim));
+                 r->first - 1, ds_sim_get_time(sim));
     else
         start[0] = '\0';
     char what[PATH_CAP + 64];
@@ -182,9 +196,10 @@ static void print_start(const run *r)
         snprintf(frames, sizeof frames, "frames %ld to %ld", r->first, r->last);
     printf("disks: %sN = %zu, R = %g, %s%s, integrator = %s, broad phase = %s, %s x %llu steps -> "
            "%s\n",
-           start, ds_count(sim), ds_radius(sim), what, box,
-           ds_integrator_name(ds_integrator_used(sim)), ds_broadphase_name(ds_broadphase_used(sim)),
-           frames, (unsigned long long)o->steps_per_frame, o->out_dir);
+           start, ds_sim_get_count(sim), ds_sim_get_radius(sim), what, box,
+           ds_integrator_name(ds_sim_get_integrator(sim)),
+           ds_broadphase_name(ds_sim_get_broadphase(sim)), frames,
+           (unsigned long long)o->steps_per_frame, o->out_dir);
 }
 
 /* A jammed packing's contacts: within 1e-4 of their contact distance (at
@@ -194,31 +209,52 @@ static void print_start(const run *r)
 static void print_report(const run *r, long asked)
 {
     const ds_sim *sim = r->sim;
-    const int grew = ds_growth_z(sim) > 0.0 || ds_growth_state_of(sim) != DS_GROWTH_NONE;
-    if (grew || ds_radius_max(sim) != ds_radius(sim)) {
-        printf("area fraction %.6f", ds_area_fraction(sim));
+    const int grew =
+        ds_sim_get_growth_z(sim) > 0.0 || ds_sim_get_growth_state(sim) != DS_GROWTH_NONE;
+    if (grew || ds_sim_get_radius_max(sim) != ds_sim_get_radius(sim)) {
+        printf("area fraction %.6f", ds_sim_get_area_fraction(sim));
         ds_contacts c;
-        if (r->jammed_frame >= 0 && ds_count_contacts(sim, CONTACT_GAP, &c) == DS_OK)
+        if (r->jammed_frame >= 0 && ds_sim_get_contacts(sim, CONTACT_GAP, &c, NULL) == DS_OK)
             printf(", jammed at Z = %.4g at t = %.6g, frame %ld (%ld of %ld frames written); "
                    "%.4f contacts per disk, rattlers %zu (%.2f%%)",
-                   ds_growth_z(sim), ds_time(sim), r->jammed_frame, r->jammed_frame - r->first + 1,
-                   asked, c.per_disk, c.rattlers, 100.0 * c.rattler_fraction);
-        else if (ds_growth_state_of(sim) == DS_GROWING)
-            printf(", still growing (Z = %.4g)", ds_growth_z(sim));
-        else if (ds_growth_state_of(sim) == DS_GROWTH_REACHED_ETA)
+                   ds_sim_get_growth_z(sim), ds_sim_get_time(sim), r->jammed_frame,
+                   r->jammed_frame - r->first + 1, asked, c.per_disk, c.rattlers,
+                   100.0 * c.rattler_fraction);
+        else if (ds_sim_get_growth_state(sim) == DS_GROWTH_GROWING)
+            printf(", still growing (Z = %.4g)", ds_sim_get_growth_z(sim));
+        else if (ds_sim_get_growth_state(sim) == DS_GROWTH_REACHED_ETA)
             printf(", reached by growth");
-        else if (ds_growth_state_of(sim) == DS_GROWTH_JAMMED)
-            printf(", the packing of a growth that jammed at Z = %.4g", ds_growth_z(sim));
+        else if (ds_sim_get_growth_state(sim) == DS_GROWTH_JAMMED)
+            printf(", the packing of a growth that jammed at Z = %.4g", ds_sim_get_growth_z(sim));
         printf("\n");
     }
-    printf("collision processing time: %.6f s (%s over %llu steps)\n", ds_collision_seconds(sim),
-           ds_integrator_used(sim) == DS_EVENT_DRIVEN
+    printf("collision processing time: %.6f s (%s over %llu steps)\n",
+           ds_sim_get_collision_seconds(sim),
+           ds_sim_get_integrator(sim) == DS_INTEGRATOR_EVENT_DRIVEN
                ? "predicting and processing collisions, wall turns and cell crossings"
                : "sorting, pruning, testing and resolving pairs",
-           (unsigned long long)ds_steps(sim));
+           (unsigned long long)ds_sim_get_steps(sim));
     printf("disk-disk collisions: %llu, wall reflections: %llu\n",
-           (unsigned long long)ds_collision_count(sim), (unsigned long long)ds_wall_count(sim));
+           (unsigned long long)ds_sim_get_collision_count(sim),
+           (unsigned long long)ds_sim_get_wall_count(sim));
     printf("simulation %.3f s, output %.3f s\n", r->sim_seconds, r->out_seconds);
+}
+
+/* Steps steps. A growth that finds no memory for the wider cells it
+ * needs stops at a step's end, and so does the library's run: the run
+ * goes on from there at the radii of then, as the warning says. */
+static void run_steps(ds_sim *sim, uint64_t steps)
+{
+    while (steps > 0) {
+        const uint64_t before = ds_sim_get_steps(sim);
+        ds_error err;
+        if (ds_sim_run(sim, steps, &err) == DS_OK)
+            return;
+        if (err.status != DS_ERR_NOMEM)
+            die(EXIT_RUN, "cannot run: %s", err.message);
+        fprintf(stderr, "disks: warning: %s; the run goes on at the radii of then\n", err.message);
+        steps -= ds_sim_get_steps(sim) - before;
+    }
 }
 
 /* The steps up to a frame's. A growing run goes step by step, to see the
@@ -229,14 +265,14 @@ static void print_report(const run *r, long asked)
 static int advance_frame(ds_sim *sim, uint64_t steps)
 {
     uint64_t k = 0;
-    while (k < steps && ds_growth_state_of(sim) == DS_GROWING) {
-        ds_step(sim);
+    while (k < steps && ds_sim_get_growth_state(sim) == DS_GROWTH_GROWING) {
+        run_steps(sim, 1);
         ++k;
-        if (ds_growth_state_of(sim) == DS_GROWTH_JAMMED)
+        if (ds_sim_get_growth_state(sim) == DS_GROWTH_JAMMED)
             return 1;
     }
     if (k < steps)
-        ds_run(sim, steps - k);
+        run_steps(sim, steps - k);
     return 0;
 }
 
@@ -249,26 +285,27 @@ static void run_frames(run *r)
         /* Frame 0 is the start; a restart's first frame is one frame on. */
         int jammed = 0;
         if (frame > 0 && (k > 0 || o->restart_path)) {
-            double t0 = ds_now();
+            double t0 = ds_timer_now();
             /* To the frame's step: a restart of a packing that jammed
              * between frames gets back onto them. */
-            jammed = advance_frame(r->sim, (uint64_t)frame * o->steps_per_frame - ds_steps(r->sim));
-            r->sim_seconds += ds_now() - t0;
+            jammed = advance_frame(r->sim,
+                                   (uint64_t)frame * o->steps_per_frame - ds_sim_get_steps(r->sim));
+            r->sim_seconds += ds_timer_now() - t0;
         }
-        double t0 = ds_now();
+        double t0 = ds_timer_now();
         emit_frame(r, frame);
         /* The frame at T closes the relaxation: its row holds the averages
          * from the start, the rows after it those from it on. Before the
          * checkpoint, so that a restart from it carries the reset. */
-        if (!r->measuring && ds_time(r->sim) >= o->measure_after) {
-            ds_reset_observables(r->sim);
+        if (!r->measuring && ds_sim_get_time(r->sim) >= o->measure_after) {
+            ds_sim_reset_observables(r->sim);
             r->measuring = 1;
         }
         if (o->checkpoint_every && frame > 0 && frame % o->checkpoint_every == 0 &&
             frame < r->last && !stop_signal())
             write_checkpoint(r, frame);
-        r->out_seconds += ds_now() - t0;
-        progress_show(&r->pr, k + 1, o->frames, ds_steps(r->sim));
+        r->out_seconds += ds_timer_now() - t0;
+        progress_show(&r->pr, k + 1, o->frames, ds_sim_get_steps(r->sim));
         int sig = stop_signal();
         if (sig)
             stop_by_signal(r, sig, frame);
@@ -279,6 +316,36 @@ static void run_frames(run *r)
         }
     }
     progress_clear(&r->pr);
+}
+
+/* Where the run starts (a checkpoint, a frame or a new request, its
+ * disks placed) and its growth, each refused before anything is made. */
+static void start_run(run *r, options *o)
+{
+    if (o->restart_path) {
+        r->sim = restart_from(o->restart_path);
+        r->first = restart_frame(o, r->sim) + 1;
+        check_restart_frame_file(o, r->sim, r->first - 1);
+    } else if (o->from_path) {
+        r->sim = start_from_frame(o);
+    } else {
+        ds_params p = params_of(o);
+        ds_species kinds[2];
+        ds_mixture mix;
+        const ds_mixture *mixture = mixture_of(o, kinds, &mix);
+        check_request(&p, mixture, NULL);
+        r->sim = create_fresh(&p, mixture);
+    }
+    start_growth(o, r->sim);
+    r->last = r->first + o->frames - 1;
+    /* --measure-after: a restart past T continues the checkpoint's
+     * averages (its run made the reset); a T past the last frame would
+     * measure nothing. */
+    r->measuring = !(o->measure_after > 0.0) || ds_sim_get_time(r->sim) >= o->measure_after;
+    const double end = (double)((uint64_t)r->last * o->steps_per_frame) * ds_sim_get_dt(r->sim);
+    if (!r->measuring && o->measure_after > end)
+        die(EXIT_USAGE, "--measure-after %g is past the run's last frame, at t = %g",
+            o->measure_after, end);
 }
 
 int main(int argc, char **argv)
@@ -297,58 +364,22 @@ int main(int argc, char **argv)
     r.o = &o;
     r.checkpoint_frame = -1;
     r.jammed_frame = -1;
-    ds_params p = params_of(&o);
-    ds_species kinds[2];
-    ds_mixture mix;
-    const ds_mixture *mixture = o.restart_path || o.from_path ? NULL : mixture_of(&o, kinds, &mix);
-    if (o.restart_path) {
-        r.sim = restart_from(o.restart_path);
-        r.first = restart_frame(&o, r.sim) + 1;
-        check_restart_frame_file(&o, r.sim, r.first - 1);
-    } else if (o.from_path) {
-        r.sim = start_from_frame(&o);
-    } else {
-        check_request(&p, mixture, NULL);
-        check_growth_request(&o, &p, mixture);
-    }
-    /* A checkpoint's or frame's growth is refused before anything is made. */
-    const int sim_was_read = r.sim != NULL;
-    if (sim_was_read)
-        start_growth(&o, r.sim);
-    r.last = r.first + o.frames - 1;
-    /* --measure-after: a restart past T continues the checkpoint's
-     * averages (its run made the reset); a T past the last frame would
-     * measure nothing. */
-    r.measuring = !(o.measure_after > 0.0) || (r.sim && ds_time(r.sim) >= o.measure_after);
-    if (!r.measuring) {
-        /* The command has no --dt: a new run steps by the header's default. */
-        const double dt = r.sim ? ds_dt(r.sim) : 0.001;
-        const double end = (double)((uint64_t)r.last * o.steps_per_frame) * dt;
-        if (o.measure_after > end)
-            die(EXIT_USAGE, "--measure-after %g is past the run's last frame, at t = %g",
-                o.measure_after, end);
-    }
+    start_run(&r, &o);
     check_other_runs(&o, r.last);
 
     make_out_dir(o.out_dir);
     open_outputs(&r);
-    if (!r.sim)
-        r.sim = create_fresh(&p, mixture);
-    if (!sim_was_read)
-        start_growth(&o, r.sim);
     remove_other_runs(&o, r.last);
-    r.frame_cap = ds_frame_size(r.sim, o.velocities);
-    r.xyz_cap = o.trajectory_path ? ds_xyz_frame_size(r.sim) : 0;
+    r.frame_cap = ds_frame_get_size(r.sim, o.velocities);
     r.frame_buf = malloc(r.frame_cap ? r.frame_cap : 1);
-    r.xyz_buf = malloc(r.xyz_cap ? r.xyz_cap : 1);
-    if (!r.frame_buf || !r.xyz_buf)
-        die(EXIT_RUN, "out of memory for the frame buffers");
+    if (!r.frame_buf)
+        die(EXIT_RUN, "out of memory for the frame buffer");
     if (!o.quiet)
         print_start(&r);
     fflush(stdout);
 
     r.pr.enabled = !o.quiet && isatty(STDERR_FILENO);
-    r.pr.started = ds_now();
+    r.pr.started = ds_timer_now();
     run_frames(&r);
     close_outputs(&r);
     if (o.checkpoint_path && r.checkpoint_frame != r.last)
@@ -356,8 +387,7 @@ int main(int argc, char **argv)
     if (!o.quiet)
         print_report(&r, o.frames);
     free(r.frame_buf);
-    free(r.xyz_buf);
-    ds_destroy(r.sim);
+    ds_sim_destroy(r.sim);
     /* The timing report is output too: `disks 400 5 > /dev/full` must not
      * succeed silently with it lost. */
     int lost = ferror(stdout);

@@ -36,7 +36,10 @@ static const char *const usage_text =
     "  --from FRAME         start at time 0 from the disks of FRAME, a frame written\n"
     "                       with --velocities (N and R from it)\n"
     "  --lattice            start on a triangular lattice instead of at random\n"
-    "  --periodic           periodic box (nearest image) instead of walls\n"
+    "  --boundary B         walls (the default), periodic (nearest image along both\n"
+    "                       axes) or channel (periodic along x, walls at y = 0 and\n"
+    "                       y = box_y)\n"
+    "  --periodic           the same as --boundary periodic\n"
     "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
     "  --mixture RATIO:FRACTION\n"
     "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
@@ -169,30 +172,14 @@ static void mixture_arg(const char *s, options *o)
     o->mixture_text = s;
 }
 
-static ds_broadphase broadphase_arg(const char *s)
+/* A name the library does not know, in the command's words
+ * ("--integrator 'exact' is not one of 'step', 'event'"). */
+static void refuse_name(ds_status st, const ds_error *err)
 {
-    const ds_broadphase all[] = {DS_SAP, DS_SAP_STRIPS, DS_BRUTE_FORCE, DS_AUTO, DS_CELLS};
-    for (size_t k = 0; k < sizeof all / sizeof all[0]; ++k)
-        if (strcmp(s, ds_broadphase_name(all[k])) == 0)
-            return all[k];
-    die(EXIT_USAGE, "--broadphase must be sap, strips, cells, brute or auto, got '%s'", s);
-    return DS_AUTO;
-}
-
-/* The integrators are the library's, by name: ds_integrator_name says
- * "unknown" past the last one. */
-static ds_integrator integrator_arg(const char *s)
-{
-    char known[128] = "";
-    for (int k = 0; strcmp(ds_integrator_name((ds_integrator)k), "unknown") != 0; ++k) {
-        const char *name = ds_integrator_name((ds_integrator)k);
-        if (strcmp(s, name) == 0)
-            return (ds_integrator)k;
-        snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", k ? " or " : "",
-                 name);
+    if (st != DS_OK) {
+        char words[sizeof err->message + 16];
+        die(EXIT_USAGE, "%s", in_command_words(err, words, sizeof words));
     }
-    die(EXIT_USAGE, "--integrator must be %s, got '%s'", known, s);
-    return DS_TIME_STEP;
 }
 
 /* A file name given to an option. */
@@ -229,9 +216,9 @@ static void check_combination(const options *o, int npos, const char *system_opt
         die(EXIT_USAGE, "%s needs --grow RATE", o->until_eta > 0.0 ? "--until-eta" : "--until-z");
     /* Growth needs exact contact times and no walls; a checkpoint's
      * system is checked once it is read. */
-    if (o->grow_rate > 0.0 && !o->restart_path && o->integrator != DS_EVENT_DRIVEN)
+    if (o->grow_rate > 0.0 && !o->restart_path && o->integrator != DS_INTEGRATOR_EVENT_DRIVEN)
         die(EXIT_USAGE, "--grow needs --integrator event (the time step cannot grow disks)");
-    if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_PERIODIC)
+    if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
         die(EXIT_USAGE, "--grow needs --periodic (the compression runs in a periodic box)");
     /* Growth measures its own Z over windows of collisions, and its
      * pressure is not an equilibrium one to average. */
@@ -243,6 +230,199 @@ static void check_combination(const options *o, int npos, const char *system_opt
             npos == 0 ? "N and R" : "R");
 }
 
+/* The options that take a value, in the order of their table, names[]. */
+enum {
+    SEED,
+    FRAMES,
+    STEPS,
+    OUT,
+    STATS,
+    BROADPHASE,
+    INTEGRATOR,
+    TRAJECTORY,
+    BOX_Y,
+    CHECKPOINT,
+    CHECKPOINT_EVERY,
+    RESTART,
+    FROM,
+    MIXTURE,
+    MASS,
+    GROW,
+    UNTIL_ETA,
+    UNTIL_Z,
+    MEASURE_AFTER,
+    BOUNDARY
+};
+/* Those that describe the system with a system flag. */
+static const struct {
+    const char *name;
+    int system;
+} names[] = {{"--seed", 1},
+             {"--frames", 0},
+             {"--steps-per-frame", 0},
+             {"--out", 0},
+             {"--stats", 0},
+             {"--broadphase", 1},
+             {"--integrator", 1},
+             {"--trajectory", 0},
+             {"--box-y", 1},
+             {"--checkpoint", 0},
+             {"--checkpoint-every", 0},
+             {"--restart", 0},
+             {"--from", 0},
+             {"--mixture", 1},
+             {"--mass", 1},
+             {"--grow", 0},
+             {"--until-eta", 0},
+             {"--until-z", 0},
+             {"--measure-after", 0},
+             {"--boundary", 1}};
+
+/* The first option given that describes the system, the first that
+ * describes the placement (see check_combination), and the boundary
+ * asked for (--boundary, --periodic), if any. */
+typedef struct first_options {
+    const char *system, *placement, *boundary;
+} first_options;
+
+/* --boundary B (--periodic being --boundary periodic): given twice, the
+ * same both times. */
+static void boundary_arg(options *o, const char *value, first_options *first)
+{
+    ds_error err;
+    refuse_name(ds_boundary_parse(value, &o->boundary, &err), &err);
+    if (first->boundary && strcmp(first->boundary, value) != 0)
+        die(EXIT_USAGE, "two boundaries asked for: %s and %s (--periodic is --boundary periodic)",
+            first->boundary, value);
+    first->boundary = value;
+}
+
+/* Option which (names[]) with its value. */
+static void set_option(options *o, int which, const char *value, first_options *first)
+{
+    ds_error err;
+    switch (which) {
+    case SEED:
+        o->seed = count_arg("--seed", value, 0, UINT64_MAX);
+        if (!first->placement)
+            first->placement = "--seed";
+        break;
+    case FRAMES:
+        o->frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
+        break;
+    case STEPS:
+        o->steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
+        break;
+    case OUT:
+        if (!*value)
+            die(EXIT_USAGE, "--out needs a directory name");
+        o->out_dir = value;
+        break;
+    case STATS:
+        o->stats_path = file_arg("--stats", value);
+        break;
+    case BROADPHASE:
+        refuse_name(ds_broadphase_parse(value, &o->broadphase, &err), &err);
+        break;
+    case INTEGRATOR:
+        refuse_name(ds_integrator_parse(value, &o->integrator, &err), &err);
+        break;
+    case TRAJECTORY:
+        o->trajectory_path = file_arg("--trajectory", value);
+        break;
+    case BOX_Y:
+        o->box_y = box_y_arg(value);
+        break;
+    case CHECKPOINT:
+        o->checkpoint_path = file_arg("--checkpoint", value);
+        break;
+    case CHECKPOINT_EVERY:
+        o->checkpoint_every = (long)count_arg("--checkpoint-every", value, 1, MAX_FRAMES);
+        break;
+    case RESTART:
+        o->restart_path = file_arg("--restart", value);
+        break;
+    case FROM:
+        o->from_path = file_arg("--from", value);
+        break;
+    case MIXTURE:
+        mixture_arg(value, o);
+        break;
+    case MASS:
+        refuse_name(ds_mass_rule_parse(value, &o->mass_rule, &err), &err);
+        break;
+    case GROW:
+        o->grow_rate = positive_arg("--grow", value, 0.0);
+        break;
+    /* The growth's targets: numbers > 0 here, held to their bounds by
+     * the library (start.c). */
+    case UNTIL_ETA:
+        o->until_eta = positive_arg("--until-eta", value, 0.0);
+        break;
+    case UNTIL_Z:
+        o->until_z = positive_arg("--until-z", value, 0.0);
+        break;
+    case MEASURE_AFTER:
+        o->measure_after = positive_arg("--measure-after", value, 1e12);
+        break;
+    default:
+        boundary_arg(o, value, first);
+    }
+}
+
+/* --name VALUE or --name=VALUE at argv[*i] (a, starting with "--"). */
+static void value_option(options *o, int argc, char **argv, int *i, first_options *first)
+{
+    const char *a = argv[*i];
+    const char *eq = strchr(a, '=');
+    size_t len = eq ? (size_t)(eq - a) : strlen(a);
+    const char *value = eq ? eq + 1 : (*i + 1 < argc ? argv[*i + 1] : NULL);
+    int which = -1;
+    for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
+        if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
+            which = k;
+    if (which < 0)
+        die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, a);
+    if (!value)
+        die(EXIT_USAGE, "%s needs a value (try --help)", names[which].name);
+    if (!eq)
+        ++*i;
+    if (names[which].system && !first->system)
+        first->system = names[which].name;
+    set_option(o, which, value, first);
+}
+
+/* An option without a value: whether a is one (--help and --version end
+ * the command here). */
+static int flag_option(options *o, const char *a, first_options *first)
+{
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+        printf(usage_text, (unsigned)DS_DEFAULT_SEED);
+        exit(0);
+    }
+    if (strcmp(a, "--version") == 0) {
+        printf("disks %s\n", ds_version());
+        exit(0);
+    }
+    if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0)
+        o->quiet = 1;
+    else if (strcmp(a, "--velocities") == 0)
+        o->velocities = 1;
+    else if (strcmp(a, "--overwrite") == 0)
+        o->overwrite = 1;
+    else if (strcmp(a, "--lattice") == 0)
+        o->placement = DS_PLACEMENT_LATTICE;
+    else if (strcmp(a, "--periodic") == 0)
+        boundary_arg(o, "periodic", first);
+    else
+        return 0;
+    if (strcmp(a, "--lattice") == 0 && !first->placement)
+        first->placement = "--lattice";
+    if ((strcmp(a, "--lattice") == 0 || strcmp(a, "--periodic") == 0) && !first->system)
+        first->system = a;
+    return 1;
+}
+
 options parse_args(int argc, char **argv)
 {
     options o;
@@ -251,171 +431,17 @@ options parse_args(int argc, char **argv)
     o.frames = 500;
     o.steps_per_frame = 100;
     o.out_dir = ".";
-    o.broadphase = DS_AUTO;
+    o.broadphase = DS_BROADPHASE_AUTO;
 
     const char *positional[2];
     int npos = 0;
-    /* The first option given that describes the system, and the first
-     * that describes the placement (see check_combination). */
-    const char *system_option = NULL, *placement_option = NULL;
+    first_options first = {NULL, NULL, NULL};
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            printf(usage_text, (unsigned)DS_DEFAULT_SEED);
-            exit(0);
-        }
-        if (strcmp(a, "--version") == 0) {
-            printf("disks %s\n", ds_version());
-            exit(0);
-        }
-        if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
-            o.quiet = 1;
+        if (flag_option(&o, a, &first))
             continue;
-        }
-        if (strcmp(a, "--velocities") == 0) {
-            o.velocities = 1;
-            continue;
-        }
-        if (strcmp(a, "--overwrite") == 0) {
-            o.overwrite = 1;
-            continue;
-        }
-        if (strcmp(a, "--lattice") == 0) {
-            o.placement = DS_LATTICE;
-            if (!placement_option)
-                placement_option = "--lattice";
-            if (!system_option)
-                system_option = "--lattice";
-            continue;
-        }
-        if (strcmp(a, "--periodic") == 0) {
-            o.boundary = DS_PERIODIC;
-            if (!system_option)
-                system_option = "--periodic";
-            continue;
-        }
         if (a[0] == '-' && a[1] == '-') {
-            /* --name VALUE or --name=VALUE */
-            const char *eq = strchr(a, '=');
-            size_t len = eq ? (size_t)(eq - a) : strlen(a);
-            const char *value = eq ? eq + 1 : (i + 1 < argc ? argv[i + 1] : NULL);
-            enum {
-                SEED,
-                FRAMES,
-                STEPS,
-                OUT,
-                STATS,
-                BROADPHASE,
-                INTEGRATOR,
-                TRAJECTORY,
-                BOX_Y,
-                CHECKPOINT,
-                CHECKPOINT_EVERY,
-                RESTART,
-                FROM,
-                MIXTURE,
-                MASS,
-                GROW,
-                UNTIL_ETA,
-                UNTIL_Z,
-                MEASURE_AFTER
-            };
-            /* In the order of the enum; those that describe the system
-             * with a system flag. */
-            static const struct {
-                const char *name;
-                int system;
-            } names[] = {
-                {"--seed", 1},  {"--frames", 0},     {"--steps-per-frame", 0},  {"--out", 0},
-                {"--stats", 0}, {"--broadphase", 1}, {"--integrator", 1},       {"--trajectory", 0},
-                {"--box-y", 1}, {"--checkpoint", 0}, {"--checkpoint-every", 0}, {"--restart", 0},
-                {"--from", 0},  {"--mixture", 1},    {"--mass", 1},             {"--grow", 0},
-                {"--until-eta", 0}, {"--until-z", 0}, {"--measure-after", 0}};
-            int which = -1;
-            for (int k = 0; k < (int)(sizeof names / sizeof names[0]); ++k)
-                if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
-                    which = k;
-            if (which < 0)
-                die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, a);
-            if (!value)
-                die(EXIT_USAGE, "%s needs a value (try --help)", names[which].name);
-            if (!eq)
-                ++i;
-            if (names[which].system && !system_option)
-                system_option = names[which].name;
-            switch (which) {
-            case SEED:
-                o.seed = count_arg("--seed", value, 0, UINT64_MAX);
-                if (!placement_option)
-                    placement_option = "--seed";
-                break;
-            case FRAMES:
-                o.frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
-                break;
-            case STEPS:
-                o.steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
-                break;
-            case OUT:
-                if (!*value)
-                    die(EXIT_USAGE, "--out needs a directory name");
-                o.out_dir = value;
-                break;
-            case STATS:
-                o.stats_path = file_arg("--stats", value);
-                break;
-            case BROADPHASE:
-                o.broadphase = broadphase_arg(value);
-                break;
-            case INTEGRATOR:
-                o.integrator = integrator_arg(value);
-                break;
-            case TRAJECTORY:
-                o.trajectory_path = file_arg("--trajectory", value);
-                break;
-            case BOX_Y:
-                o.box_y = box_y_arg(value);
-                break;
-            case CHECKPOINT:
-                o.checkpoint_path = file_arg("--checkpoint", value);
-                break;
-            case CHECKPOINT_EVERY:
-                o.checkpoint_every = (long)count_arg("--checkpoint-every", value, 1, MAX_FRAMES);
-                break;
-            case RESTART:
-                o.restart_path = file_arg("--restart", value);
-                break;
-            case FROM:
-                o.from_path = file_arg("--from", value);
-                break;
-            case MIXTURE:
-                mixture_arg(value, &o);
-                break;
-            case MASS:
-                if (strcmp(value, "equal") == 0)
-                    o.mass_rule = DS_MASS_EQUAL;
-                else if (strcmp(value, "area") == 0)
-                    o.mass_rule = DS_MASS_AREA;
-                else
-                    die(EXIT_USAGE, "--mass must be equal or area, got '%s'", value);
-                break;
-            case GROW:
-                o.grow_rate = positive_arg("--grow", value, 0.0);
-                break;
-            case UNTIL_ETA:
-                o.until_eta = positive_arg("--until-eta", value, 0.0);
-                if (!(o.until_eta < 1.0))
-                    die(EXIT_USAGE, "--until-eta must be an area fraction between 0 and 1, got '%s'",
-                        value);
-                break;
-            case MEASURE_AFTER:
-                o.measure_after = positive_arg("--measure-after", value, 1e12);
-                break;
-            default:
-                o.until_z = positive_arg("--until-z", value, 1e9);
-                if (!(o.until_z > 1.0))
-                    die(EXIT_USAGE, "--until-z must be a reduced pressure > 1 and <= 1e9, got '%s'",
-                        value);
-            }
+            value_option(&o, argc, argv, &i, &first);
             continue;
         }
         /* "-5" and "-inf" are (bad) numbers, reported as such below. */
@@ -428,7 +454,7 @@ options parse_args(int argc, char **argv)
         else
             die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
     }
-    check_combination(&o, npos, system_option, placement_option);
+    check_combination(&o, npos, first.system, first.placement);
     if (npos == 2) {
         o.n = (size_t)count_arg("N", positional[0], 1, UINT64_MAX);
         o.radius = radius_arg(positional[1]);

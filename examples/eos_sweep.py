@@ -6,7 +6,7 @@ Each point is one disksim.Sim: event-driven, in a periodic box of aspect
 sqrt(3)/2 (1000 x 866.03), started on the triangular lattice that fits it,
 as tools/analysis/eos.sh runs its points. After RELAX time units it measures
 BLOCKS blocks of BLOCK time units; Z = P A / (N kT) is the mean of the
-blocks' canonical Z (Sim.compressibility) and its error the standard error
+blocks' canonical Z (Sim.compressibility_factor) and its error the standard error
 of that mean, computed as tools/pressure computes them, so each row is the
 row tools/pressure prints for the same point (tools/analysis/plot_eos.plt can plot them).
 
@@ -45,7 +45,7 @@ def point(n, eta, relax, blocks, block):
     for _ in range(blocks):
         s.reset_observables()
         s.run(round(block / s.dt))
-        z = s.compressibility
+        z = s.compressibility_factor
         total += z
         total2 += z * z
     mean = total / blocks

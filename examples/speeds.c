@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Takes the whole state out in one call (ds_get_all) and prints the speed
+/* Takes the whole state out in one call (ds_sim_get_disks) and prints the speed
  * distribution against the two-dimensional Maxwell-Boltzmann law:
  *
  *   speeds N R [TIME]        e.g. speeds 2000 3 20
@@ -23,23 +23,23 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: speeds N R [TIME]\n");
         return 2;
     }
-    ds_params params = ds_default_params(strtoul(argv[1], NULL, 10), strtod(argv[2], NULL));
+    ds_params params = ds_params_default(strtoul(argv[1], NULL, 10), strtod(argv[2], NULL));
     double time = argc > 3 ? strtod(argv[3], NULL) : 20.0;
     ds_sim *sim = NULL;
-    ds_status status = ds_create(&params, &sim); /* also refuses a bad N or R */
+    ds_status status = ds_sim_create(&params, NULL, &sim, NULL); /* also refuses a bad N or R */
     if (status != DS_OK || !(time >= 0.0 && time <= 1e6)) {
-        fprintf(stderr, "speeds: %s\n", status != DS_OK ? ds_status_str(status) : "bad TIME");
-        ds_destroy(sim);
+        fprintf(stderr, "speeds: %s\n", status != DS_OK ? ds_status_name(status) : "bad TIME");
+        ds_sim_destroy(sim);
         return 1;
     }
-    ds_run(sim, (uint64_t)(time / ds_dt(sim) + 0.5));
+    ds_sim_run(sim, (uint64_t)(time / ds_sim_get_dt(sim) + 0.5), NULL);
 
-    size_t n = ds_count(sim);
+    size_t n = ds_sim_get_count(sim);
     ds_disk *disks = malloc(n * sizeof *disks);
-    if (!disks || ds_get_all(sim, disks) != DS_OK) {
+    if (!disks || ds_sim_get_disks(sim, disks, NULL) != DS_OK) {
         fprintf(stderr, "speeds: out of memory\n");
         free(disks);
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         return 1;
     }
     double v2 = 0.0;
@@ -52,7 +52,7 @@ int main(int argc, char **argv)
             ++count[bin];
     }
     double s2 = v2 / 2.0; /* Rayleigh: the cumulative law is 1 - exp(-v^2 / 2 s^2) */
-    printf("%zu disks at t = %.1f, rms speed %.1f\n", n, ds_time(sim), sqrt(v2));
+    printf("%zu disks at t = %.1f, rms speed %.1f\n", n, ds_sim_get_time(sim), sqrt(v2));
     printf("   speed    disks  Rayleigh\n");
     for (int b = 0; b < BINS; ++b) {
         double lo = b * BIN_WIDTH, hi = lo + BIN_WIDTH;
@@ -64,6 +64,6 @@ int main(int argc, char **argv)
         putchar('\n');
     }
     free(disks);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     return 0;
 }

@@ -9,7 +9,7 @@
  * disk in generation order (the frame_NNNN.txt format), then two blank lines.
  * Two blank lines are gnuplot's separator between data blocks, so a saved
  * stream plots frame K with `plot "run.txt" index K using 1:2:3 with circles`,
- * and ds_parse_frame() reads a single block back since it skips comments
+ * and ds_frame_parse() reads a single block back since it skips comments
  * and blank lines. */
 #include <errno.h>
 #include <stdio.h>
@@ -44,28 +44,28 @@ int main(int argc, char **argv)
         return 2;
     }
 
-    ds_params params = ds_default_params((size_t)n, radius);
+    ds_params params = ds_params_default((size_t)n, radius);
     ds_sim *sim = NULL;
-    ds_status status = ds_create(&params, &sim); /* also refuses a bad R */
+    ds_status status = ds_sim_create(&params, NULL, &sim, NULL); /* also refuses a bad R */
     if (status != DS_OK) {
-        fprintf(stderr, "stream_frames: %s\n", ds_status_str(status));
+        fprintf(stderr, "stream_frames: %s\n", ds_status_name(status));
         return 1;
     }
 
     for (unsigned long k = 0; k < frames; ++k) {
         if (k > 0)
-            ds_run(sim, steps);
-        printf("# frame %lu time %.3f\n", k, ds_time(sim));
-        status = ds_write_frame(sim, stdout);
+            ds_sim_run(sim, steps, NULL);
+        printf("# frame %lu time %.3f\n", k, ds_sim_get_time(sim));
+        status = ds_frame_write(sim, 0, stdout, NULL);
         if (status == DS_OK && fputs("\n\n", stdout) == EOF)
             status = DS_ERR_IO;
         if (status != DS_OK) {
             /* A closed pipe or a full disk: stop rather than simulate for nobody. */
-            fprintf(stderr, "stream_frames: frame %lu: %s\n", k, ds_status_str(status));
-            ds_destroy(sim);
+            fprintf(stderr, "stream_frames: frame %lu: %s\n", k, ds_status_name(status));
+            ds_sim_destroy(sim);
             return 1;
         }
     }
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     return fflush(stdout) == 0 ? 0 : 1;
 }

@@ -1,60 +1,16 @@
 # SPDX-License-Identifier: MIT
-"""Builds the extension disksim._disksim from python/src/*.c and the
-library's own sources (../src/*/*.c), so neither a PIC static library nor
-an installed libdisksim is needed. The version is the header's
-DS_VERSION_STRING, the one place it is written.
-
-Honours CC and CFLAGS from the environment (as setuptools does), which is
-how `make python` passes the Makefile's.
+"""`pip install ./python`, as disksim 2.x documented it: the build is the
+top directory's, setup.py there (the one build definition, which
+`pip install .` uses), run from there. pip builds a local directory in
+place, so the checkout around this directory is there to run it in.
 """
-import glob
 import os
-import re
+import runpy
 import sys
 
-from setuptools import Extension, setup
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-TOP = os.path.dirname(HERE)
-HEADER = os.path.join(TOP, "include", "disk_sim.h")
-
-if not os.path.exists(HEADER):
-    sys.exit("disksim: %s is missing: build the module from a checkout of the "
-             "disksim repository (pip install --no-build-isolation ./python)" % HEADER)
-
-try:
-    import numpy
-except ImportError:
-    sys.exit("disksim: numpy is needed to build the module (Debian: python3-numpy)")
-
-
-def version():
-    with open(HEADER) as f:
-        return re.search(r'#define DS_VERSION_STRING "([^"]+)"', f.read()).group(1)
-
-
-# Paths relative to this directory, as setuptools requires. The library's
-# sources are ../src/*/*.c, so their objects land one level above the build
-# directory setuptools is given (make python gives it $(BUILD)/python/temp:
-# the objects go to $(BUILD)/python/src/).
-def relative(pattern):
-    return sorted(os.path.relpath(p, HERE) for p in glob.glob(os.path.join(HERE, pattern)))
-
-
-lib_sources = relative("../src/*/*.c")
-module_sources = relative("src/*.c")
-headers = relative("../include/disk_sim.h") + relative("../src/*/*.h") + relative("src/*.h")
-
-extension = Extension(
-    "disksim._disksim",
-    sources=module_sources + lib_sources,
-    depends=headers,
-    include_dirs=[os.path.join(TOP, "include"), os.path.join(TOP, "src"),
-                  numpy.get_include()],
-    # C99 like the library; only PyInit__disksim is exported (PyMODINIT_FUNC
-    # marks it visible), so the library's ds_* stay inside the module.
-    extra_compile_args=["-std=c99", "-Wall", "-Wextra", "-fvisibility=hidden"],
-    libraries=["m"],
-)
-
-setup(version=version(), packages=["disksim"], ext_modules=[extension])
+TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+if not os.path.exists(os.path.join(TOP, "setup.py")):
+    sys.exit("disksim: %s is missing: build the module from a checkout of the disksim "
+             "repository (pip install --no-build-isolation .)" % os.path.join(TOP, "setup.py"))
+os.chdir(TOP)
+runpy.run_path(os.path.join(TOP, "setup.py"), run_name="__main__")

@@ -37,8 +37,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         memcpy(text, data, size);
 
     ds_frame frame;
-    ds_frame_error err;
-    ds_status st = ds_parse_frame(text, size, &frame, &err);
+    ds_error err;
+    ds_status st = ds_frame_parse(text, size, &frame, &err);
     if (st == DS_OK) {
         if (frame.count == 0 || !frame.disks || (frame.columns != 3 && frame.columns != 5))
             abort();
@@ -56,7 +56,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
          * and nothing is left allocated. */
         if (st != DS_ERR_FORMAT && st != DS_ERR_NOMEM)
             abort();
-        if (frame.disks || frame.count || err.line > count_lines(data, size))
+        if (frame.disks || frame.count || err.index > count_lines(data, size))
             abort();
         if (!memchr(err.message, '\0', sizeof err.message) || !err.message[0])
             abort();

@@ -32,12 +32,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             copy[size - 8 + (size_t)k] = (uint8_t)(h >> (8 * k));
     }
     ds_sim *sim = NULL;
-    ds_state_error err;
-    const ds_status st = ds_parse_state(copy, size, &sim, &err);
+    ds_error err;
+    const ds_status st = ds_checkpoint_parse(copy, size, &sim, &err);
     if (st == DS_OK) {
         /* A loaded state runs: a few steps, then its own checkpoint. */
-        ds_run(sim, 2);
-        ds_destroy(sim);
+        ds_sim_run(sim, 2, NULL);
+        ds_sim_destroy(sim);
     } else if (st != DS_ERR_FORMAT && st != DS_ERR_NOMEM) {
         abort();
     } else if (!err.message[0]) {

@@ -3,16 +3,17 @@
  * calloc, realloc, posix_memalign or aligned_alloc made inside an
  * operation returns nothing (alone, or with every call after it: memory
  * that stays short), for k = 1, 2, ... until the operation makes fewer
- * than k calls. The operations are creation (ds_create and
- * ds_create_mixture, both integrators, both boundaries, both placements,
- * every broad phase), growth (ds_set_growth, and a run in which growth
- * builds its state again), checkpoints (ds_parse_state, ds_load_state)
- * and ds_set_all. Each time the operation either refuses with
+ * than k calls. The operations are creation (ds_sim_create: both
+ * integrators, every boundary, both placements, every broad phase, one
+ * kind and mixtures), growth (ds_sim_set_growth, and a run in which growth
+ * builds its state again), checkpoints (ds_checkpoint_parse, ds_checkpoint_load)
+ * and ds_sim_set_disks. Each time the operation either refuses with
  * DS_ERR_NOMEM, leaving no simulation or one that steps on exactly as if
  * it had never been called, or does what it does without the failure
- * (a fallback), to the bit; a growing run has no status to return (ds_run
- * is void in 2.x): there growth stops, says so (DS_GROWTH_NONE), and the
- * run goes on sound, every step taken. A plain run allocates nothing.
+ * (a fallback), to the bit; a growing run that cannot widen its cells
+ * returns DS_ERR_NOMEM at the end of a whole step: there growth stops,
+ * says so (DS_GROWTH_NONE), and the simulation runs on sound. A plain run
+ * allocates nothing.
  *
  * The calls are counted by the linker (-Wl,--wrap=malloc,...: the
  * Makefile's rule for this test), and the library's large arrays come
@@ -112,21 +113,40 @@ typedef struct config {
 #define N_DISKS 40
 
 static const config configs[] = {
-    {"step walls sap", DS_TIME_STEP, DS_WALLS, DS_SAP, DS_RANDOM, 0},
-    {"step walls brute", DS_TIME_STEP, DS_WALLS, DS_BRUTE_FORCE, DS_RANDOM, 0},
-    {"step walls strips", DS_TIME_STEP, DS_WALLS, DS_SAP_STRIPS, DS_RANDOM, 0},
-    {"step periodic sap", DS_TIME_STEP, DS_PERIODIC, DS_SAP, DS_RANDOM, 0},
-    {"step periodic brute", DS_TIME_STEP, DS_PERIODIC, DS_BRUTE_FORCE, DS_RANDOM, 0},
-    {"step periodic strips", DS_TIME_STEP, DS_PERIODIC, DS_SAP_STRIPS, DS_LATTICE, 0},
-    {"step periodic strips, species", DS_TIME_STEP, DS_PERIODIC, DS_SAP_STRIPS, DS_RANDOM, 1},
-    {"step walls sap, per disk", DS_TIME_STEP, DS_WALLS, DS_SAP, DS_LATTICE, 2},
-    {"event walls cells", DS_EVENT_DRIVEN, DS_WALLS, DS_CELLS, DS_RANDOM, 0},
-    {"event walls brute", DS_EVENT_DRIVEN, DS_WALLS, DS_BRUTE_FORCE, DS_LATTICE, 0},
-    {"event periodic cells", DS_EVENT_DRIVEN, DS_PERIODIC, DS_CELLS, DS_RANDOM, 0},
-    {"event periodic brute", DS_EVENT_DRIVEN, DS_PERIODIC, DS_BRUTE_FORCE, DS_RANDOM, 0},
-    {"event periodic cells, lattice", DS_EVENT_DRIVEN, DS_PERIODIC, DS_CELLS, DS_LATTICE, 0},
-    {"event periodic cells, species", DS_EVENT_DRIVEN, DS_PERIODIC, DS_CELLS, DS_RANDOM, 1},
-    {"event walls cells, per disk", DS_EVENT_DRIVEN, DS_WALLS, DS_CELLS, DS_RANDOM, 2},
+    {"step walls sap", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_WALLS, DS_BROADPHASE_SAP,
+     DS_PLACEMENT_RANDOM, 0},
+    {"step walls brute", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_WALLS, DS_BROADPHASE_BRUTE,
+     DS_PLACEMENT_RANDOM, 0},
+    {"step walls strips", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_WALLS, DS_BROADPHASE_STRIPS,
+     DS_PLACEMENT_RANDOM, 0},
+    {"step periodic sap", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_SAP,
+     DS_PLACEMENT_RANDOM, 0},
+    {"step periodic brute", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_BRUTE,
+     DS_PLACEMENT_RANDOM, 0},
+    {"step periodic strips", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_STRIPS,
+     DS_PLACEMENT_LATTICE, 0},
+    {"step periodic strips, species", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_PERIODIC,
+     DS_BROADPHASE_STRIPS, DS_PLACEMENT_RANDOM, 1},
+    {"step walls sap, per disk", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_WALLS, DS_BROADPHASE_SAP,
+     DS_PLACEMENT_LATTICE, 2},
+    {"event walls cells", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_WALLS, DS_BROADPHASE_CELLS,
+     DS_PLACEMENT_RANDOM, 0},
+    {"event walls brute", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_WALLS, DS_BROADPHASE_BRUTE,
+     DS_PLACEMENT_LATTICE, 0},
+    {"event periodic cells", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_CELLS,
+     DS_PLACEMENT_RANDOM, 0},
+    {"event periodic brute", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_BRUTE,
+     DS_PLACEMENT_RANDOM, 0},
+    {"event periodic cells, lattice", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC,
+     DS_BROADPHASE_CELLS, DS_PLACEMENT_LATTICE, 0},
+    {"event periodic cells, species", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC,
+     DS_BROADPHASE_CELLS, DS_PLACEMENT_RANDOM, 1},
+    {"event walls cells, per disk", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_WALLS,
+     DS_BROADPHASE_CELLS, DS_PLACEMENT_RANDOM, 2},
+    {"step channel strips, species", DS_INTEGRATOR_TIME_STEP, DS_BOUNDARY_CHANNEL,
+     DS_BROADPHASE_STRIPS, DS_PLACEMENT_RANDOM, 1},
+    {"event channel cells, species", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_CHANNEL,
+     DS_BROADPHASE_CELLS, DS_PLACEMENT_LATTICE, 1},
 };
 #define CONFIGS (sizeof configs / sizeof configs[0])
 
@@ -134,7 +154,7 @@ static ds_params params_of(const config *c)
 {
     /* Area fraction 0.11, each disk moving 1 (a 30th of its radius) a
      * step: some 20 collisions in GO_ON steps. */
-    ds_params p = ds_default_params(N_DISKS, 30.0);
+    ds_params p = ds_params_default(N_DISKS, 30.0);
     p.dt = 0.01;
     p.integrator = c->integrator;
     p.boundary = c->boundary;
@@ -146,7 +166,8 @@ static ds_params params_of(const config *c)
 
 /* The mixture of c: 1:1.4 in two species, or radii and masses disk by
  * disk. */
-static ds_species kinds[2] = {{N_DISKS / 2, 25.0, 0.0}, {N_DISKS - N_DISKS / 2, 35.0, 0.0}};
+static ds_species kinds[2] = {{N_DISKS / 2, 25.0, 0.0, NULL},
+                              {N_DISKS - N_DISKS / 2, 35.0, 0.0, NULL}};
 static double radii[N_DISKS], masses[N_DISKS];
 static ds_mixture mixture_of(const config *c)
 {
@@ -169,9 +190,9 @@ static ds_status create(const config *c, ds_sim **out)
 {
     const ds_params p = params_of(c);
     if (!c->mixture)
-        return ds_create(&p, out);
+        return ds_sim_create(&p, NULL, out, NULL);
     const ds_mixture m = mixture_of(c);
-    return ds_create_mixture(&p, &m, out);
+    return ds_sim_create(&p, &m, out, NULL);
 }
 
 static ds_sim *created(const config *c)
@@ -189,18 +210,18 @@ typedef struct bytes {
 
 static bytes saved(const ds_sim *sim)
 {
-    bytes b = {NULL, ds_state_size(sim)};
+    bytes b = {NULL, ds_checkpoint_get_size(sim)};
     b.p = malloc(b.len);
     assert_non_null(b.p);
-    assert_int_equal(ds_format_state(sim, b.p, b.len, NULL), DS_OK);
+    assert_int_equal(ds_checkpoint_format(sim, b.p, b.len, NULL, NULL), DS_OK);
     return b;
 }
 
 static ds_sim *loaded(bytes b)
 {
     ds_sim *sim = NULL;
-    ds_state_error err;
-    if (ds_parse_state(b.p, b.len, &sim, &err) != DS_OK)
+    ds_error err;
+    if (ds_checkpoint_parse(b.p, b.len, &sim, &err) != DS_OK)
         fail_msg("a checkpoint of %zu bytes was refused: %s", b.len, err.message);
     return sim;
 }
@@ -220,15 +241,15 @@ static shown show(const ds_sim *sim)
 {
     shown s;
     memset(&s, 0, sizeof s);
-    s.n = ds_count(sim);
+    s.n = ds_sim_get_count(sim);
     assert_true(s.n <= N_DISKS);
-    assert_int_equal(ds_get_all(sim, s.disk), DS_OK);
-    assert_int_equal(ds_get_radii(sim, s.radius, NULL), DS_OK);
-    assert_int_equal(ds_get_images(sim, s.image), DS_OK);
-    s.steps = ds_steps(sim);
-    s.collisions = ds_collision_count(sim);
-    s.growth = ds_growth_state_of(sim);
-    s.area_fraction = ds_area_fraction(sim);
+    assert_int_equal(ds_sim_get_disks(sim, s.disk, NULL), DS_OK);
+    assert_int_equal(ds_sim_get_radii(sim, s.radius, NULL), DS_OK);
+    assert_int_equal(ds_sim_get_images(sim, s.image, NULL), DS_OK);
+    s.steps = ds_sim_get_steps(sim);
+    s.collisions = ds_sim_get_collision_count(sim);
+    s.growth = ds_sim_get_growth_state(sim);
+    s.area_fraction = ds_sim_get_area_fraction(sim);
     return s;
 }
 
@@ -254,7 +275,7 @@ static void assert_shows(const ds_sim *sim, const shown *expected, const char *w
 static void assert_goes_on_as(ds_sim *sim, uint64_t steps, const shown *expected, const char *what,
                               unsigned long k)
 {
-    ds_run(sim, steps);
+    ds_sim_run(sim, steps, NULL);
     assert_shows(sim, expected, what, k);
 }
 
@@ -274,9 +295,9 @@ static shown shown_after(const ds_sim *sim, uint64_t steps)
     bytes b = saved(sim);
     ds_sim *copy = loaded(b);
     free(b.p);
-    ds_run(copy, steps);
+    ds_sim_run(copy, steps, NULL);
     const shown s = show(copy);
-    ds_destroy(copy);
+    ds_sim_destroy(copy);
     return s;
 }
 
@@ -291,28 +312,29 @@ static shown shown_after(const ds_sim *sim, uint64_t steps)
 static void assert_sound(const ds_sim *sim, const char *what, unsigned long k)
 {
     const shown s = show(sim);
-    const double bx = ds_box(sim), by = ds_box_y(sim);
-    const int periodic = ds_boundary_used(sim) == DS_PERIODIC;
+    const double bx = ds_sim_get_box_width(sim), by = ds_sim_get_box_height(sim);
+    const ds_boundary boundary = ds_sim_get_boundary(sim);
+    const int px = boundary != DS_BOUNDARY_WALLS, py = boundary == DS_BOUNDARY_PERIODIC;
     const double past = 1e-9 * fmax(bx, by); /* a centre shown a hair past its wall turn */
     for (size_t i = 0; i < s.n; ++i) {
         const ds_disk d = s.disk[i];
         const double r = s.radius[i];
-        const int inside = periodic ? d.x >= 0.0 && d.x < bx && d.y >= 0.0 && d.y < by
-                                    : d.x >= r - past && d.x <= bx - r + past && d.y >= r - past &&
-                                          d.y <= by - r + past;
+        const int inside =
+            (px ? d.x >= 0.0 && d.x < bx : d.x >= r - past && d.x <= bx - r + past) &&
+            (py ? d.y >= 0.0 && d.y < by : d.y >= r - past && d.y <= by - r + past);
         if (!isfinite(d.vx) || !isfinite(d.vy) || !inside)
             fail_msg("%s, allocation %lu failing: disk %zu at (%g, %g) is not in the box", what, k,
                      i, d.x, d.y);
     }
-    if (ds_integrator_used(sim) != DS_EVENT_DRIVEN)
+    if (ds_sim_get_integrator(sim) != DS_INTEGRATOR_EVENT_DRIVEN)
         return; /* the time step resolves its overlaps a step late */
     for (size_t i = 0; i < s.n; ++i)
         for (size_t j = i + 1; j < s.n; ++j) {
             double dx = s.disk[j].x - s.disk[i].x, dy = s.disk[j].y - s.disk[i].y;
-            if (periodic) {
+            if (px)
                 dx -= bx * round(dx / bx);
+            if (py)
                 dy -= by * round(dy / by);
-            }
             const double gap = sqrt(dx * dx + dy * dy) / (s.radius[i] + s.radius[j]) - 1.0;
             if (gap < -1e-9)
                 fail_msg("%s, allocation %lu failing: disks %zu and %zu overlap by %g", what, k, i,
@@ -324,7 +346,7 @@ static void assert_sound(const ds_sim *sim, const char *what, unsigned long k)
 /* Creation                                                             */
 /* ------------------------------------------------------------------ */
 
-/* The k-th allocation of ds_create (or ds_create_mixture) fails, for
+/* The k-th allocation of ds_sim_create (or ds_sim_create) fails, for
  * every k, alone or with the rest: DS_ERR_NOMEM and no simulation, or the
  * simulation of a creation without failure (the time step's sort has an
  * in-place fallback), which then runs the same to the bit. */
@@ -335,12 +357,12 @@ static void test_creation_survives_every_failed_allocation(void **state)
     for (size_t c = 0; c < CONFIGS; ++c) {
         ds_sim *ref = created(&configs[c]);
         const shown expected = shown_after(ref, GO_ON);
-        ds_destroy(ref);
+        ds_sim_destroy(ref);
         arm(0, 0);
         ds_sim *sim = NULL;
         assert_int_equal(create(&configs[c], &sim), DS_OK);
         const unsigned long calls = calls_counted();
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         for (int persistent = 0; persistent <= 1; ++persistent)
             for (unsigned long k = 1; k <= calls; ++k) {
                 sim = (ds_sim *)&not_null; /* the refusal must clear it */
@@ -353,13 +375,13 @@ static void test_creation_survives_every_failed_allocation(void **state)
                 }
                 assert_int_equal(st, DS_OK);
                 assert_goes_on_as(sim, GO_ON, &expected, configs[c].name, k);
-                ds_destroy(sim);
+                ds_sim_destroy(sim);
             }
         print_message("%-32s create: %lu allocations\n", configs[c].name, calls);
     }
 }
 
-/* A run of a simulation that does not grow allocates nothing: ds_run
+/* A run of a simulation that does not grow allocates nothing: ds_sim_run
  * returns no status, and needs none. */
 static void test_a_plain_run_allocates_nothing(void **state)
 {
@@ -367,42 +389,43 @@ static void test_a_plain_run_allocates_nothing(void **state)
     for (size_t c = 0; c < CONFIGS; ++c) {
         ds_sim *sim = created(&configs[c]);
         arm(0, 0);
-        ds_run(sim, 200);
+        ds_sim_run(sim, 200, NULL);
         assert_int_equal(calls_counted(), 0);
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
     }
 }
 
 /* Nor does predicting every disk again, which growth does at each
- * window, and ds_set and ds_scale_velocities and a new ds_set_growth do
+ * window, and ds_sim_set_disk and ds_sim_scale_velocities and a new ds_sim_set_growth do
  * while it grows: none of them can fail. (Brute force's one cell never
  * needs a new state with wider cells.) */
 static void test_predicting_everyone_again_allocates_nothing(void **state)
 {
     (void)state;
-    const config c = {"event periodic brute", DS_EVENT_DRIVEN, DS_PERIODIC,
-                      DS_BRUTE_FORCE,         DS_RANDOM,       0};
+    const config c = {"event periodic brute", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC,
+                      DS_BROADPHASE_BRUTE,    DS_PLACEMENT_RANDOM,        0};
     ds_sim *sim = created(&c);
-    assert_int_equal(ds_set_growth(sim, 0.05, 0.5, 0.0), DS_OK);
+    assert_int_equal(ds_sim_set_growth(sim, 0.05, 0.5, 0.0, NULL), DS_OK);
     arm(0, 0);
-    ds_run(sim, 2000);                   /* to about 0.4, through windows of 2 n collisions */
-    assert_true(ds_growth_z(sim) > 1.0); /* a window was watched */
-    assert_int_equal(ds_set(sim, 0, ds_get(sim, 0)), DS_OK);
-    assert_int_equal(ds_scale_velocities(sim, 1.01), DS_OK);
-    assert_int_equal(ds_set_growth(sim, 0.04, 0.5, 0.0), DS_OK);
-    ds_run(sim, 10);
+    ds_sim_run(sim, 2000, NULL); /* to about 0.4, through windows of 2 n collisions */
+    assert_true(ds_sim_get_growth_z(sim) > 1.0); /* a window was watched */
+    assert_int_equal(ds_sim_set_disk(sim, 0, ds_sim_get_disk(sim, 0), NULL), DS_OK);
+    assert_int_equal(ds_sim_scale_velocities(sim, 1.01, NULL), DS_OK);
+    assert_int_equal(ds_sim_set_growth(sim, 0.04, 0.5, 0.0, NULL), DS_OK);
+    ds_sim_run(sim, 10, NULL);
     assert_int_equal(calls_counted(), 0);
-    assert_int_equal(ds_growth_state_of(sim), DS_GROWING);
+    assert_int_equal(ds_sim_get_growth_state(sim), DS_GROWTH_GROWING);
     print_message("a growing run: %llu collisions, area fraction %.3f\n",
-                  (unsigned long long)ds_collision_count(sim), ds_area_fraction(sim));
-    ds_destroy(sim);
+                  (unsigned long long)ds_sim_get_collision_count(sim),
+                  ds_sim_get_area_fraction(sim));
+    ds_sim_destroy(sim);
 }
 
 /* ------------------------------------------------------------------ */
 /* Checkpoints                                                          */
 /* ------------------------------------------------------------------ */
 
-/* ds_parse_state and ds_load_state with the k-th allocation failing:
+/* ds_checkpoint_parse and ds_checkpoint_load with the k-th allocation failing:
  * DS_ERR_NOMEM and no simulation, or the simulation saved; for every
  * configuration, growing or not. */
 static void check_loading(ds_sim *source, const char *what)
@@ -414,20 +437,20 @@ static void check_loading(ds_sim *source, const char *what)
     assert_int_equal(fwrite(b.p, 1, b.len, f), b.len);
     for (int from_file = 0; from_file <= 1; ++from_file) {
         ds_sim *sim = NULL;
-        ds_state_error err;
+        ds_error err;
         rewind(f);
         arm(0, 0);
-        assert_int_equal(from_file ? ds_load_state(f, &sim, &err)
-                                   : ds_parse_state(b.p, b.len, &sim, &err),
+        assert_int_equal(from_file ? ds_checkpoint_load(f, &sim, &err)
+                                   : ds_checkpoint_parse(b.p, b.len, &sim, &err),
                          DS_OK);
         const unsigned long calls = calls_counted();
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         for (int persistent = 0; persistent <= 1; ++persistent)
             for (unsigned long k = 1; k <= calls; ++k) {
                 rewind(f);
                 arm(k, persistent);
-                const ds_status st = from_file ? ds_load_state(f, &sim, &err)
-                                               : ds_parse_state(b.p, b.len, &sim, &err);
+                const ds_status st = from_file ? ds_checkpoint_load(f, &sim, &err)
+                                               : ds_checkpoint_parse(b.p, b.len, &sim, &err);
                 assert_true(disarm());
                 if (st == DS_ERR_NOMEM) {
                     assert_null(sim);
@@ -436,10 +459,10 @@ static void check_loading(ds_sim *source, const char *what)
                 }
                 assert_int_equal(st, DS_OK);
                 assert_goes_on_as(sim, GO_ON, &expected, what, k);
-                ds_destroy(sim);
+                ds_sim_destroy(sim);
             }
         print_message("%-32s %s: %lu allocations\n", what,
-                      from_file ? "ds_load_state" : "ds_parse_state", calls);
+                      from_file ? "ds_checkpoint_load" : "ds_checkpoint_parse", calls);
     }
     fclose(f);
     free(b.p);
@@ -450,19 +473,19 @@ static void test_loading_a_checkpoint_survives_every_failed_allocation(void **st
     (void)state;
     for (size_t c = 0; c < CONFIGS; ++c) {
         ds_sim *sim = created(&configs[c]);
-        ds_run(sim, 7);
+        ds_sim_run(sim, 7, NULL);
         check_loading(sim, configs[c].name);
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
     }
 }
 
 /* ------------------------------------------------------------------ */
-/* ds_set_all                                                           */
+/* ds_sim_set_disks                                                           */
 /* ------------------------------------------------------------------ */
 
-/* ds_set_all with the k-th allocation failing: DS_ERR_NOMEM with the
+/* ds_sim_set_disks with the k-th allocation failing: DS_ERR_NOMEM with the
  * reason, and the simulation goes on as if it had not been called; or
- * it goes on as after a ds_set_all without failure. The new state is the
+ * it goes on as after a ds_sim_set_disks without failure. The new state is the
  * simulation's own some steps on (one that fits its box and radii). */
 static void test_set_all_survives_every_failed_allocation(void **state)
 {
@@ -470,27 +493,27 @@ static void test_set_all_survives_every_failed_allocation(void **state)
     for (size_t c = 0; c < CONFIGS; ++c) {
         ds_sim *sim = created(&configs[c]);
         ds_sim *later = created(&configs[c]);
-        ds_run(later, 50);
+        ds_sim_run(later, 50, NULL);
         ds_disk next[N_DISKS];
-        assert_int_equal(ds_get_all(later, next), DS_OK);
-        ds_destroy(later);
-        ds_run(sim, 5);
+        assert_int_equal(ds_sim_get_disks(later, next, NULL), DS_OK);
+        ds_sim_destroy(later);
+        ds_sim_run(sim, 5, NULL);
         bytes b = saved(sim);
         const shown unchanged = shown_after(sim, GO_ON);
-        assert_int_equal(ds_set_all(sim, next, NULL), DS_OK);
+        assert_int_equal(ds_sim_set_disks(sim, next, NULL), DS_OK);
         const shown set = shown_after(sim, GO_ON);
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         sim = loaded(b);
         arm(0, 0);
-        assert_int_equal(ds_set_all(sim, next, NULL), DS_OK);
+        assert_int_equal(ds_sim_set_disks(sim, next, NULL), DS_OK);
         const unsigned long calls = calls_counted();
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         for (int persistent = 0; persistent <= 1; ++persistent)
             for (unsigned long k = 1; k <= calls; ++k) {
                 sim = loaded(b);
-                ds_state_error err;
+                ds_error err;
                 arm(k, persistent);
-                const ds_status st = ds_set_all(sim, next, &err);
+                const ds_status st = ds_sim_set_disks(sim, next, &err);
                 assert_true(disarm());
                 if (st == DS_ERR_NOMEM) {
                     assert_true(err.message[0] != '\0');
@@ -500,10 +523,10 @@ static void test_set_all_survives_every_failed_allocation(void **state)
                     assert_int_equal(st, DS_OK);
                     assert_goes_on_as(sim, GO_ON, &set, configs[c].name, k);
                 }
-                ds_destroy(sim);
+                ds_sim_destroy(sim);
             }
         free(b.p);
-        print_message("%-32s ds_set_all: %lu allocations\n", configs[c].name, calls);
+        print_message("%-32s ds_sim_set_disks: %lu allocations\n", configs[c].name, calls);
     }
 }
 
@@ -514,16 +537,19 @@ static void test_set_all_survives_every_failed_allocation(void **state)
 /* Growth runs event-driven in a periodic box: of one radius (which
  * growth gives an array of radii) and a mixture. */
 static const config growing[] = {
-    {"event periodic cells", DS_EVENT_DRIVEN, DS_PERIODIC, DS_CELLS, DS_RANDOM, 0},
-    {"event periodic brute", DS_EVENT_DRIVEN, DS_PERIODIC, DS_BRUTE_FORCE, DS_RANDOM, 0},
-    {"event periodic cells, species", DS_EVENT_DRIVEN, DS_PERIODIC, DS_CELLS, DS_RANDOM, 1},
+    {"event periodic cells", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_CELLS,
+     DS_PLACEMENT_RANDOM, 0},
+    {"event periodic brute", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC, DS_BROADPHASE_BRUTE,
+     DS_PLACEMENT_RANDOM, 0},
+    {"event periodic cells, species", DS_INTEGRATOR_EVENT_DRIVEN, DS_BOUNDARY_PERIODIC,
+     DS_BROADPHASE_CELLS, DS_PLACEMENT_RANDOM, 1},
 };
 #define GROWING (sizeof growing / sizeof growing[0])
 #define RATE 0.5        /* relative, per time unit: radii 5% larger in 0.1 */
 #define UNTIL_ETA 0.3   /* from about 0.11, at t = 1.3 */
 #define GROWTH_STEPS 40 /* at dt 0.01: three or four new states for wider cells */
 
-/* ds_set_growth with the k-th allocation failing: DS_ERR_NOMEM and the
+/* ds_sim_set_growth with the k-th allocation failing: DS_ERR_NOMEM and the
  * simulation goes on as if it had not been asked, or it grows as without
  * the failure. */
 static void test_starting_growth_survives_every_failed_allocation(void **state)
@@ -531,23 +557,23 @@ static void test_starting_growth_survives_every_failed_allocation(void **state)
     (void)state;
     for (size_t c = 0; c < GROWING; ++c) {
         ds_sim *sim = created(&growing[c]);
-        ds_run(sim, 5);
+        ds_sim_run(sim, 5, NULL);
         bytes b = saved(sim);
         const shown unchanged = shown_after(sim, GO_ON);
-        assert_int_equal(ds_set_growth(sim, RATE, UNTIL_ETA, 0.0), DS_OK);
+        assert_int_equal(ds_sim_set_growth(sim, RATE, UNTIL_ETA, 0.0, NULL), DS_OK);
         const shown grown = shown_after(sim, GO_ON);
-        assert_int_equal(grown.growth, DS_GROWING);
-        ds_destroy(sim);
+        assert_int_equal(grown.growth, DS_GROWTH_GROWING);
+        ds_sim_destroy(sim);
         sim = loaded(b);
         arm(0, 0);
-        assert_int_equal(ds_set_growth(sim, RATE, UNTIL_ETA, 0.0), DS_OK);
+        assert_int_equal(ds_sim_set_growth(sim, RATE, UNTIL_ETA, 0.0, NULL), DS_OK);
         const unsigned long calls = calls_counted();
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         for (int persistent = 0; persistent <= 1; ++persistent)
             for (unsigned long k = 1; k <= calls; ++k) {
                 sim = loaded(b);
                 arm(k, persistent);
-                const ds_status st = ds_set_growth(sim, RATE, UNTIL_ETA, 0.0);
+                const ds_status st = ds_sim_set_growth(sim, RATE, UNTIL_ETA, 0.0, NULL);
                 assert_true(disarm());
                 if (st == DS_ERR_NOMEM) {
                     assert_unchanged(sim, b, growing[c].name, k);
@@ -556,73 +582,84 @@ static void test_starting_growth_survives_every_failed_allocation(void **state)
                     assert_int_equal(st, DS_OK);
                     assert_goes_on_as(sim, GO_ON, &grown, growing[c].name, k);
                 }
-                ds_destroy(sim);
+                ds_sim_destroy(sim);
             }
         free(b.p);
-        print_message("%-32s ds_set_growth: %lu allocations\n", growing[c].name, calls);
+        print_message("%-32s ds_sim_set_growth: %lu allocations\n", growing[c].name, calls);
     }
 }
 
 /* A growing run makes its state again with wider cells as the radii
  * grow; with the k-th allocation of the run failing, growth stops at that
- * step's end (the cells could not hold the contacts of the next), says
- * so, and the run goes on at fixed radii: every step taken, no disk out
- * of the box or overlapping, the heat out (the kinetic energy of the
- * call, to rounding: the energy growth tracks through the collisions
- * since it last measured it, 1e-16 each), the energy conserved from then
- * on (elastic collisions, 1e-12 over the run), and its checkpoint going
- * on as it does. Or the run is the one without the failure. Growing runs
- * are saved and loaded with the same failures (the growth's part of a
- * checkpoint). */
+ * step's end (the cells could not hold the contacts of the next), and so
+ * does the run: DS_ERR_NOMEM, err naming the steps and the step it
+ * stopped after, every step to there taken. The simulation is then sound
+ * (no disk out of the box or overlapping), the heat out (the kinetic
+ * energy of the call, to rounding: the energy growth tracks through the
+ * collisions since it last measured it, 1e-16 each), and it runs on at
+ * fixed radii, the energy conserved from then on (elastic collisions,
+ * 1e-12 over the run), its checkpoint going on as it does. Or the run is
+ * the one without the failure. Growing runs are saved and loaded with the
+ * same failures (the growth's part of a checkpoint). */
 static void test_a_growing_run_survives_every_failed_allocation(void **state)
 {
     (void)state;
     for (size_t c = 0; c < GROWING; ++c) {
         ds_sim *sim = created(&growing[c]);
-        ds_run(sim, 5);
-        const double energy = ds_kinetic_energy(sim);
-        assert_int_equal(ds_set_growth(sim, RATE, UNTIL_ETA, 0.0), DS_OK);
+        ds_sim_run(sim, 5, NULL);
+        const double energy = ds_sim_get_kinetic_energy(sim);
+        assert_int_equal(ds_sim_set_growth(sim, RATE, UNTIL_ETA, 0.0, NULL), DS_OK);
         bytes b = saved(sim);
         const shown expected = shown_after(sim, GROWTH_STEPS);
-        assert_int_equal(expected.growth, DS_GROWING);
+        assert_int_equal(expected.growth, DS_GROWTH_GROWING);
         arm(0, 0);
-        ds_run(sim, GROWTH_STEPS);
+        assert_int_equal(ds_sim_run(sim, GROWTH_STEPS, NULL), DS_OK);
         const unsigned long calls = calls_counted();
         unsigned long stopped = 0;
         /* The run made its state again (one cell, brute force, never needs to). */
-        assert_true(calls > 0 || growing[c].broadphase == DS_BRUTE_FORCE);
+        assert_true(calls > 0 || growing[c].broadphase == DS_BROADPHASE_BRUTE);
         check_loading(sim, growing[c].name); /* a growing run's checkpoint */
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         for (int persistent = 0; persistent <= 1; ++persistent)
             for (unsigned long k = 1; k <= calls; ++k) {
                 sim = loaded(b);
-                const uint64_t steps = ds_steps(sim);
+                const uint64_t steps = ds_sim_get_steps(sim);
                 arm(k, persistent);
-                ds_run(sim, GROWTH_STEPS);
+                ds_error err;
+                const ds_status st = ds_sim_run(sim, GROWTH_STEPS, &err);
                 assert_true(disarm());
-                assert_int_equal(ds_steps(sim), steps + GROWTH_STEPS);
                 assert_sound(sim, growing[c].name, k);
-                if (ds_growth_state_of(sim) == DS_GROWING) {
+                if (st == DS_OK) {
+                    assert_int_equal(ds_sim_get_steps(sim), steps + GROWTH_STEPS);
+                    assert_int_equal(ds_sim_get_growth_state(sim), DS_GROWTH_GROWING);
                     assert_shows(sim, &expected, growing[c].name, k);
-                    ds_destroy(sim);
+                    ds_sim_destroy(sim);
                     continue;
                 }
-                assert_int_equal(ds_growth_state_of(sim), DS_GROWTH_NONE);
+                assert_int_equal(st, DS_ERR_NOMEM);
+                assert_int_equal(err.status, DS_ERR_NOMEM);
+                assert_string_equal(err.field, "steps");
+                const uint64_t done = ds_sim_get_steps(sim);
+                assert_true(done > steps && done <= steps + GROWTH_STEPS);
+                assert_true(err.value == (double)done);
+                assert_int_equal(ds_sim_get_growth_state(sim), DS_GROWTH_NONE);
                 ++stopped;
-                assert_true(fabs(ds_kinetic_energy(sim) / energy - 1.0) < 1e-12);
-                const double eta = ds_area_fraction(sim);
-                /* A state a checkpoint holds, and goes on from to the bit. */
-                const shown through_checkpoint = shown_after(sim, 300);
-                ds_run(sim, 300);
+                assert_true(fabs(ds_sim_get_kinetic_energy(sim) / energy - 1.0) < 1e-12);
+                const double eta = ds_sim_get_area_fraction(sim);
+                /* It runs on, and is a state a checkpoint holds and goes
+                 * on from to the bit. */
+                const uint64_t rest = steps + GROWTH_STEPS - done + 300;
+                const shown through_checkpoint = shown_after(sim, rest);
+                assert_int_equal(ds_sim_run(sim, rest, NULL), DS_OK);
                 assert_shows(sim, &through_checkpoint, growing[c].name, k);
                 assert_sound(sim, growing[c].name, k);
-                assert_true(fabs(ds_kinetic_energy(sim) / energy - 1.0) < 1e-12);
-                assert_true(ds_area_fraction(sim) == eta);
-                ds_destroy(sim);
+                assert_true(fabs(ds_sim_get_kinetic_energy(sim) / energy - 1.0) < 1e-12);
+                assert_true(ds_sim_get_area_fraction(sim) == eta);
+                ds_sim_destroy(sim);
             }
         free(b.p);
         print_message("%-32s a growing run of %d steps: %lu allocations, %lu of %lu failures "
-                      "stopped growth\n",
+                      "stopped growth and the run\n",
                       growing[c].name, GROWTH_STEPS, calls, stopped, 2 * calls);
     }
 }

@@ -12,7 +12,7 @@
  * rounding. */
 #include "test_util.h"
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "timestep/broad_phase.h"
 
 /* ------------------------------------------------------------ helpers */
@@ -65,7 +65,7 @@ static pair_list pairs_found(ds_sim *sim, ds_broadphase bp)
 static size_t assert_same_pairs_as_brute_force(ds_sim *sim)
 {
     pair_list got = pairs_found(sim, broad_phase_of(sim)->kind);
-    pair_list want = pairs_found(sim, DS_BRUTE_FORCE);
+    pair_list want = pairs_found(sim, DS_BROADPHASE_BRUTE);
     assert_int_equal(got.count, want.count);
     for (size_t k = 0; k < want.count; ++k)
         assert_true(got.pairs[k] == want.pairs[k]); /* also: no pair twice */
@@ -81,6 +81,23 @@ typedef enum layout {
     CLUSTERED    /* all in a small square: every disk overlaps ~20 */
 } layout;
 
+/* Whether sim's box is periodic along x (periodic box, channel) and
+ * along y (periodic box only). */
+static int periodic_x(const ds_sim *sim) { return ds_sim_get_boundary(sim) != DS_BOUNDARY_WALLS; }
+static int periodic_y(const ds_sim *sim)
+{
+    return ds_sim_get_boundary(sim) == DS_BOUNDARY_PERIODIC;
+}
+
+/* A separation taken to its nearest image along each periodic axis. */
+static void nearest_image(const ds_sim *sim, double *dx, double *dy)
+{
+    if (periodic_x(sim))
+        *dx = ds_nearest(*dx, ds_sim_get_box_width(sim));
+    if (periodic_y(sim))
+        *dy = ds_nearest(*dy, ds_sim_get_box_height(sim));
+}
+
 /* A periodic coordinate brought into [0, side). */
 static double wrapped(double u, double side)
 {
@@ -89,22 +106,23 @@ static double wrapped(double u, double side)
     return u < side ? u : 0.0;
 }
 
-/* Places every disk by ds_set (velocities random, speed ~100). With
- * walls the centres range over [R, box - R] x [R, box_y - R]; in a
- * periodic box over [0, box) x [0, box_y), the edges being the seams,
- * and the clusters sit on the corner, across both seams. */
+/* Places every disk by ds_sim_set_disk (velocities random, speed ~100).
+ * Between walls the centres range over [R, side - R], along a periodic
+ * axis over [0, side), the edges being the seams; the clusters sit on the
+ * corner, across the seams, in a channel on its seam at mid-height. */
 static void scatter(ds_sim *sim, layout how, ds_rng *rng)
 {
-    const int periodic = ds_boundary_used(sim) == DS_PERIODIC;
-    const double r = ds_radius(sim), box = ds_box(sim), box_y = ds_box_y(sim);
-    const double lo = periodic ? 0.0 : r, hi = periodic ? nextafter(box, 0.0) : box - r;
-    const double hi_y = periodic ? nextafter(box_y, 0.0) : box_y - r;
+    const int px = periodic_x(sim), py = periodic_y(sim);
+    const double r = ds_sim_get_radius(sim), box = ds_sim_get_box_width(sim),
+                 box_y = ds_sim_get_box_height(sim);
+    const double lo = px ? 0.0 : r, hi = px ? nextafter(box, 0.0) : box - r;
+    const double lo_y = py ? 0.0 : r, hi_y = py ? nextafter(box_y, 0.0) : box_y - r;
     /* Clusters sized for ~20 overlapping neighbours per disk. */
-    const double spread = 3.0 * r * sqrt((double)ds_count(sim) / 50.0 + 1.0);
-    for (size_t i = 0; i < ds_count(sim); ++i) {
+    const double spread = 3.0 * r * sqrt((double)ds_sim_get_count(sim) / 50.0 + 1.0);
+    for (size_t i = 0; i < ds_sim_get_count(sim); ++i) {
         ds_disk d;
         d.x = ds_rng_uniform(rng, lo, hi);
-        d.y = ds_rng_uniform(rng, lo, hi_y);
+        d.y = ds_rng_uniform(rng, lo_y, hi_y);
         switch (how) {
         case UNIFORM:
             break;
@@ -112,25 +130,26 @@ static void scatter(ds_sim *sim, layout how, ds_rng *rng)
             if (ds_rng_next(rng) & 1u)
                 d.x = (ds_rng_next(rng) & 1u) ? lo : hi;
             if (ds_rng_next(rng) & 1u)
-                d.y = (ds_rng_next(rng) & 1u) ? lo : hi_y;
+                d.y = (ds_rng_next(rng) & 1u) ? lo_y : hi_y;
             break;
         case COARSE_GRID:
             d.x = lo + 0.5 * r * floor((d.x - lo) / (0.5 * r));
-            d.y = lo + 0.5 * r * floor((d.y - lo) / (0.5 * r));
+            d.y = lo_y + 0.5 * r * floor((d.y - lo_y) / (0.5 * r));
             break;
         case CLUSTERED:
-            if (periodic) {
+            if (px)
                 d.x = wrapped(ds_rng_uniform(rng, -spread, spread), box);
-                d.y = wrapped(ds_rng_uniform(rng, -spread, spread), box_y);
-            } else {
+            else
                 d.x = fmin(fmax(0.5 * box + ds_rng_uniform(rng, -spread, spread), lo), hi);
-                d.y = fmin(fmax(0.5 * box_y + ds_rng_uniform(rng, -spread, spread), lo), hi_y);
-            }
+            if (py)
+                d.y = wrapped(ds_rng_uniform(rng, -spread, spread), box_y);
+            else
+                d.y = fmin(fmax(0.5 * box_y + ds_rng_uniform(rng, -spread, spread), lo_y), hi_y);
             break;
         }
         d.vx = ds_rng_uniform(rng, -100.0, 100.0);
         d.vy = ds_rng_uniform(rng, -100.0, 100.0);
-        assert_int_equal(ds_set(sim, i, d), DS_OK);
+        assert_int_equal(ds_sim_set_disk(sim, i, d, NULL), DS_OK);
     }
 }
 
@@ -141,12 +160,15 @@ static const struct {
 } CASES[] = {{1, 5.0},    {2, 300.0},  {9, 5.0},     {50, 40.0}, {400, 5.0},
              {400, 20.0}, {1000, 1.0}, {1500, 12.0}, {2000, 3.0}};
 
-/* The boxes every broad phase is checked in: the seed's, and periodic
- * ones, square and rectangular (both taller and wider than square). */
+/* The boxes every broad phase is checked in: the seed's, periodic ones,
+ * square and rectangular (both taller and wider than square), and
+ * channels (periodic along x only), square and wide. */
 static const struct {
     ds_boundary boundary;
     double box_y;
-} BOXES[] = {{DS_WALLS, 0.0}, {DS_PERIODIC, 0.0}, {DS_PERIODIC, 700.0}, {DS_PERIODIC, 1300.0}};
+} BOXES[] = {{DS_BOUNDARY_WALLS, 0.0},      {DS_BOUNDARY_PERIODIC, 0.0},
+             {DS_BOUNDARY_PERIODIC, 700.0}, {DS_BOUNDARY_PERIODIC, 1300.0},
+             {DS_BOUNDARY_CHANNEL, 0.0},    {DS_BOUNDARY_CHANNEL, 700.0}};
 
 static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
 {
@@ -154,19 +176,20 @@ static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
     ds_rng_seed(&rng, 42 + (uint64_t)bp + 100 * box);
     size_t total = 0;
     for (size_t c = 0; c < sizeof CASES / sizeof CASES[0]; ++c) {
-        ds_params p = ds_default_params(CASES[c].n, 1e-3);
+        ds_params p = ds_params_default(CASES[c].n, 1e-3);
         p.seed = 7 + c;
         p.broadphase = bp;
         p.boundary = BOXES[box].boundary;
         p.box_y = BOXES[box].box_y;
         ds_sim *sim = NULL;
-        assert_int_equal(ds_create(&p, &sim), DS_OK);
-        /* ds_create refuses overlapping packings; these tests want any
+        assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+        /* ds_sim_create refuses overlapping packings; these tests want any
          * configuration, so create small disks and widen them here (a
          * periodic box takes R below a quarter of its shorter side). The
          * broad phase's geometry depends on R: it is made again. */
-        const double most =
-            p.boundary == DS_PERIODIC ? 0.24 * fmin(ds_box(sim), ds_box_y(sim)) : 1e9;
+        const double most = p.boundary != DS_BOUNDARY_WALLS
+                                ? 0.24 * fmin(ds_sim_get_box_width(sim), ds_sim_get_box_height(sim))
+                                : 1e9;
         sim->world.radius = fmin(CASES[c].radius, most);
         ds_bp_destroy(broad_phase_of(sim));
         assert_int_equal(ds_bp_create(broad_phase_of(sim), bp, &sim->world, &sim->disks), DS_OK);
@@ -182,11 +205,11 @@ static void check_broad_phase_in(ds_broadphase bp, ds_scan scan, size_t box)
                 /* Let them move (and collide) from there: the broad phase
                  * now works from its previous order, as in a run. */
                 for (int s = 0; s < 3; ++s) {
-                    ds_run(sim, 7);
+                    ds_sim_run(sim, 7, NULL);
                     total += assert_same_pairs_as_brute_force(sim);
                 }
             }
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
     }
     assert_true(total > 10000); /* the cases are not all empty */
 }
@@ -211,20 +234,18 @@ static void check_broad_phase_periodic(ds_broadphase bp)
  * mixture's broad phase reports every pair within its largest diameter). */
 static int overlap(const ds_sim *sim, uint64_t a, uint64_t b)
 {
-    const ds_disk da = ds_get(sim, a), db = ds_get(sim, b);
+    const ds_disk da = ds_sim_get_disk(sim, a), db = ds_sim_get_disk(sim, b);
     double dx = db.x - da.x, dy = db.y - da.y;
-    if (ds_boundary_used(sim) == DS_PERIODIC) {
-        dx = ds_nearest(dx, ds_box(sim));
-        dy = ds_nearest(dy, ds_box_y(sim));
-    }
-    const double sigma = ds_radius_of(sim, a) + ds_radius_of(sim, b);
+    nearest_image(sim, &dx, &dy);
+    const ds_disks *d = &sim->disks;
+    const double sigma = d->r ? d->r[d->slot[a]] + d->r[d->slot[b]] : 2.0 * sim->world.radius;
     return dx * dx + dy * dy < sigma * sigma;
 }
 
 /* Whether some disk is in two of the pairs that overlap. */
 static int a_disk_is_in_two(const ds_sim *sim, const pair_list *list)
 {
-    unsigned char *pairs_of = calloc(ds_count(sim), 1);
+    unsigned char *pairs_of = calloc(ds_sim_get_count(sim), 1);
     assert_non_null(pairs_of);
     int twice = 0;
     for (size_t k = 0; k < list->count; ++k) {
@@ -248,14 +269,14 @@ static void assert_same_pair_lists(const pair_list *got, const pair_list *want)
 /* Every disk's position, velocity and images, to the bit. */
 static int same_disks(const ds_sim *a, const ds_sim *b)
 {
-    const size_t n = ds_count(a);
+    const size_t n = ds_sim_get_count(a);
     ds_disk *da = malloc(n * sizeof *da), *db = malloc(n * sizeof *db);
     int32_t *ia = malloc(2 * n * sizeof *ia), *ib = malloc(2 * n * sizeof *ib);
     assert_true(da && db && ia && ib);
-    assert_int_equal(ds_get_all(a, da), DS_OK);
-    assert_int_equal(ds_get_all(b, db), DS_OK);
-    assert_int_equal(ds_get_images(a, ia), DS_OK);
-    assert_int_equal(ds_get_images(b, ib), DS_OK);
+    assert_int_equal(ds_sim_get_disks(a, da, NULL), DS_OK);
+    assert_int_equal(ds_sim_get_disks(b, db, NULL), DS_OK);
+    assert_int_equal(ds_sim_get_images(a, ia, NULL), DS_OK);
+    assert_int_equal(ds_sim_get_images(b, ib, NULL), DS_OK);
     const int same = memcmp(da, db, n * sizeof *da) == 0 && memcmp(ia, ib, 2 * n * sizeof *ia) == 0;
     free(da);
     free(db);
@@ -272,12 +293,12 @@ static int same_disks(const ds_sim *a, const ds_sim *b)
  * twice that. */
 static void assert_same_counts_and_sums(const ds_sim *a, const ds_sim *b)
 {
-    assert_int_equal(ds_collision_count(a), ds_collision_count(b));
-    assert_int_equal(ds_wall_count(a), ds_wall_count(b));
-    const double terms = (double)(ds_count(b) + ds_collision_count(b));
-    const double e = ds_kinetic_energy(b), p = ds_virial_pressure(b);
-    assert_true(fabs(ds_kinetic_energy(a) - e) <= 2.0 * terms * DBL_EPSILON * e);
-    assert_true(fabs(ds_virial_pressure(a) - p) <= 2.0 * terms * DBL_EPSILON * p);
+    assert_int_equal(ds_sim_get_collision_count(a), ds_sim_get_collision_count(b));
+    assert_int_equal(ds_sim_get_wall_count(a), ds_sim_get_wall_count(b));
+    const double terms = (double)(ds_sim_get_count(b) + ds_sim_get_collision_count(b));
+    const double e = ds_sim_get_kinetic_energy(b), p = ds_sim_get_virial_pressure(b);
+    assert_true(fabs(ds_sim_get_kinetic_energy(a) - e) <= 2.0 * terms * DBL_EPSILON * e);
+    assert_true(fabs(ds_sim_get_virial_pressure(a) - p) <= 2.0 * terms * DBL_EPSILON * p);
 }
 
 typedef struct lockstep_case {
@@ -291,15 +312,15 @@ typedef struct lockstep_case {
 
 static ds_sim *create_case(const lockstep_case *c, ds_broadphase bp)
 {
-    ds_params p = ds_default_params(c->n, c->radius);
+    ds_params p = ds_params_default(c->n, c->radius);
     p.broadphase = bp;
     p.boundary = c->boundary;
     p.box_y = c->box_y;
-    const ds_species kinds[2] = {{c->n / 2, c->radius, 0.0},
-                                 {c->n - c->n / 2, 1.4 * c->radius, 0.0}};
+    const ds_species kinds[2] = {{c->n / 2, c->radius, 0.0, NULL},
+                                 {c->n - c->n / 2, 1.4 * c->radius, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create_mixture(&p, c->mixture ? &mixture : NULL, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, c->mixture ? &mixture : NULL, &sim, NULL), DS_OK);
     return sim;
 }
 
@@ -312,22 +333,22 @@ static ds_sim *create_case(const lockstep_case *c, ds_broadphase bp)
  * with a disk in two pairs. */
 static uint64_t run_in_lockstep(const lockstep_case *c)
 {
-    const ds_broadphase kinds[2] = {DS_SAP, DS_SAP_STRIPS};
-    ds_sim *brute = create_case(c, DS_BRUTE_FORCE);
+    const ds_broadphase kinds[2] = {DS_BROADPHASE_SAP, DS_BROADPHASE_STRIPS};
+    ds_sim *brute = create_case(c, DS_BROADPHASE_BRUTE);
     ds_sim *sweep[2] = {create_case(c, kinds[0]), create_case(c, kinds[1])};
     int same[2] = {1, 1};
     uint64_t twice = 0, pairs = 0;
     const uint64_t steps = quick_mode() ? c->steps / 10 : c->steps;
     for (uint64_t s = 0; s < steps && (same[0] || same[1]); ++s) {
-        ds_step(brute);
-        pair_list want = pairs_found(brute, DS_BRUTE_FORCE);
+        ds_sim_step(brute, NULL);
+        pair_list want = pairs_found(brute, DS_BROADPHASE_BRUTE);
         const int in_two = a_disk_is_in_two(brute, &want);
         twice += (uint64_t)in_two;
         pairs += want.count;
         for (int k = 0; k < 2; ++k) {
             if (!same[k])
                 continue;
-            ds_step(sweep[k]);
+            ds_sim_step(sweep[k], NULL);
             pair_list got = pairs_found(sweep[k], kinds[k]);
             assert_same_pair_lists(&got, &want);
             free(got.pairs);
@@ -340,39 +361,39 @@ static uint64_t run_in_lockstep(const lockstep_case *c)
         free(want.pairs);
     }
     assert_true(pairs > 0); /* the runs had collisions to compare */
-    ds_destroy(brute);
-    ds_destroy(sweep[0]);
-    ds_destroy(sweep[1]);
+    ds_sim_destroy(brute);
+    ds_sim_destroy(sweep[0]);
+    ds_sim_destroy(sweep[1]);
     return twice;
 }
 
 /* ------------------------------------------------------------ tests */
 
-/* With each block scan this CPU runs: the widest one, which ds_create
+/* With each block scan this CPU runs: the widest one, which ds_sim_create
  * picks, and the narrower ones a CPU without AVX-512 or AVX would run. */
 static void test_sap_finds_exactly_the_brute_force_pairs(void **state)
 {
     (void)state;
     for (int scan = DS_SCAN_PORTABLE; scan <= (int)ds_bp_widest_scan(); ++scan)
-        check_broad_phase(DS_SAP, (ds_scan)scan);
+        check_broad_phase(DS_BROADPHASE_SAP, (ds_scan)scan);
 }
 
 static void test_strips_find_exactly_the_brute_force_pairs(void **state)
 {
     (void)state;
-    check_broad_phase(DS_SAP_STRIPS, ds_bp_widest_scan());
+    check_broad_phase(DS_BROADPHASE_STRIPS, ds_bp_widest_scan());
 }
 
 static void test_sap_finds_the_nearest_image_pairs_in_periodic_boxes(void **state)
 {
     (void)state;
-    check_broad_phase_periodic(DS_SAP);
+    check_broad_phase_periodic(DS_BROADPHASE_SAP);
 }
 
 static void test_strips_find_the_nearest_image_pairs_in_periodic_boxes(void **state)
 {
     (void)state;
-    check_broad_phase_periodic(DS_SAP_STRIPS);
+    check_broad_phase_periodic(DS_BROADPHASE_STRIPS);
 }
 
 /* A long run at the seed's density: strips keep agreeing with brute force
@@ -380,37 +401,40 @@ static void test_strips_find_the_nearest_image_pairs_in_periodic_boxes(void **st
 static void test_strips_agree_with_brute_force_over_a_long_run(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(3000, 2.0, 11, DS_SAP_STRIPS);
+    ds_sim *sim = test_create(3000, 2.0, 11, DS_BROADPHASE_STRIPS);
     size_t pairs = 0;
     for (int k = 0; k < 40; ++k) {
-        ds_run(sim, 50);
+        ds_sim_run(sim, 50, NULL);
         pairs += assert_same_pairs_as_brute_force(sim);
     }
     assert_true(pairs > 0);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
-/* The same in a periodic rectangle, where disks keep crossing the seams
- * and meeting through them: both sweeps with their seam pass. */
+/* The same in a periodic rectangle and a channel, where disks keep
+ * crossing the seams and meeting through them: every broad phase of the
+ * time step (the sweeps, with their seam pass) but the reference itself. */
 static void test_sweeps_agree_with_brute_force_over_a_long_periodic_run(void **state)
 {
     (void)state;
-    const ds_broadphase sweeps[] = {DS_SAP, DS_SAP_STRIPS};
-    for (size_t b = 0; b < 2; ++b) {
-        ds_params p = ds_default_params(2000, 4.0);
+    for (int b = 0; b < 2 * DS_BROADPHASE_COUNT; ++b) {
+        ds_params p = ds_params_default(2000, 4.0);
         p.seed = 12;
-        p.broadphase = sweeps[b];
-        p.boundary = DS_PERIODIC;
+        p.broadphase = (ds_broadphase)(b % DS_BROADPHASE_COUNT);
+        p.boundary = b < DS_BROADPHASE_COUNT ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_CHANNEL;
         p.box_y = 600.0;
+        if (p.broadphase == DS_BROADPHASE_AUTO || p.broadphase == DS_BROADPHASE_BRUTE ||
+            ds_params_check(&p, NULL, NULL, NULL) != DS_OK)
+            continue;
         ds_sim *sim = NULL;
-        assert_int_equal(ds_create(&p, &sim), DS_OK);
+        assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
         size_t pairs = 0;
         for (int k = 0; k < 20; ++k) {
-            ds_run(sim, 50);
+            ds_sim_run(sim, 50, NULL);
             pairs += assert_same_pairs_as_brute_force(sim);
         }
         assert_true(pairs > 0);
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
     }
 }
 
@@ -420,31 +444,31 @@ static void test_strips_keep_each_disk_with_its_own_data(void **state)
 {
     (void)state;
     enum { N = 2000 };
-    ds_sim *sim = test_create(N, 2.0, 3, DS_SAP_STRIPS);
+    ds_sim *sim = test_create(N, 2.0, 3, DS_BROADPHASE_STRIPS);
     ds_rng rng;
     ds_rng_seed(&rng, 9);
     static ds_disk want[N];
     for (int round = 0; round < 5; ++round) {
         for (size_t i = 0; i < N; ++i) {
             /* Small moves in some rounds, jumps across the box in others. */
-            ds_disk d = ds_get(sim, i);
+            ds_disk d = ds_sim_get_disk(sim, i);
             double jump = round % 2 ? 900.0 : 3.0;
             d.x = fmin(fmax(d.x + ds_rng_uniform(&rng, -jump, jump), 2.0), 998.0);
             d.y = fmin(fmax(d.y + ds_rng_uniform(&rng, -jump, jump), 2.0), 998.0);
             d.vx = -(double)i;
             d.vy = (double)i + 0.5 * round;
             want[i] = d;
-            assert_int_equal(ds_set(sim, i, d), DS_OK);
+            assert_int_equal(ds_sim_set_disk(sim, i, d, NULL), DS_OK);
         }
-        pair_list list = pairs_found(sim, DS_SAP_STRIPS); /* records, resolves nothing */
+        pair_list list = pairs_found(sim, DS_BROADPHASE_STRIPS); /* records, resolves nothing */
         free(list.pairs);
         for (size_t i = 0; i < N; ++i) {
-            ds_disk d = ds_get(sim, i);
+            ds_disk d = ds_sim_get_disk(sim, i);
             assert_true(d.x == want[i].x && d.y == want[i].y);
             assert_true(d.vx == want[i].vx && d.vy == want[i].vy);
         }
     }
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 typedef enum order { SORTED, REVERSED, TIED, RANDOM } order;
@@ -544,10 +568,10 @@ static void test_broad_phases_keep_one_trajectory_until_a_disk_is_in_two_pairs(v
 {
     (void)state;
     static const lockstep_case cases[] = {
-        {400, 5.0, DS_WALLS, 0.0, 0, 1200},
-        {2000, 5.0, DS_WALLS, 0.0, 0, 120},
-        {500, 6.0, DS_PERIODIC, 700.0, 0, 650},
-        {800, 5.0, DS_WALLS, 600.0, 1, 300},
+        {400, 5.0, DS_BOUNDARY_WALLS, 0.0, 0, 1200},
+        {2000, 5.0, DS_BOUNDARY_WALLS, 0.0, 0, 120},
+        {500, 6.0, DS_BOUNDARY_PERIODIC, 700.0, 0, 650},
+        {800, 5.0, DS_BOUNDARY_WALLS, 600.0, 1, 300},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         const uint64_t twice = run_in_lockstep(&cases[k]);
@@ -561,11 +585,11 @@ static block_stats z_of(ds_sim *sim, int blocks, uint64_t steps)
 {
     double z[40];
     assert_true(blocks <= 40);
-    ds_run(sim, steps);
+    ds_sim_run(sim, steps, NULL);
     for (int b = 0; b < blocks; ++b) {
-        ds_reset_observables(sim);
-        ds_run(sim, steps);
-        z[b] = ds_compressibility(sim);
+        ds_sim_reset_observables(sim);
+        ds_sim_run(sim, steps, NULL);
+        z[b] = ds_sim_get_compressibility_factor(sim);
     }
     return stats_of(z, blocks);
 }
@@ -585,18 +609,18 @@ static void test_broad_phases_measure_the_same_pressure_after_they_part(void **s
     (void)state;
     const int blocks = 20;
     const uint64_t steps = long_run(500);
-    for (int b = DS_WALLS; b <= DS_PERIODIC; ++b) {
+    for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
         const lockstep_case c = {250, 20.0, (ds_boundary)b, 0.0, 0, 0};
-        ds_sim *brute = create_case(&c, DS_BRUTE_FORCE);
+        ds_sim *brute = create_case(&c, DS_BROADPHASE_BRUTE);
         const block_stats want = z_of(brute, blocks, steps);
-        ds_destroy(brute);
-        const ds_broadphase sweeps[2] = {DS_SAP, DS_SAP_STRIPS};
+        ds_sim_destroy(brute);
+        const ds_broadphase sweeps[2] = {DS_BROADPHASE_SAP, DS_BROADPHASE_STRIPS};
         for (int k = 0; k < 2; ++k) {
             ds_sim *sim = create_case(&c, sweeps[k]);
             const block_stats got = z_of(sim, blocks, steps);
             const double tolerance = 5.0 * sqrt(got.error * got.error + want.error * want.error);
             assert_true(fabs(got.mean - want.mean) < tolerance);
-            ds_destroy(sim);
+            ds_sim_destroy(sim);
         }
     }
 }
@@ -606,14 +630,12 @@ static void test_broad_phases_measure_the_same_pressure_after_they_part(void **s
  * velocity component between the same disk of two runs. */
 static double largest_difference(const ds_sim *a, const ds_sim *b)
 {
-    const int periodic = ds_boundary_used(a) == DS_PERIODIC;
     double worst = 0.0;
-    for (size_t i = 0; i < ds_count(a); ++i) {
-        const ds_disk da = ds_get(a, i), db = ds_get(b, i);
-        const double dx = da.x - db.x, dy = da.y - db.y;
-        worst = fmax(worst, periodic ? fmax(fabs(ds_nearest(dx, ds_box(a))),
-                                            fabs(ds_nearest(dy, ds_box_y(a))))
-                                     : fmax(fabs(dx), fabs(dy)));
+    for (size_t i = 0; i < ds_sim_get_count(a); ++i) {
+        const ds_disk da = ds_sim_get_disk(a, i), db = ds_sim_get_disk(b, i);
+        double dx = da.x - db.x, dy = da.y - db.y;
+        nearest_image(a, &dx, &dy);
+        worst = fmax(worst, fmax(fabs(dx), fabs(dy)));
         worst = fmax(worst, fmax(fabs(da.vx - db.vx), fabs(da.vy - db.vy)));
     }
     return worst;
@@ -635,27 +657,28 @@ static double largest_difference(const ds_sim *a, const ds_sim *b)
 static void test_event_cells_and_brute_force_differ_by_rounding_only(void **state)
 {
     (void)state;
-    for (int b = DS_WALLS; b <= DS_PERIODIC; ++b) {
+    for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
         ds_sim *sim[2];
-        const ds_broadphase kinds[2] = {DS_CELLS, DS_BRUTE_FORCE};
+        const ds_broadphase kinds[2] = {DS_BROADPHASE_CELLS, DS_BROADPHASE_BRUTE};
         for (int k = 0; k < 2; ++k) {
-            ds_params p = ds_default_params(2000, 5.0);
-            p.integrator = DS_EVENT_DRIVEN;
+            ds_params p = ds_params_default(2000, 5.0);
+            p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
             p.broadphase = kinds[k];
             p.boundary = (ds_boundary)b;
-            assert_int_equal(ds_create(&p, &sim[k]), DS_OK);
-            assert_int_equal(ds_broadphase_used(sim[k]), kinds[k]);
+            assert_int_equal(ds_sim_create(&p, NULL, &sim[k], NULL), DS_OK);
+            assert_int_equal(ds_sim_get_broadphase(sim[k]), kinds[k]);
         }
         for (int s = 1; s <= 100; ++s) {
-            ds_step(sim[0]);
-            ds_step(sim[1]);
-            assert_int_equal(ds_collision_count(sim[0]), ds_collision_count(sim[1]));
-            assert_int_equal(ds_wall_count(sim[0]), ds_wall_count(sim[1]));
+            ds_sim_step(sim[0], NULL);
+            ds_sim_step(sim[1], NULL);
+            assert_int_equal(ds_sim_get_collision_count(sim[0]),
+                             ds_sim_get_collision_count(sim[1]));
+            assert_int_equal(ds_sim_get_wall_count(sim[0]), ds_sim_get_wall_count(sim[1]));
             assert_true(largest_difference(sim[0], sim[1]) < (s == 1 ? 1e-12 : 1e-9));
         }
-        assert_true(ds_collision_count(sim[0]) > 500);
-        ds_destroy(sim[0]);
-        ds_destroy(sim[1]);
+        assert_true(ds_sim_get_collision_count(sim[0]) > 500);
+        ds_sim_destroy(sim[0]);
+        ds_sim_destroy(sim[1]);
     }
 }
 

@@ -7,7 +7,7 @@
  *   inside the contact circle, sigma = 2R < half the side), so beta P =
  *   1/A + 1/(A - pi sigma^2) and the canonical Z = beta P A / 2 = (1 + A /
  *   (A - pi sigma^2)) / 2. The relative motion is a Sinai billiard, which
- *   is ergodic, so the event-driven run's ds_compressibility converges to
+ *   is ergodic, so the event-driven run's ds_sim_get_compressibility_factor converges to
  *   it; P A / K, with kT = K / N, does not.
  * - The collision rate against the pressure: both come from the contact
  *   value g(sigma), the rate through the mean normal relative speed and
@@ -23,19 +23,19 @@ static void two_disks_give_the_exact_canonical_z(double radius)
 {
     const double box = 10.0, sigma = 2.0 * radius, area = box * box;
     const double exact = 0.5 * (1.0 + area / (area - PI * sigma * sigma));
-    ds_params p = ds_default_params(2, radius);
+    ds_params p = ds_params_default(2, radius);
     p.box = box;
-    p.boundary = DS_PERIODIC;
-    p.integrator = DS_EVENT_DRIVEN;
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     p.speed = 1.0;
     p.dt = 0.1;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     /* A total momentum that is not 0, so kT = K_int / (N - 1) differs from
      * K / N for a reason other than N alone. */
     const ds_disk start[2] = {{2.0, 5.0, 1.3, 0.4}, {8.0, 5.0, -0.5, -0.3}};
-    ds_state_error err;
-    assert_int_equal(ds_set_all(sim, start, &err), DS_OK);
+    ds_error err;
+    assert_int_equal(ds_sim_set_disks(sim, start, &err), DS_OK);
     /* Blocks of 2000 time units, ~600 (R = 2) and ~180 (R = 1) collisions
      * each (mean free path of the relative motion pi (A - pi sigma^2) /
      * (2 pi sigma), relative speed 1.93): the blocks are far longer than the billiard's memory,
@@ -47,12 +47,12 @@ static void two_disks_give_the_exact_canonical_z(double radius)
     enum { BLOCKS = 40 };
     const int blocks = BLOCKS;
     double z[BLOCKS], naive[BLOCKS];
-    ds_run(sim, 2000);
+    ds_sim_run(sim, 2000, NULL);
     for (int b = 0; b < blocks; ++b) {
-        ds_reset_observables(sim);
-        ds_run(sim, 20000);
-        z[b] = ds_compressibility(sim);
-        naive[b] = ds_virial_pressure(sim) * area / ds_kinetic_energy(sim);
+        ds_sim_reset_observables(sim);
+        ds_sim_run(sim, 20000, NULL);
+        z[b] = ds_sim_get_compressibility_factor(sim);
+        naive[b] = ds_sim_get_virial_pressure(sim) * area / ds_sim_get_kinetic_energy(sim);
     }
     const block_stats s = stats_of(z, blocks), wrong = stats_of(naive, blocks);
     if (getenv("DS_TEST_VERBOSE"))
@@ -67,7 +67,7 @@ static void two_disks_give_the_exact_canonical_z(double radius)
      * here K = 1.095 and K_int = K - P^2 / 4 = 0.9325, so its Z - 1 comes
      * out 2 K_int / K = 1.70 times the canonical one, far off. */
     assert_true(fabs(wrong.mean - exact) > 20.0 * wrong.error);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_two_disks_exact_z(void **state)
@@ -97,32 +97,34 @@ static void collision_rate_gives_the_pressure(double eta)
     const size_t n = 256;
     const double height = 1000.0 * sqrt(3.0) / 2.0;
     const double radius = sqrt(eta * 1000.0 * height / ((double)n * PI)), sigma = 2.0 * radius;
-    ds_params p = ds_default_params(n, radius);
-    p.boundary = DS_PERIODIC;
-    p.integrator = DS_EVENT_DRIVEN;
-    p.placement = DS_LATTICE;
+    ds_params p = ds_params_default(n, radius);
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
+    p.placement = DS_PLACEMENT_LATTICE;
     p.box_y = height;
     p.seed = 7;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
-    ds_run(sim, 5000); /* 5 time units, ~20 collisions per disk: the lattice melts */
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    ds_sim_run(sim, 5000, NULL); /* 5 time units, ~20 collisions per disk: the lattice melts */
     enum { BLOCKS = 100 };
     const int blocks = BLOCKS;
     const uint64_t steps = 5000;
-    const double kt = ds_temperature(sim), ratio = sphere_over_maxwell(2.0 * (double)(n - 1));
+    const double kt = ds_sim_get_temperature(sim),
+                 ratio = sphere_over_maxwell(2.0 * (double)(n - 1));
     double r[BLOCKS];
     for (int b = 0; b < blocks; ++b) {
-        const uint64_t before = ds_collision_count(sim);
-        ds_reset_observables(sim);
-        ds_run(sim, steps);
-        const double nu = 2.0 * (double)(ds_collision_count(sim) - before) /
-                          ((double)n * (double)steps * ds_dt(sim));
+        const uint64_t before = ds_sim_get_collision_count(sim);
+        ds_sim_reset_observables(sim);
+        ds_sim_run(sim, steps, NULL);
+        const double nu = 2.0 * (double)(ds_sim_get_collision_count(sim) - before) /
+                          ((double)n * (double)steps * ds_sim_get_dt(sim));
         /* The measured Z - 1 over what the rate predicts: 1 in expectation */
-        r[b] = (ds_compressibility(sim) - 1.0) / (nu * sigma / 4.0 * sqrt(PI / kt) / ratio);
+        r[b] = (ds_sim_get_compressibility_factor(sim) - 1.0) /
+               (nu * sigma / 4.0 * sqrt(PI / kt) / ratio);
     }
     /* The temperature is the run's own: energy and momentum are conserved
      * to rounding, so kT of the last block is kT of the first. */
-    assert_true(fabs(ds_temperature(sim) - kt) < 1e-9 * kt);
+    assert_true(fabs(ds_sim_get_temperature(sim) - kt) < 1e-9 * kt);
     const block_stats s = stats_of(r, blocks);
     if (getenv("DS_TEST_VERBOSE"))
         printf("eta %g: (Z - 1) over the rate's prediction %.5f +- %.5f (sphere factor %.6f)\n",
@@ -137,7 +139,7 @@ static void collision_rate_gives_the_pressure(double eta)
     assert_true(s.error < 0.004);
     if (fabs(s.mean - 1.0) > 5.0 * s.error)
         fail_msg("eta %g: (Z - 1) over the rate's prediction = %.5f +- %.5f", eta, s.mean, s.error);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_collision_rate_vs_pressure(void **state)

@@ -374,7 +374,7 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
             snprintf(o->problem, sizeof o->problem, "a usage error wrote '%s'", after[i]);
         else if (!is_frame_name(base))
             snprintf(o->problem, sizeof o->problem, "unexpected file '%s' left behind", after[i]);
-        else if (ds_read_frame(full, &frame, NULL) != DS_OK)
+        else if (ds_frame_read(full, &frame, NULL) != DS_OK)
             snprintf(o->problem, sizeof o->problem, "partial frame '%s' left behind", after[i]);
         else {
             ds_frame_free(&frame);
@@ -723,6 +723,8 @@ static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **stat
     restart_matches_one_run("--periodic");
     restart_matches_one_run("--integrator event");
     restart_matches_one_run("--integrator event --periodic");
+    restart_matches_one_run("--boundary channel --box-y 500");
+    restart_matches_one_run("--integrator event --boundary channel --box-y 500");
     /* A mixture's area fraction column too (a load summed the areas in
      * the slots' order, and its last bits moved). */
     restart_matches_one_run("--mixture 1.4:0.5");
@@ -815,7 +817,7 @@ static long complete_frames(const char *dir)
         char path[PATH_MAX];
         snprintf(path, sizeof path, "%s/out/frame_%04ld.txt", dir, k);
         ds_frame frame;
-        if (ds_read_frame(path, &frame, NULL) != DS_OK)
+        if (ds_frame_read(path, &frame, NULL) != DS_OK)
             fail_msg("out/frame_%04ld.txt is missing or partial (%ld frames)", k, n);
         ds_frame_free(&frame);
     }
@@ -1081,7 +1083,7 @@ static void test_a_growth_stops_at_its_target_area_fraction(void **state)
 }
 
 /* --measure-after T: the rows after the frame at T average from it on,
- * to the bit what the library gives with ds_reset_observables at that
+ * to the bit what the library gives with ds_sim_reset_observables at that
  * step; and a restart from a checkpoint past T goes on with those
  * averages (it does not reset again), so its last row is the whole run's. */
 static void test_measure_after_discards_the_start(void **state)
@@ -1091,19 +1093,19 @@ static void test_measure_after_discards_the_start(void **state)
     assert_non_null(mkdtemp(dir));
     const char *sys = "100 5 --seed 3 --integrator event --frames 11 --measure-after 0.5 --quiet";
     must_run(dir, "%s --out a --stats a.csv", sys);
-    ds_params p = ds_default_params(100, 5.0);
+    ds_params p = ds_params_default(100, 5.0);
     p.seed = 3;
-    p.integrator = DS_EVENT_DRIVEN;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
-    ds_run(sim, 500); /* frame 5, t = 0.5: the reset */
-    ds_reset_observables(sim);
-    ds_run(sim, 500);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    ds_sim_run(sim, 500, NULL); /* frame 5, t = 0.5: the reset */
+    ds_sim_reset_observables(sim);
+    ds_sim_run(sim, 500, NULL);
     char want[3][64];
-    snprintf(want[0], sizeof want[0], "%llu", (unsigned long long)ds_wall_count(sim));
-    snprintf(want[1], sizeof want[1], "%.17g", ds_pressure(sim));
-    snprintf(want[2], sizeof want[2], "%.17g", ds_virial_pressure(sim));
-    ds_destroy(sim);
+    snprintf(want[0], sizeof want[0], "%llu", (unsigned long long)ds_sim_get_wall_count(sim));
+    snprintf(want[1], sizeof want[1], "%.17g", ds_sim_get_pressure(sim));
+    snprintf(want[2], sizeof want[2], "%.17g", ds_sim_get_virial_pressure(sim));
+    ds_sim_destroy(sim);
     char *csv = slurp_in(dir, "a.csv", NULL), *cols[16];
     assert_non_null(csv);
     assert_int_equal(last_row(csv, cols, 16), 11);

@@ -73,7 +73,7 @@ static void test_small_run_writes_every_frame_with_n_lines(void **state)
         char *text = slurp(path, &len);
         assert_non_null(text);
         ds_frame frame;
-        assert_int_equal(ds_parse_frame(text, len, &frame, NULL), DS_OK);
+        assert_int_equal(ds_frame_parse(text, len, &frame, NULL), DS_OK);
         assert_int_equal(frame.count, 50);
         assert_int_equal(frame.columns, 3);
         /* "x y R": six decimals, then the radius exactly as "5". */
@@ -99,14 +99,14 @@ static void test_frame_zero_is_the_library_initial_state(void **state)
     assert_int_equal(run(args), 0);
     snprintf(path, sizeof path, "%s/f0/frame_0000.txt", workdir);
     ds_frame frame;
-    assert_int_equal(ds_read_frame(path, &frame, NULL), DS_OK);
-    ds_sim *sim = test_create(30, 5.0, 99, DS_AUTO);
+    assert_int_equal(ds_frame_read(path, &frame, NULL), DS_OK);
+    ds_sim *sim = test_create(30, 5.0, 99, DS_BROADPHASE_AUTO);
     for (size_t i = 0; i < 30; ++i) { /* line i is disk i */
-        ds_disk d = ds_get(sim, i);
+        ds_disk d = ds_sim_get_disk(sim, i);
         assert_true(fabs(frame.disks[i].x - d.x) <= 5e-7 + 1e-12);
         assert_true(fabs(frame.disks[i].y - d.y) <= 5e-7 + 1e-12);
     }
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     ds_frame_free(&frame);
     snprintf(path, sizeof path, "%s/stdout.txt", workdir);
     size_t len = 0;

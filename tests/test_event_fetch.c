@@ -20,11 +20,11 @@ static void test_the_fetch_ring_goes_on_past_its_cursors_wrapping(void **state)
     /* 50,000 disks at area fraction 0.4: above the 8 MiB from which the
      * integrator fetches ahead (test_event_driven's system). */
     const size_t n = 50000;
-    ds_params p = ds_default_params(n, sqrt(0.4 * 1e6 / (3.141592653589793 * (double)n)));
-    p.integrator = DS_EVENT_DRIVEN;
+    ds_params p = ds_params_default(n, sqrt(0.4 * 1e6 / (3.141592653589793 * (double)n)));
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     p.seed = 9;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     ds_events *e = sim->state;
     assert_true(e->fetching);
     ds_fetch *f = &e->fetch;
@@ -32,15 +32,15 @@ static void test_the_fetch_ring_goes_on_past_its_cursors_wrapping(void **state)
     f->tail = f->second = f->third = start; /* an empty ring, 41 names short of the wrap */
     /* A regression stands still rather than fails: end it. */
     alarm(600);
-    const double e0 = ds_kinetic_energy(sim);
-    ds_run(sim, quick_mode() ? 2 : 5);
+    const double e0 = ds_sim_get_kinetic_energy(sim);
+    ds_sim_run(sim, quick_mode() ? 2 : 5, NULL);
     alarm(0);
     assert_true(f->tail < start && f->tail > 1000u); /* the names went past 2^32 */
     assert_true((uint32_t)(f->tail - f->second) <= DS_FETCH_AHEAD_MASK + 1u);
     assert_true((uint32_t)(f->second - f->third) <= DS_FETCH_AHEAD_MASK + 1u);
-    assert_true(ds_collision_count(sim) > 1000);
-    assert_true(fabs(ds_kinetic_energy(sim) / e0 - 1.0) < 1e-12);
-    ds_destroy(sim);
+    assert_true(ds_sim_get_collision_count(sim) > 1000);
+    assert_true(fabs(ds_sim_get_kinetic_energy(sim) / e0 - 1.0) < 1e-12);
+    ds_sim_destroy(sim);
 }
 
 int main(void)

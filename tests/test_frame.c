@@ -10,7 +10,7 @@ static void format_x(ds_sim *sim, double x, char *out, size_t cap)
     sim->disks.x[sim->disks.slot[0]] = x;
     char buf[256];
     size_t len = 0;
-    assert_int_equal(ds_format_frame(sim, 0, buf, sizeof buf, &len), DS_OK);
+    assert_int_equal(ds_frame_format(sim, 0, buf, sizeof buf, &len, NULL), DS_OK);
     size_t field = strcspn(buf, " ");
     assert_true(field < cap);
     memcpy(out, buf, field);
@@ -20,7 +20,7 @@ static void format_x(ds_sim *sim, double x, char *out, size_t cap)
 static void test_fixed_six_decimals_match_printf_exactly(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(1, 5.0, 1, DS_SAP);
+    ds_sim *sim = test_create(1, 5.0, 1, DS_BROADPHASE_SAP);
     ds_rng r;
     ds_rng_seed(&r, 123);
     char mine[64], ref[64];
@@ -43,18 +43,18 @@ static void test_fixed_six_decimals_match_printf_exactly(void **state)
         snprintf(ref, sizeof ref, "%.6f", v);
         assert_string_equal(mine, ref);
     }
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void radius_text(double r, char *out, size_t cap)
 {
-    ds_sim *sim = test_create(1, r, 1, DS_SAP);
+    ds_sim *sim = test_create(1, r, 1, DS_BROADPHASE_SAP);
     char buf[256];
     size_t len = 0;
-    assert_int_equal(ds_format_frame(sim, 0, buf, sizeof buf, &len), DS_OK);
+    assert_int_equal(ds_frame_format(sim, 0, buf, sizeof buf, &len, NULL), DS_OK);
     buf[len - 1] = '\0';
     snprintf(out, cap, "%s", strrchr(buf, ' ') + 1);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_radius_is_written_in_shortest_round_trip_form(void **state)
@@ -81,11 +81,11 @@ static void test_radius_is_written_in_shortest_round_trip_form(void **state)
 static void test_frame_round_trips_through_a_file(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(300, 4.0, 9, DS_SAP);
-    ds_run(sim, 500); /* slots permuted by the sort: output must not be */
+    ds_sim *sim = test_create(300, 4.0, 9, DS_BROADPHASE_SAP);
+    ds_sim_run(sim, 500, NULL); /* slots permuted by the sort: output must not be */
     FILE *f = tmpfile();
     assert_non_null(f);
-    assert_int_equal(ds_write_frame_velocities(sim, f), DS_OK);
+    assert_int_equal(ds_frame_write(sim, 1, f, NULL), DS_OK);
     long size = ftell(f);
     rewind(f);
     char *text = malloc((size_t)size);
@@ -93,12 +93,12 @@ static void test_frame_round_trips_through_a_file(void **state)
     fclose(f);
 
     ds_frame frame;
-    ds_frame_error err;
-    assert_int_equal(ds_parse_frame(text, (size_t)size, &frame, &err), DS_OK);
+    ds_error err;
+    assert_int_equal(ds_frame_parse(text, (size_t)size, &frame, &err), DS_OK);
     assert_int_equal(frame.count, 300);
     assert_int_equal(frame.columns, 5);
     for (size_t i = 0; i < 300; ++i) {
-        ds_disk d = ds_get(sim, i);
+        ds_disk d = ds_sim_get_disk(sim, i);
         /* Six decimals: the printed value is within half a millionth. */
         assert_true(fabs(frame.disks[i].x - d.x) <= 5e-7 + 1e-12);
         assert_true(fabs(frame.disks[i].y - d.y) <= 5e-7 + 1e-12);
@@ -107,34 +107,34 @@ static void test_frame_round_trips_through_a_file(void **state)
     }
     ds_frame_free(&frame);
     free(text);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_three_column_frame_has_one_line_per_disk(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(50, 5.0, 2, DS_SAP);
-    size_t cap = ds_frame_size(sim, 0), len = 0;
+    ds_sim *sim = test_create(50, 5.0, 2, DS_BROADPHASE_SAP);
+    size_t cap = ds_frame_get_size(sim, 0), len = 0;
     char *buf = malloc(cap);
-    assert_int_equal(ds_format_frame(sim, 0, buf, cap, &len), DS_OK);
+    assert_int_equal(ds_frame_format(sim, 0, buf, cap, &len, NULL), DS_OK);
     size_t lines = 0;
     for (size_t k = 0; k < len; ++k)
         lines += buf[k] == '\n';
     assert_int_equal(lines, 50);
     /* Too small a buffer is an error that still reports the size needed. */
     size_t need = 0;
-    assert_int_equal(ds_format_frame(sim, 0, buf, len - 1, &need), DS_ERR_ARG);
+    assert_int_equal(ds_frame_format(sim, 0, buf, len - 1, &need, NULL), DS_ERR_ARG);
     assert_int_equal(need, len);
     free(buf);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void expect_error(const char *text, size_t line, const char *message)
 {
     ds_frame frame;
-    ds_frame_error err;
-    assert_int_equal(ds_parse_frame(text, strlen(text), &frame, &err), DS_ERR_FORMAT);
-    assert_int_equal(err.line, line);
+    ds_error err;
+    assert_int_equal(ds_frame_parse(text, strlen(text), &frame, &err), DS_ERR_FORMAT);
+    assert_int_equal(err.index, line);
     assert_string_equal(err.message, message);
     assert_null(frame.disks);
     assert_int_equal(frame.count, 0);
@@ -161,7 +161,7 @@ static void test_parser_accepts_comments_blank_lines_and_no_final_newline(void *
     (void)state;
     const char *text = "# a comment\n\n1.5 2.5 3\r\n  4 5 6";
     ds_frame frame;
-    assert_int_equal(ds_parse_frame(text, strlen(text), &frame, NULL), DS_OK);
+    assert_int_equal(ds_frame_parse(text, strlen(text), &frame, NULL), DS_OK);
     assert_int_equal(frame.count, 2);
     assert_true(frame.disks[1].x == 4.0 && frame.disks[1].r == 6.0);
     ds_frame_free(&frame);
@@ -172,17 +172,17 @@ static void test_parser_rejects_binary_garbage(void **state)
     (void)state;
     const char garbage[] = {'1', ' ', '2', '\0', '3', '\n', (char)0xff, (char)0x80};
     ds_frame frame;
-    ds_frame_error err;
-    assert_int_equal(ds_parse_frame(garbage, sizeof garbage, &frame, &err), DS_ERR_FORMAT);
-    assert_int_equal(err.line, 1);
+    ds_error err;
+    assert_int_equal(ds_frame_parse(garbage, sizeof garbage, &frame, &err), DS_ERR_FORMAT);
+    assert_int_equal(err.index, 1);
 }
 
 static void test_reading_a_missing_file_is_an_io_error(void **state)
 {
     (void)state;
     ds_frame frame;
-    ds_frame_error err;
-    assert_int_equal(ds_read_frame("/nonexistent/frame_0000.txt", &frame, &err), DS_ERR_IO);
+    ds_error err;
+    assert_int_equal(ds_frame_read("/nonexistent/frame_0000.txt", &frame, &err), DS_ERR_IO);
     assert_non_null(strstr(err.message, "cannot open"));
 }
 

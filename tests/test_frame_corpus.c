@@ -45,10 +45,10 @@ static void test_every_corpus_file_passes_the_harness_and_its_name(void **state)
         char *bytes = slurp(path, &len);
         LLVMFuzzerTestOneInput((const uint8_t *)bytes, len);
         ds_frame frame;
-        ds_frame_error err;
-        ds_status st = ds_parse_frame(bytes, len, &frame, &err);
+        ds_error err;
+        ds_status st = ds_frame_parse(bytes, len, &frame, &err);
         if (strncmp(e->d_name, "ok-", 3) == 0 && st != DS_OK)
-            fail_msg("%s: refused: line %zu: %s", e->d_name, err.line, err.message);
+            fail_msg("%s: refused: line %zu: %s", e->d_name, err.index, err.message);
         if (strncmp(e->d_name, "bad-", 4) == 0 && st != DS_ERR_FORMAT)
             fail_msg("%s: accepted, status %d", e->d_name, (int)st);
         ds_frame_free(&frame);

@@ -25,9 +25,9 @@
 static void expect_format_error(const char *text, size_t len, size_t line, const char *want)
 {
     ds_frame frame = {(ds_frame_disk *)&frame, 99, 3}; /* garbage to be reset */
-    ds_frame_error err;
-    assert_int_equal(ds_parse_frame(text, len, &frame, &err), DS_ERR_FORMAT);
-    assert_int_equal(err.line, line);
+    ds_error err;
+    assert_int_equal(ds_frame_parse(text, len, &frame, &err), DS_ERR_FORMAT);
+    assert_int_equal(err.index, line);
     if (!strstr(err.message, want))
         fail_msg("message '%s' does not contain '%s'", err.message, want);
     assert_null(frame.disks);
@@ -90,7 +90,7 @@ static void test_binary_garbage_is_refused_without_reading_past_the_buffer(void 
     expect_format_error(bytes, 7, 1, "NUL");
     memcpy(bytes, "1 2 3.5", 7); /* the last number runs up to the end */
     ds_frame frame;
-    assert_int_equal(ds_parse_frame(bytes, 7, &frame, NULL), DS_OK);
+    assert_int_equal(ds_frame_parse(bytes, 7, &frame, NULL), DS_OK);
     assert_int_equal(frame.count, 1);
     assert_true(frame.disks[0].r == 3.5);
     ds_frame_free(&frame);
@@ -117,8 +117,8 @@ static void test_a_missing_file_is_an_io_error(void **state)
 {
     (void)state;
     ds_frame frame;
-    ds_frame_error err;
-    assert_int_equal(ds_read_frame("/nonexistent/frame_0000.txt", &frame, &err), DS_ERR_IO);
+    ds_error err;
+    assert_int_equal(ds_frame_read("/nonexistent/frame_0000.txt", &frame, &err), DS_ERR_IO);
     assert_non_null(strstr(err.message, strerror(ENOENT)));
     assert_null(frame.disks);
 }
@@ -127,10 +127,10 @@ static void test_endless_binary_input_is_refused_without_reading_it_all(void **s
 {
     (void)state;
     ds_frame frame;
-    ds_frame_error err;
+    ds_error err;
     /* /dev/zero never ends: the reader must stop at its first NUL byte. */
-    assert_int_equal(ds_read_frame("/dev/zero", &frame, &err), DS_ERR_FORMAT);
-    assert_int_equal(err.line, 1);
+    assert_int_equal(ds_frame_read("/dev/zero", &frame, &err), DS_ERR_FORMAT);
+    assert_int_equal(err.index, 1);
     assert_non_null(strstr(err.message, "NUL"));
     assert_null(frame.disks);
 }
@@ -139,9 +139,9 @@ static void test_a_directory_is_an_io_error(void **state)
 {
     (void)state;
     ds_frame frame;
-    ds_frame_error err;
+    ds_error err;
     /* fopen succeeds on a directory under Linux; the read then fails. */
-    assert_int_equal(ds_read_frame("/", &frame, &err), DS_ERR_IO);
+    assert_int_equal(ds_frame_read("/", &frame, &err), DS_ERR_IO);
     assert_null(frame.disks);
 }
 
@@ -151,53 +151,53 @@ static void test_writing_a_frame_to_a_full_disk_reports_io_error(void **state)
     FILE *full = fopen("/dev/full", "w");
     if (!full)
         skip(); /* not Linux: no /dev/full */
-    ds_sim *sim = test_create(50, 5.0, 1, DS_SAP);
+    ds_sim *sim = test_create(50, 5.0, 1, DS_BROADPHASE_SAP);
     /* 50 lines fit in stdio's buffer: only the flush can see ENOSPC. */
-    assert_int_equal(ds_write_frame(sim, full), DS_ERR_IO);
+    assert_int_equal(ds_frame_write(sim, 0, full, NULL), DS_ERR_IO);
     clearerr(full);
-    assert_int_equal(ds_write_frame_velocities(sim, full), DS_ERR_IO);
+    assert_int_equal(ds_frame_write(sim, 1, full, NULL), DS_ERR_IO);
     fclose(full);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_a_written_frame_reads_back_exactly(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(30, 4.0, 7, DS_SAP);
+    ds_sim *sim = test_create(30, 4.0, 7, DS_BROADPHASE_SAP);
     char path[] = "/tmp/ds_frame_errors_XXXXXX";
     int fd = mkstemp(path);
     assert_true(fd >= 0);
     FILE *f = fdopen(fd, "w");
     assert_non_null(f);
-    assert_int_equal(ds_write_frame_velocities(sim, f), DS_OK);
+    assert_int_equal(ds_frame_write(sim, 1, f, NULL), DS_OK);
     assert_int_equal(fclose(f), 0);
     ds_frame frame;
-    assert_int_equal(ds_read_frame(path, &frame, NULL), DS_OK);
+    assert_int_equal(ds_frame_read(path, &frame, NULL), DS_OK);
     unlink(path);
     assert_int_equal(frame.count, 30);
     assert_int_equal(frame.columns, 5);
     for (size_t i = 0; i < frame.count; ++i) {
-        ds_disk d = ds_get(sim, i);
+        ds_disk d = ds_sim_get_disk(sim, i);
         /* Six decimals are written: the round trip is exact to 5e-7. */
         assert_true(fabs(frame.disks[i].x - d.x) <= 5e-7);
         assert_true(fabs(frame.disks[i].vy - d.vy) <= 5e-7);
         assert_true(frame.disks[i].r == 4.0);
     }
     ds_frame_free(&frame);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_null_arguments_are_refused_not_dereferenced(void **state)
 {
     (void)state;
     ds_frame frame;
-    assert_int_equal(ds_parse_frame(NULL, 5, &frame, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_parse_frame("1 2 3", 5, NULL, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_read_frame(NULL, &frame, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_write_frame(NULL, stdout), DS_ERR_ARG);
-    assert_int_equal(ds_create(NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_parse(NULL, 5, &frame, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_parse("1 2 3", 5, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_read(NULL, &frame, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_write(NULL, 0, stdout, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_sim_create(NULL, NULL, NULL, NULL), DS_ERR_ARG);
     ds_frame_free(NULL);
-    ds_destroy(NULL);
+    ds_sim_destroy(NULL);
 }
 
 /* The header promises "On error *frame is left empty": a caller may free it
@@ -208,12 +208,12 @@ static void test_a_failed_read_leaves_the_frame_empty_even_for_bad_arguments(voi
     (void)state;
     ds_frame_disk junk;
     ds_frame frame = {&junk, 99, 5};
-    assert_int_equal(ds_parse_frame(NULL, 5, &frame, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_parse(NULL, 5, &frame, NULL), DS_ERR_ARG);
     assert_null(frame.disks);
     assert_int_equal(frame.count, 0);
     assert_int_equal(frame.columns, 0);
     frame = (ds_frame){&junk, 99, 5};
-    assert_int_equal(ds_read_frame(NULL, &frame, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_read(NULL, &frame, NULL), DS_ERR_ARG);
     assert_null(frame.disks);
     assert_int_equal(frame.count, 0);
     assert_int_equal(frame.columns, 0);
@@ -225,34 +225,34 @@ static void test_a_failed_read_leaves_the_frame_empty_even_for_bad_arguments(voi
 static void test_formatting_into_no_buffer_reports_the_bytes_needed(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(40, 5.0, 2, DS_SAP);
+    ds_sim *sim = test_create(40, 5.0, 2, DS_BROADPHASE_SAP);
     for (int velocities = 0; velocities <= 1; ++velocities) {
         size_t need = 12345;
-        assert_int_equal(ds_format_frame(sim, velocities, NULL, 0, &need), DS_ERR_ARG);
-        size_t cap = ds_frame_size(sim, velocities), len = 0;
+        assert_int_equal(ds_frame_format(sim, velocities, NULL, 0, &need, NULL), DS_ERR_ARG);
+        size_t cap = ds_frame_get_size(sim, velocities), len = 0;
         char *buf = malloc(cap);
         assert_non_null(buf);
-        assert_int_equal(ds_format_frame(sim, velocities, buf, cap, &len), DS_OK);
+        assert_int_equal(ds_frame_format(sim, velocities, buf, cap, &len, NULL), DS_OK);
         assert_int_equal(need, len);
         free(buf);
     }
     /* A NULL buffer that claims a capacity is still refused, and says 0. */
     size_t need = 12345;
-    assert_int_equal(ds_format_frame(sim, 0, NULL, 10, &need), DS_ERR_ARG);
-    assert_int_equal(ds_format_frame(NULL, 0, NULL, 0, &need), DS_ERR_ARG);
+    assert_int_equal(ds_frame_format(sim, 0, NULL, 10, &need, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_frame_format(NULL, 0, NULL, 0, &need, NULL), DS_ERR_ARG);
     assert_int_equal(need, 0);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_memory_needed_refuses_a_null_result_pointer(void **state)
 {
     (void)state;
-    ds_params p = ds_default_params(400, 5.0);
-    assert_int_equal(ds_memory_needed(&p, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_memory_needed(NULL, NULL), DS_ERR_ARG);
+    ds_params p = ds_params_default(400, 5.0);
+    assert_int_equal(ds_params_memory(&p, NULL, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_params_memory(NULL, NULL, NULL, NULL), DS_ERR_ARG);
     size_t bytes = 0;
-    assert_int_equal(ds_memory_needed(NULL, &bytes), DS_ERR_ARG);
-    assert_int_equal(ds_memory_needed(&p, &bytes), DS_OK);
+    assert_int_equal(ds_params_memory(NULL, NULL, &bytes, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_params_memory(&p, NULL, &bytes, NULL), DS_OK);
     assert_true(bytes >= 400 * 4 * sizeof(double)); /* x, y, vx, vy at least */
 }
 
@@ -260,15 +260,15 @@ static void test_bad_parameters_are_refused_with_arg_error(void **state)
 {
     (void)state;
     ds_sim *sim = NULL;
-    ds_params p = ds_default_params(10, 5.0);
+    ds_params p = ds_params_default(10, 5.0);
     p.radius = NAN;
-    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_ERR_ARG);
     p.radius = 500.0; /* a disk as wide as the box has nowhere to go */
-    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
-    p = ds_default_params(0, 5.0);
-    assert_int_equal(ds_create(&p, &sim), DS_ERR_ARG);
-    p = ds_default_params(100000, 50.0);
-    assert_int_equal(ds_create(&p, &sim), DS_ERR_PLACEMENT);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_ERR_ARG);
+    p = ds_params_default(0, 5.0);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_ERR_ARG);
+    p = ds_params_default(100000, 50.0);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_ERR_PLACEMENT);
     assert_null(sim);
 }
 
@@ -282,7 +282,7 @@ static void test_an_allocation_failure_is_reported_not_fatal(void **state)
     if (preload && strstr(preload, "vgpreload"))
         skip(); /* valgrind replaces malloc and ignores the limit */
     /* In a child limited to 256 MiB of address space, 20 million disks
-     * (~900 MB of arrays) cannot be allocated: ds_create must say so. */
+     * (~900 MB of arrays) cannot be allocated: ds_sim_create must say so. */
     fflush(NULL);
     pid_t pid = fork();
     assert_true(pid >= 0);
@@ -290,9 +290,9 @@ static void test_an_allocation_failure_is_reported_not_fatal(void **state)
         struct rlimit rl = {(rlim_t)256 << 20, (rlim_t)256 << 20};
         if (setrlimit(RLIMIT_AS, &rl) != 0)
             _exit(2);
-        ds_params p = ds_default_params(20000000, 0.01);
+        ds_params p = ds_params_default(20000000, 0.01);
         ds_sim *sim = NULL;
-        ds_status st = ds_create(&p, &sim);
+        ds_status st = ds_sim_create(&p, NULL, &sim, NULL);
         _exit(st == DS_ERR_NOMEM && sim == NULL ? 0 : 1);
     }
     int ws = 0;
@@ -306,21 +306,21 @@ static void test_two_simulations_in_one_process_do_not_interfere(void **state)
     (void)state;
     /* Same seed: a and c must stay identical while b, stepped in between,
      * must not disturb them (no hidden shared state). */
-    ds_sim *a = test_create(100, 5.0, 3, DS_SAP);
-    ds_sim *b = test_create(200, 3.0, 4, DS_BRUTE_FORCE);
-    ds_sim *c = test_create(100, 5.0, 3, DS_SAP);
+    ds_sim *a = test_create(100, 5.0, 3, DS_BROADPHASE_SAP);
+    ds_sim *b = test_create(200, 3.0, 4, DS_BROADPHASE_BRUTE);
+    ds_sim *c = test_create(100, 5.0, 3, DS_BROADPHASE_SAP);
     for (int k = 0; k < 50; ++k) {
-        ds_step(a);
-        ds_run(b, 3);
-        ds_step(c);
+        ds_sim_step(a, NULL);
+        ds_sim_run(b, 3, NULL);
+        ds_sim_step(c, NULL);
     }
     for (size_t i = 0; i < 100; ++i) {
-        ds_disk da = ds_get(a, i), dc = ds_get(c, i);
+        ds_disk da = ds_sim_get_disk(a, i), dc = ds_sim_get_disk(c, i);
         assert_true(da.x == dc.x && da.y == dc.y && da.vx == dc.vx && da.vy == dc.vy);
     }
-    ds_destroy(a);
-    ds_destroy(b);
-    ds_destroy(c);
+    ds_sim_destroy(a);
+    ds_sim_destroy(b);
+    ds_sim_destroy(c);
 }
 
 int main(void)

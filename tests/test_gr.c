@@ -157,15 +157,15 @@ static void test_a_dilute_random_gas_is_empty_inside_contact_and_ideal_beyond(vo
 static void test_a_walled_frame_from_the_library_has_nothing_inside_contact(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(500, 8.0, 3, DS_AUTO);
-    ds_run(sim, 50);
+    ds_sim *sim = test_create(500, 8.0, 3, DS_BROADPHASE_AUTO);
+    ds_sim_run(sim, 50, NULL);
     char path[128];
     path_in_dir(path, sizeof path, "walls.txt");
     FILE *f = fopen(path, "w");
     assert_non_null(f);
-    assert_int_equal(ds_write_frame(sim, f), DS_OK);
+    assert_int_equal(ds_frame_write(sim, 0, f, NULL), DS_OK);
     assert_int_equal(fclose(f), 0);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     static result res;
     char args[256];
     snprintf(args, sizeof args, "--dr 1 '%s'", path);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Bond-orientational order: psi6 per disk (ds_local_psi6) on arrangements
+/* Bond-orientational order: psi6 per disk (ds_psi6_local) on arrangements
  * whose answer is known exactly, against an all-pairs reference, across a
- * periodic seam, and the global ds_psi6 of a crystal and of a gas. */
+ * periodic seam, and the global ds_sim_get_psi6 of a crystal and of a gas. */
 #include "test_util.h"
 
 #define PI 3.14159265358979323846
@@ -18,19 +18,20 @@ static void near_or_fail(double a, double b, double tol, const char *what, const
 }
 
 /* All pairs with atan2 and cos/sin: slow, obvious, and independent of the
- * cell grid and of the complex powers the library uses. */
+ * cell grid and of the complex powers the library uses; the nearest image
+ * along a periodic axis (a channel: along x only). */
 static void reference_psi6(size_t n, const double *x, const double *y, double bx, double by,
-                           int periodic, double cutoff, double *re, double *im)
+                           int periodic_x, int periodic_y, double cutoff, double *re, double *im)
 {
     for (size_t j = 0; j < n; ++j) {
         double sr = 0.0, si = 0.0;
         size_t bonds = 0;
         for (size_t k = 0; k < n; ++k) {
             double dx = x[k] - x[j], dy = y[k] - y[j];
-            if (periodic) {
+            if (periodic_x)
                 dx -= bx * round(dx / bx);
+            if (periodic_y)
                 dy -= by * round(dy / by);
-            }
             if (k == j || !(dx * dx + dy * dy < cutoff * cutoff))
                 continue;
             const double theta = atan2(dy, dx);
@@ -69,7 +70,8 @@ static void test_six_neighbours_at_sixty_degrees_give_one(void **state)
         x[k + 1] = 50.0 + cos(tilt + k * PI / 3.0);
         y[k + 1] = 50.0 + sin(tilt + k * PI / 3.0);
     }
-    assert_int_equal(ds_local_psi6(7, x, y, 100.0, 100.0, DS_WALLS, 1.2, re, im), DS_OK);
+    assert_int_equal(ds_psi6_local(7, x, y, 100.0, 100.0, DS_BOUNDARY_WALLS, 1.2, re, im, NULL),
+                     DS_OK);
     /* Six unit vectors summed by a few products each: rounding only. */
     assert_near(hypot(re[0], im[0]), 1.0, 1e-14);
     assert_near(atan2(im[0], re[0]), 6.0 * tilt, 1e-13);
@@ -92,8 +94,10 @@ static void test_rotating_the_disks_turns_psi6_by_six_times_the_angle(void **sta
         rx[j] = 50.0 + c * (x[j] - 50.0) - s * (y[j] - 50.0);
         ry[j] = 50.0 + s * (x[j] - 50.0) + c * (y[j] - 50.0);
     }
-    assert_int_equal(ds_local_psi6(N, x, y, 100.0, 100.0, DS_WALLS, 1.4, re, im), DS_OK);
-    assert_int_equal(ds_local_psi6(N, rx, ry, 100.0, 100.0, DS_WALLS, 1.4, rre, rim), DS_OK);
+    assert_int_equal(ds_psi6_local(N, x, y, 100.0, 100.0, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_OK);
+    assert_int_equal(ds_psi6_local(N, rx, ry, 100.0, 100.0, DS_BOUNDARY_WALLS, 1.4, rre, rim, NULL),
+                     DS_OK);
     const double turn_re = cos(6.0 * a), turn_im = sin(6.0 * a);
     for (size_t j = 0; j < N; ++j) {
         /* The jittered neighbours are 0.72 to 1.28 apart or beyond 1.45:
@@ -114,7 +118,8 @@ static void test_a_square_lattice_has_no_sixfold_order(void **state)
     }
     /* Periodic, so every disk has its four neighbours at 90 degrees:
      * exp(6 i k pi/2) = (-1)^k sums to 0. The diagonals (1.41) are out. */
-    assert_int_equal(ds_local_psi6(N, x, y, SIDE, SIDE, DS_PERIODIC, 1.2, re, im), DS_OK);
+    assert_int_equal(ds_psi6_local(N, x, y, SIDE, SIDE, DS_BOUNDARY_PERIODIC, 1.2, re, im, NULL),
+                     DS_OK);
     for (size_t j = 0; j < N; ++j) {
         assert_near(re[j], 0.0, 1e-14);
         assert_near(im[j], 0.0, 1e-14);
@@ -141,8 +146,10 @@ static void test_neighbours_across_the_periodic_seam_count_as_interior_ones(void
         sx[j] -= bx * floor(sx[j] / bx);
         sy[j] -= by * floor(sy[j] / by);
     }
-    assert_int_equal(ds_local_psi6(N, x, y, bx, by, DS_PERIODIC, 1.4, re, im), DS_OK);
-    assert_int_equal(ds_local_psi6(N, sx, sy, bx, by, DS_PERIODIC, 1.4, sre, sim), DS_OK);
+    assert_int_equal(ds_psi6_local(N, x, y, bx, by, DS_BOUNDARY_PERIODIC, 1.4, re, im, NULL),
+                     DS_OK);
+    assert_int_equal(ds_psi6_local(N, sx, sy, bx, by, DS_BOUNDARY_PERIODIC, 1.4, sre, sim, NULL),
+                     DS_OK);
     double least = 1.0;
     for (size_t j = 0; j < N; ++j) {
         assert_near(sre[j], re[j], 1e-12);
@@ -163,8 +170,9 @@ static void test_the_cell_grid_finds_the_same_neighbours_as_all_pairs(void **sta
     /* Boxes of 1 to 9 cutoffs across: one and two cells per side are the
      * periodic grid's special cases (the cells left and right coincide). */
     const double sides[][2] = {{2.5, 2.5}, {4.1, 2.9}, {9.0, 30.0}, {25.0, 25.0}};
-    for (int periodic = 0; periodic < 2; ++periodic)
+    for (int boundary = 0; boundary < DS_BOUNDARY_COUNT; ++boundary)
         for (size_t b = 0; b < sizeof sides / sizeof sides[0]; ++b) {
+            const int px = boundary != DS_BOUNDARY_WALLS, py = boundary == DS_BOUNDARY_PERIODIC;
             const double bx = sides[b][0], by = sides[b][1], cutoff = 1.2;
             const size_t n = bx * by < 50.0 ? 40 : N;
             for (size_t j = 0; j < n; ++j) {
@@ -172,9 +180,8 @@ static void test_the_cell_grid_finds_the_same_neighbours_as_all_pairs(void **sta
                 y[j] = ds_rng_uniform(&rng, 0.0, by);
             }
             assert_int_equal(
-                ds_local_psi6(n, x, y, bx, by, periodic ? DS_PERIODIC : DS_WALLS, cutoff, re, im),
-                DS_OK);
-            reference_psi6(n, x, y, bx, by, periodic, cutoff, want_re, want_im);
+                ds_psi6_local(n, x, y, bx, by, (ds_boundary)boundary, cutoff, re, im, NULL), DS_OK);
+            reference_psi6(n, x, y, bx, by, px, py, cutoff, want_re, want_im);
             for (size_t j = 0; j < n; ++j) {
                 /* Powers against cos/sin of atan2: a few roundings each. */
                 assert_near(re[j], want_re[j], 1e-12);
@@ -187,7 +194,8 @@ static void test_a_disk_without_neighbours_has_zero_order(void **state)
 {
     (void)state;
     double x[3] = {10.0, 10.9, 80.0}, y[3] = {10.0, 10.0, 80.0}, re[3], im[3];
-    assert_int_equal(ds_local_psi6(3, x, y, 100.0, 100.0, DS_WALLS, 1.4, re, im), DS_OK);
+    assert_int_equal(ds_psi6_local(3, x, y, 100.0, 100.0, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_OK);
     assert_true(re[2] == 0.0 && im[2] == 0.0);
     /* A lone pair: one bond, |psi6| = 1 for both, the same phase (the
      * bond seen from either end differs by pi, and 6 pi is a full turn). */
@@ -201,7 +209,8 @@ static void test_a_tiny_cutoff_in_a_huge_box_allocates_a_bounded_grid(void **sta
     /* 10^18 cells of side 1e-9 would be wanted; the grid is capped at a
      * few per disk and still finds the one bond. */
     double x[2] = {1.0, 1.0 + 5e-10}, y[2] = {3.0, 3.0}, re[2], im[2];
-    assert_int_equal(ds_local_psi6(2, x, y, 1e9, 1e9, DS_WALLS, 1e-9, re, im), DS_OK);
+    assert_int_equal(ds_psi6_local(2, x, y, 1e9, 1e9, DS_BOUNDARY_WALLS, 1e-9, re, im, NULL),
+                     DS_OK);
     assert_near(re[0], 1.0, 1e-6);
     assert_near(re[1], 1.0, 1e-6);
 }
@@ -210,40 +219,57 @@ static void test_bad_arguments_are_refused(void **state)
 {
     (void)state;
     double x[2] = {1.0, 2.0}, y[2] = {1.0, 1.0}, re[2], im[2];
-    assert_int_equal(ds_local_psi6(2, NULL, y, 10, 10, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, NULL, 10, 10, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, DS_WALLS, 1.4, NULL, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, DS_WALLS, 1.4, re, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, NULL, y, 10, 10, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, NULL, 10, 10, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 1.4, NULL, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 1.4, re, NULL, NULL),
+                     DS_ERR_ARG);
     /* No disks: DS_OK, nothing read or written, as the header says. */
-    assert_int_equal(ds_local_psi6(0, NULL, NULL, 10, 10, DS_WALLS, 1.4, NULL, NULL), DS_OK);
-    assert_int_equal(ds_local_psi6(2, x, y, 0, 10, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, -1, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, INFINITY, 10, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, NAN, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, DS_WALLS, 0.0, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, DS_WALLS, NAN, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, DS_WALLS, INFINITY, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, (ds_boundary)7, 1.4, re, im), DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(0, NULL, NULL, 10, 10, DS_BOUNDARY_WALLS, 1.4, NULL, NULL, NULL),
+                     DS_OK);
+    assert_int_equal(ds_psi6_local(2, x, y, 0, 10, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, -1, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, INFINITY, 10, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, NAN, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 0.0, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, DS_BOUNDARY_WALLS, NAN, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, DS_BOUNDARY_WALLS, INFINITY, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, (ds_boundary)7, 1.4, re, im, NULL), DS_ERR_ARG);
     /* Periodic: the minimum image is unique only below half the shorter side. */
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 4, DS_PERIODIC, 2.0, re, im), DS_ERR_ARG);
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 4, DS_PERIODIC, 1.99, re, im), DS_OK);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 4, DS_BOUNDARY_PERIODIC, 2.0, re, im, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 4, DS_BOUNDARY_PERIODIC, 1.99, re, im, NULL),
+                     DS_OK);
     /* The same cutoff is fine with walls, where there are no images. */
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 4, DS_WALLS, 5.0, re, im), DS_OK);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 4, DS_BOUNDARY_WALLS, 5.0, re, im, NULL), DS_OK);
     x[1] = NAN;
-    assert_int_equal(ds_local_psi6(2, x, y, 10, 10, DS_WALLS, 1.4, re, im), DS_ERR_ARG);
+    assert_int_equal(ds_psi6_local(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 1.4, re, im, NULL),
+                     DS_ERR_ARG);
     /* No disks: nothing to do, nothing written. */
-    assert_int_equal(ds_local_psi6(0, x, y, 10, 10, DS_WALLS, 1.4, re, im), DS_OK);
-    assert_true(isnan(ds_psi6(NULL)));
+    assert_int_equal(ds_psi6_local(0, x, y, 10, 10, DS_BOUNDARY_WALLS, 1.4, re, im, NULL), DS_OK);
+    double psi6 = 0.0;
+    assert_int_equal(ds_sim_get_psi6(NULL, &psi6, NULL), DS_ERR_ARG);
+    assert_true(isnan(psi6));
 }
 
 static ds_sim *sim_at(size_t n, double eta, ds_placement placement, ds_integrator integrator)
 {
     /* eta = N pi R^2 / box^2 in the default 1000 x 1000 box. */
-    ds_params p = ds_default_params(n, sqrt(eta * 1e6 / (PI * (double)n)));
+    ds_params p = ds_params_default(n, sqrt(eta * 1e6 / (PI * (double)n)));
     p.placement = placement;
     p.integrator = integrator;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     return sim;
 }
 
@@ -252,49 +278,56 @@ static void test_a_dense_lattice_is_ordered(void **state)
     (void)state;
     /* The issue's target: the lattice at area fraction 0.85 with walls,
      * before and after it has moved a little, with either integrator. */
-    for (int e = 0; e < 2; ++e) {
-        ds_sim *sim = sim_at(4096, 0.85, DS_LATTICE, e ? DS_EVENT_DRIVEN : DS_TIME_STEP);
-        const double start = ds_psi6(sim);
-        print_message("lattice at 0.85 (%s): psi6 = %.6f\n", e ? "event" : "step", start);
+    for (int e = 0; e < DS_INTEGRATOR_COUNT; ++e) {
+        ds_sim *sim = sim_at(4096, 0.85, DS_PLACEMENT_LATTICE, (ds_integrator)e);
+        const double start = psi6_of(sim);
+        print_message("lattice at 0.85 (%s): psi6 = %.6f\n", ds_integrator_name((ds_integrator)e),
+                      start);
         assert_true(start > 0.99);
         /* A short run: the crystal vibrates but keeps its orientation. */
-        ds_run(sim, 20);
-        assert_true(ds_psi6(sim) > 0.9);
-        ds_destroy(sim);
+        ds_sim_run(sim, 20, NULL);
+        assert_true(psi6_of(sim) > 0.9);
+        ds_sim_destroy(sim);
     }
 }
 
 static void test_a_periodic_lattice_is_ordered_and_a_tiny_periodic_box_has_no_psi6(void **state)
 {
     (void)state;
-    ds_params p = ds_default_params(4096, sqrt(0.85 * 1e6 / (PI * 4096.0)));
-    p.placement = DS_LATTICE;
-    p.boundary = DS_PERIODIC;
+    ds_params p = ds_params_default(4096, sqrt(0.85 * 1e6 / (PI * 4096.0)));
+    p.placement = DS_PLACEMENT_LATTICE;
+    p.boundary = DS_BOUNDARY_PERIODIC;
     ds_sim *sim = NULL;
-    if (ds_create(&p, &sim) == DS_ERR_ARG) {
+    if (ds_sim_create(&p, NULL, &sim, NULL) == DS_ERR_ARG) {
         print_message("skipped: this build has no periodic boxes\n");
         skip();
     }
     assert_non_null(sim);
     /* The bonds across the seams count: as ordered as with walls. */
-    assert_true(ds_psi6(sim) > 0.99);
-    ds_destroy(sim);
+    assert_true(psi6_of(sim) > 0.99);
+    ds_sim_destroy(sim);
     /* A box 50 wide holds one disk of R = 10, but the cutoff 1.4 d = 28 is
-     * more than half of it: no unique nearest image, NaN. */
-    p = ds_default_params(1, 10.0);
+     * more than half of it: no unique nearest image, a refusal that names
+     * the box and the least it may be (2 cutoffs), psi6 NaN. */
+    p = ds_params_default(1, 10.0);
     p.box = 50.0;
-    p.boundary = DS_PERIODIC;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
-    assert_true(isnan(ds_psi6(sim)));
-    ds_destroy(sim);
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    double psi6 = 0.0;
+    ds_error err;
+    assert_int_equal(ds_sim_get_psi6(sim, &psi6, &err), DS_ERR_ARG);
+    assert_true(isnan(psi6));
+    assert_string_equal(err.field, "box");
+    assert_true(err.value == 50.0 && err.limit == 2.0 * 28.0);
+    ds_sim_destroy(sim);
 }
 
 static void test_a_dilute_gas_has_no_global_order(void **state)
 {
     (void)state;
     const size_t n = 1000;
-    ds_sim *sim = sim_at(n, 0.05, DS_RANDOM, DS_TIME_STEP);
-    const double psi6 = ds_psi6(sim);
+    ds_sim *sim = sim_at(n, 0.05, DS_PLACEMENT_RANDOM, DS_INTEGRATOR_TIME_STEP);
+    const double psi6 = psi6_of(sim);
     print_message("random gas at 0.05: psi6 = %.4f, bound %.4f\n", psi6, 5.0 / sqrt((double)n));
     /* The phases of the disks with a neighbour (about a sixth of them at
      * this density) are uniform on the circle, so the sum of N terms of
@@ -304,7 +337,7 @@ static void test_a_dilute_gas_has_no_global_order(void **state)
      * standard deviations of the worst case. */
     assert_true(psi6 >= 0.0);
     assert_true(psi6 < 5.0 / sqrt((double)n));
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 int main(void)

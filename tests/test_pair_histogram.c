@@ -37,7 +37,9 @@ static void test_a_square_lattice_gives_exact_shell_counts(void **state)
         y[k] = a * (double)(k / M) + 0.5 * a;
     }
     uint64_t counts[BINS];
-    assert_int_equal(ds_pair_histogram(N, x, y, side, side, DS_PERIODIC, dr, BINS, counts), DS_OK);
+    assert_int_equal(
+        ds_pair_histogram(N, x, y, side, side, DS_BOUNDARY_PERIODIC, dr, BINS, counts, NULL),
+        DS_OK);
     /* The bins that hold a, a sqrt 2 and 2 a, up to rounding either way. */
     uint64_t at_a = 0, at_diagonal = 0, at_2a = 0, total = 0;
     for (size_t b = 0; b < BINS; ++b) {
@@ -77,9 +79,10 @@ static void check_against_brute_force(int periodic, double shift)
     }
     uint64_t got[BINS], want[BINS];
     brute_force(N, x, y, bx, by, periodic, dr, BINS, want);
-    assert_int_equal(
-        ds_pair_histogram(N, x, y, bx, by, periodic ? DS_PERIODIC : DS_WALLS, dr, BINS, got),
-        DS_OK);
+    assert_int_equal(ds_pair_histogram(N, x, y, bx, by,
+                                       periodic ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_WALLS, dr,
+                                       BINS, got, NULL),
+                     DS_OK);
     uint64_t pairs = 0;
     for (size_t b = 0; b < BINS; ++b) {
         assert_int_equal(got[b], want[b]);
@@ -106,17 +109,29 @@ static void test_bad_arguments_are_refused(void **state)
     (void)state;
     double x[2] = {1.0, 2.0}, y[2] = {1.0, 1.0};
     uint64_t c[4];
-    assert_int_equal(ds_pair_histogram(2, NULL, y, 10, 10, DS_WALLS, 1, 4, c), DS_ERR_ARG);
-    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_WALLS, 1, 4, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_WALLS, 1, 0, c), DS_ERR_ARG);
-    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_WALLS, NAN, 4, c), DS_ERR_ARG);
-    assert_int_equal(ds_pair_histogram(2, x, y, -1, 10, DS_WALLS, 1, 4, c), DS_ERR_ARG);
-    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, (ds_boundary)5, 1, 4, c), DS_ERR_ARG);
-    /* A periodic range past half the shorter side. */
-    assert_int_equal(ds_pair_histogram(2, x, y, 10, 6, DS_PERIODIC, 1, 4, c), DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(2, NULL, y, 10, 10, DS_BOUNDARY_WALLS, 1, 4, c, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 1, 4, NULL, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 1, 0, c, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_BOUNDARY_WALLS, NAN, 4, c, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(2, x, y, -1, 10, DS_BOUNDARY_WALLS, 1, 4, c, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, (ds_boundary)5, 1, 4, c, NULL), DS_ERR_ARG);
+    /* A periodic range past half the shorter side, named with its limit. */
+    ds_error err;
+    assert_int_equal(ds_pair_histogram(2, x, y, 10, 6, DS_BOUNDARY_PERIODIC, 1, 4, c, &err),
+                     DS_ERR_ARG);
+    assert_int_equal(err.status, DS_ERR_ARG);
+    assert_string_equal(err.field, "dr");
+    assert_true(err.value == 4.0 && err.limit == 3.0);
     x[1] = INFINITY;
-    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_WALLS, 1, 4, c), DS_ERR_ARG);
-    assert_int_equal(ds_pair_histogram(0, NULL, NULL, 10, 10, DS_WALLS, 1, 4, c), DS_OK);
+    assert_int_equal(ds_pair_histogram(2, x, y, 10, 10, DS_BOUNDARY_WALLS, 1, 4, c, NULL),
+                     DS_ERR_ARG);
+    assert_int_equal(ds_pair_histogram(0, NULL, NULL, 10, 10, DS_BOUNDARY_WALLS, 1, 4, c, NULL),
+                     DS_OK);
     for (int b = 0; b < 4; ++b)
         assert_int_equal(c[b], 0);
 }

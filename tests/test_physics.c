@@ -29,7 +29,7 @@ static double max_speed(const ds_sim *sim)
 
 static double mean_square_speed(const ds_sim *sim)
 {
-    return 2.0 * ds_kinetic_energy(sim) / (double)sim->world.n;
+    return 2.0 * ds_sim_get_kinetic_energy(sim) / (double)sim->world.n;
 }
 
 /* ------------------------------------------------------------------ */
@@ -39,17 +39,17 @@ static double mean_square_speed(const ds_sim *sim)
 static void test_observables_of_a_hand_placed_state_are_exact(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(2, 5.0, 1, DS_SAP);
+    ds_sim *sim = test_create(2, 5.0, 1, DS_BROADPHASE_SAP);
     ds_disk a = {100.0, 100.0, 3.0, 4.0}, b = {500.0, 500.0, -1.0, 2.0};
-    assert_int_equal(ds_set(sim, 0, a), DS_OK);
-    assert_int_equal(ds_set(sim, 1, b), DS_OK);
+    assert_int_equal(ds_sim_set_disk(sim, 0, a, NULL), DS_OK);
+    assert_int_equal(ds_sim_set_disk(sim, 1, b, NULL), DS_OK);
     double px, py;
-    ds_momentum(sim, &px, &py);
+    ds_sim_get_momentum(sim, &px, &py);
     /* Small integers: every sum is exact in binary floating point. */
-    assert_true(ds_kinetic_energy(sim) == 0.5 * (25.0 + 5.0));
+    assert_true(ds_sim_get_kinetic_energy(sim) == 0.5 * (25.0 + 5.0));
     assert_true(px == 2.0 && py == 6.0);
-    assert_true(ds_pressure(sim) == 0.0); /* no time has passed: defined as 0 */
-    ds_destroy(sim);
+    assert_true(ds_sim_get_pressure(sim) == 0.0); /* no time has passed: defined as 0 */
+    ds_sim_destroy(sim);
 }
 
 static void test_one_disk_bouncing_gives_the_ideal_gas_pressure_less_the_step_bias(void **state)
@@ -64,21 +64,21 @@ static void test_one_disk_bouncing_gives_the_ideal_gas_pressure_less_the_step_bi
      * longer than L/v = 15872 steps, so the measured pressure is exactly
      * 15872/15874 of the ideal value: the fixed-step bias, v dt / L. */
     const double r = 4.0, v = 64.0, span = 992.0;
-    ds_params p = ds_default_params(1, r);
+    ds_params p = ds_params_default(1, r);
     p.dt = 1.0 / 1024.0;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     ds_disk d = {500.0, 500.0, v, 0.0};
-    assert_int_equal(ds_set(sim, 0, d), DS_OK);
-    ds_run(sim, 7937); /* to x = 996 + 1/16: the first reflection */
-    assert_int_equal(ds_wall_count(sim), 1);
-    ds_reset_observables(sim);
-    ds_run(sim, 20 * 15874); /* ten round trips */
-    assert_int_equal(ds_wall_count(sim), 20);
-    assert_true(ds_wall_impulse(sim) == 20 * 2.0 * v);
+    assert_int_equal(ds_sim_set_disk(sim, 0, d, NULL), DS_OK);
+    ds_sim_run(sim, 7937, NULL); /* to x = 996 + 1/16: the first reflection */
+    assert_int_equal(ds_sim_get_wall_count(sim), 1);
+    ds_sim_reset_observables(sim);
+    ds_sim_run(sim, 20 * 15874, NULL); /* ten round trips */
+    assert_int_equal(ds_sim_get_wall_count(sim), 20);
+    assert_true(ds_sim_get_wall_impulse(sim) == 20 * 2.0 * v);
     const double ideal = v * v / 2.0 / (span * span);
-    assert_true(fabs(ds_pressure(sim) / ideal - 15872.0 / 15874.0) < 1e-12);
-    ds_destroy(sim);
+    assert_true(fabs(ds_sim_get_pressure(sim) / ideal - 15872.0 / 15874.0) < 1e-12);
+    ds_sim_destroy(sim);
 }
 
 /* ------------------------------------------------------------------ */
@@ -93,13 +93,13 @@ static void test_kinetic_energy_is_conserved_over_50000_steps(void **state)
      * floating point, ~1e-16 relative to the pair, so ~1e-16 / N relative to
      * the total. Even adding every collision's error in the same direction,
      * 10^4..10^5 collisions give < 1e-11, and the sum over N disks in
-     * ds_kinetic_energy adds N eps ~ 1e-13: 1e-9 has a margin of 100. */
-    ds_sim *sim = test_create(400, 5.0, 7, DS_AUTO);
-    const double e0 = ds_kinetic_energy(sim);
-    ds_run(sim, long_run(50000));
-    assert_true(ds_collision_count(sim) > 1000); /* the gas did collide */
-    assert_true(fabs(ds_kinetic_energy(sim) - e0) <= 1e-9 * e0);
-    ds_destroy(sim);
+     * ds_sim_get_kinetic_energy adds N eps ~ 1e-13: 1e-9 has a margin of 100. */
+    ds_sim *sim = test_create(400, 5.0, 7, DS_BROADPHASE_AUTO);
+    const double e0 = ds_sim_get_kinetic_energy(sim);
+    ds_sim_run(sim, long_run(50000), NULL);
+    assert_true(ds_sim_get_collision_count(sim) > 1000); /* the gas did collide */
+    assert_true(fabs(ds_sim_get_kinetic_energy(sim) - e0) <= 1e-9 * e0);
+    ds_sim_destroy(sim);
 }
 
 static void test_momentum_is_conserved_when_the_walls_are_out_of_reach(void **state)
@@ -111,30 +111,30 @@ static void test_momentum_is_conserved_when_the_walls_are_out_of_reach(void **st
      * (all the energy in one disk), so in 5 s none travels more than 1e4,
      * far from the walls 5e4 away: no wall can be involved. */
     const size_t side = 20, n = side * side;
-    ds_params p = ds_default_params(n, 5.0);
+    ds_params p = ds_params_default(n, 5.0);
     p.box = 1e5;
     p.seed = 3;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     ds_rng rng;
     ds_rng_seed(&rng, 11);
     for (size_t i = 0; i < n; ++i) {
         double a = ds_rng_uniform(&rng, 0.0, DS_TWO_PI);
         ds_disk d = {5e4 + 12.0 * (double)(i % side), 5e4 + 12.0 * (double)(i / side),
                      100.0 * cos(a), 100.0 * sin(a)};
-        assert_int_equal(ds_set(sim, i, d), DS_OK);
+        assert_int_equal(ds_sim_set_disk(sim, i, d, NULL), DS_OK);
     }
     double px0, py0, px, py;
-    ds_momentum(sim, &px0, &py0);
-    const double vmax = sqrt(2.0 * ds_kinetic_energy(sim));
-    ds_run(sim, long_run(5000));
-    ds_momentum(sim, &px, &py);
-    assert_int_equal(ds_wall_count(sim), 0);
-    assert_true(ds_collision_count(sim) > 100);
-    const double bound = momentum_rounding_bound(ds_collision_count(sim), vmax, n);
+    ds_sim_get_momentum(sim, &px0, &py0);
+    const double vmax = sqrt(2.0 * ds_sim_get_kinetic_energy(sim));
+    ds_sim_run(sim, long_run(5000), NULL);
+    ds_sim_get_momentum(sim, &px, &py);
+    assert_int_equal(ds_sim_get_wall_count(sim), 0);
+    assert_true(ds_sim_get_collision_count(sim) > 100);
+    const double bound = momentum_rounding_bound(ds_sim_get_collision_count(sim), vmax, n);
     assert_true(fabs(px - px0) <= bound);
     assert_true(fabs(py - py0) <= bound);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_momentum_changes_only_on_steps_with_wall_reflections(void **state)
@@ -143,19 +143,19 @@ static void test_momentum_changes_only_on_steps_with_wall_reflections(void **sta
     /* In the ordinary box, step by step: a step without a wall reflection
      * keeps the momentum within the rounding bound above, and the walls do
      * change it (by 2|v_n| each, so by far more than rounding). */
-    ds_sim *sim = test_create(400, 5.0, 5, DS_AUTO);
-    const double vmax = sqrt(2.0 * ds_kinetic_energy(sim));
+    ds_sim *sim = test_create(400, 5.0, 5, DS_BROADPHASE_AUTO);
+    const double vmax = sqrt(2.0 * ds_sim_get_kinetic_energy(sim));
     uint64_t quiet_steps_with_collisions = 0, wall_steps = 0;
     double px0, py0;
-    ds_momentum(sim, &px0, &py0);
+    ds_sim_get_momentum(sim, &px0, &py0);
     for (int s = 0; s < (int)long_run(5000); ++s) {
-        uint64_t walls = ds_wall_count(sim), pairs = ds_collision_count(sim);
-        ds_step(sim);
+        uint64_t walls = ds_sim_get_wall_count(sim), pairs = ds_sim_get_collision_count(sim);
+        ds_sim_step(sim, NULL);
         double px, py;
-        ds_momentum(sim, &px, &py);
+        ds_sim_get_momentum(sim, &px, &py);
         double change = fabs(px - px0) + fabs(py - py0);
-        if (ds_wall_count(sim) == walls) {
-            uint64_t collided = ds_collision_count(sim) - pairs;
+        if (ds_sim_get_wall_count(sim) == walls) {
+            uint64_t collided = ds_sim_get_collision_count(sim) - pairs;
             quiet_steps_with_collisions += collided > 0;
             assert_true(change <= momentum_rounding_bound(collided, vmax, 400));
         } else {
@@ -167,7 +167,7 @@ static void test_momentum_changes_only_on_steps_with_wall_reflections(void **sta
     /* Both kinds of step happened, so both branches were exercised. */
     assert_true(quiet_steps_with_collisions > 10);
     assert_true(wall_steps > 10);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 /* ------------------------------------------------------------------ */
@@ -179,11 +179,11 @@ static void test_speeds_start_equal_and_fail_the_rayleigh_ks_test(void **state)
     (void)state;
     /* Every speed is 100 = sqrt(<v^2>): the empirical CDF jumps from 0 to 1
      * where Rayleigh is 1 - 1/e, so D = 1 - 1/e = 0.632 exactly. */
-    ds_sim *sim = test_create(2000, 3.0, 2, DS_AUTO);
+    ds_sim *sim = test_create(2000, 3.0, 2, DS_BROADPHASE_AUTO);
     double d = ks_distance_to_rayleigh(sim);
     assert_true(fabs(d - (1.0 - exp(-1.0))) < 1e-9);
     assert_true(d > ks_critical_1_percent(2000));
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_speeds_relax_to_rayleigh_within_20_time_units(void **state)
@@ -197,11 +197,11 @@ static void test_speeds_relax_to_rayleigh_within_20_time_units(void **state)
      * units with 500 disks of R = 6 (mean free path 59, still ~30). */
     const size_t n = quick_mode() ? 500 : 2000;
     const double r = quick_mode() ? 6.0 : 3.0;
-    ds_sim *sim = test_create(n, r, 2, DS_AUTO);
-    ds_run(sim, 20000);
+    ds_sim *sim = test_create(n, r, 2, DS_BROADPHASE_AUTO);
+    ds_sim_run(sim, 20000, NULL);
     double d = ks_distance_to_rayleigh(sim);
     assert_true(d < ks_critical_1_percent(n));
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 /* ------------------------------------------------------------------ */
@@ -213,15 +213,15 @@ static void test_speeds_relax_to_rayleigh_within_20_time_units(void **state)
 static double pressure_over_ideal(size_t n, double r, uint64_t relax, uint64_t measure,
                                   uint64_t *hits)
 {
-    ds_sim *sim = test_create(n, r, 9, DS_AUTO);
-    ds_run(sim, relax);
-    ds_reset_observables(sim);
-    ds_run(sim, measure);
-    double span = ds_box(sim) - 2.0 * r;
+    ds_sim *sim = test_create(n, r, 9, DS_BROADPHASE_AUTO);
+    ds_sim_run(sim, relax, NULL);
+    ds_sim_reset_observables(sim);
+    ds_sim_run(sim, measure, NULL);
+    double span = ds_sim_get_box_width(sim) - 2.0 * r;
     double ideal = (double)n * mean_square_speed(sim) / 2.0 / (span * span);
-    double ratio = ds_pressure(sim) / ideal;
-    *hits = ds_wall_count(sim);
-    ds_destroy(sim);
+    double ratio = ds_sim_get_pressure(sim) / ideal;
+    *hits = ds_sim_get_wall_count(sim);
+    ds_sim_destroy(sim);
     return ratio;
 }
 
@@ -283,11 +283,11 @@ static void test_no_disks_stick_or_leak_over_50000_steps(void **state)
      * wall is crossed by at most |v| dt before the reflection. vmax is the
      * largest speed seen during the run (checked after every step). */
     const double r = 5.0, dt = 0.001, box = 1000.0;
-    ds_sim *sim = test_create(400, r, 13, DS_AUTO);
+    ds_sim *sim = test_create(400, r, 13, DS_BROADPHASE_AUTO);
     double vmax = max_speed(sim), worst_overlap = 0.0, worst_leak = 0.0;
     const uint64_t steps = long_run(50000);
     for (uint64_t s = 1; s <= steps; ++s) {
-        ds_step(sim);
+        ds_sim_step(sim, NULL);
         double v = max_speed(sim);
         if (v > vmax)
             vmax = v;
@@ -308,7 +308,7 @@ static void test_no_disks_stick_or_leak_over_50000_steps(void **state)
     }
     assert_true(worst_overlap <= 2.0 * vmax * dt);
     assert_true(worst_leak <= vmax * dt);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 int main(void)

@@ -18,7 +18,7 @@
 static ds_transport *new_transport(size_t n, size_t lags, size_t every)
 {
     ds_transport *tr = NULL;
-    assert_int_equal(ds_transport_create(n, lags, every, &tr), DS_OK);
+    assert_int_equal(ds_transport_create(n, lags, every, &tr, NULL), DS_OK);
     assert_non_null(tr);
     return tr;
 }
@@ -49,12 +49,13 @@ static void matches_the_direct_average(size_t lags, size_t every)
     double *data = random_walk(n, m);
     ds_transport *tr = new_transport(n, lags, every);
     for (size_t j = 0; j < m; ++j)
-        assert_int_equal(ds_transport_add(tr, data + j * 4 * n, data + j * 4 * n + 2 * n), DS_OK);
+        assert_int_equal(ds_transport_add(tr, data + j * 4 * n, data + j * 4 * n + 2 * n, NULL),
+                         DS_OK);
     double msd[16], vacf[16];
     uint64_t origins[16];
     assert_true(lags <= 16);
-    assert_int_equal(ds_transport_lags(tr), lags);
-    assert_int_equal(ds_transport_get(tr, msd, vacf, origins), DS_OK);
+    assert_int_equal(ds_transport_get_lags(tr), lags);
+    assert_int_equal(ds_transport_get(tr, msd, vacf, origins, NULL), DS_OK);
     for (size_t k = 0; k < lags; ++k) {
         double want_msd = 0.0, want_vacf = 0.0;
         uint64_t count = 0;
@@ -97,28 +98,28 @@ static void test_sparse_origins_match_the_direct_average(void **state)
  * ever collides. Over both disks msd = (5/4) t^2 / 2, vacf = (5/4) / 2. */
 static void free_flight(ds_integrator integ)
 {
-    ds_params p = ds_default_params(2, 0.5);
+    ds_params p = ds_params_default(2, 0.5);
     p.box = 10.0;
-    p.boundary = DS_PERIODIC;
+    p.boundary = DS_BOUNDARY_PERIODIC;
     p.integrator = integ;
     p.speed = 1.0;
     p.dt = 0.01;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     const ds_disk start[2] = {{8.0, 7.5, 1.0, -0.5}, {5.0, 2.5, 0.0, 0.0}};
-    ds_state_error err;
-    assert_int_equal(ds_set_all(sim, start, &err), DS_OK);
+    ds_error err;
+    assert_int_equal(ds_sim_set_disks(sim, start, &err), DS_OK);
     enum { LAGS = 40, SAMPLES = 300, STEPS_PER_SAMPLE = 10 };
     const double h = STEPS_PER_SAMPLE * p.dt;
     ds_transport *tr = new_transport(2, LAGS, 3);
     for (int s = 0; s < SAMPLES; ++s) {
         if (s)
-            ds_run(sim, STEPS_PER_SAMPLE);
-        assert_int_equal(ds_transport_sample(tr, sim), DS_OK);
+            ds_sim_run(sim, STEPS_PER_SAMPLE, NULL);
+        assert_int_equal(ds_transport_sample(tr, sim, NULL), DS_OK);
     }
-    assert_int_equal(ds_collision_count(sim), 0);
+    assert_int_equal(ds_sim_get_collision_count(sim), 0);
     double msd[LAGS], vacf[LAGS];
-    assert_int_equal(ds_transport_get(tr, msd, vacf, NULL), DS_OK);
+    assert_int_equal(ds_transport_get(tr, msd, vacf, NULL, NULL), DS_OK);
     /* The header's bound on an unwrapped coordinate after s steps or
      * events: (s + 2) eps (box + |x|), here s <= 3000 steps (or as many
      * crossing events), |x| <= 8 + 30; each end of a displacement errs
@@ -131,72 +132,74 @@ static void free_flight(ds_integrator integ)
         assert_true(vacf[k] == 0.625); /* 5/8: every product and sum is exact */
     }
     double einstein, green_kubo;
-    assert_int_equal(ds_transport_diffusion(tr, h, 10, 39, &einstein, &green_kubo), DS_OK);
+    assert_int_equal(ds_transport_get_diffusion(tr, h, 10, 39, &einstein, &green_kubo, NULL),
+                     DS_OK);
     const double want = 0.625 * (10 + 39) * h / 4.0;
     /* Einstein: the msd's error over 4 (b - a) h; Green-Kubo: trapezoids
      * of a constant and of a linear function are exact, so rounding only. */
     assert_true(fabs(einstein - want) <= 4.0 * sqrt(2.0) * 1.25 * 4.0 * u / (4.0 * 29 * h) + 1e-14);
     assert_true(fabs(green_kubo - want) <= 1e-13 * want);
     ds_transport_destroy(tr);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_free_flight_time_step(void **state)
 {
     (void)state;
-    free_flight(DS_TIME_STEP);
+    free_flight(DS_INTEGRATOR_TIME_STEP);
 }
 
 static void test_free_flight_event_driven(void **state)
 {
     (void)state;
-    free_flight(DS_EVENT_DRIVEN);
+    free_flight(DS_INTEGRATOR_EVENT_DRIVEN);
 }
 
 static void test_bad_arguments_are_refused(void **state)
 {
     (void)state;
     ds_transport *tr = (ds_transport *)&tr; /* must become NULL on refusal */
-    assert_int_equal(ds_transport_create(0, 10, 1, &tr), DS_ERR_ARG);
+    assert_int_equal(ds_transport_create(0, 10, 1, &tr, NULL), DS_ERR_ARG);
     assert_null(tr);
-    assert_int_equal(ds_transport_create(3, 1, 1, &tr), DS_ERR_ARG);
-    assert_int_equal(ds_transport_create(3, 10, 0, &tr), DS_ERR_ARG);
-    assert_int_equal(ds_transport_create(3, 10, 1, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_transport_create(SIZE_MAX / 8, 10, 1, &tr), DS_ERR_NOMEM);
+    assert_int_equal(ds_transport_create(3, 1, 1, &tr, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_create(3, 10, 0, &tr, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_create(3, 10, 1, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_create(SIZE_MAX / 8, 10, 1, &tr, NULL), DS_ERR_NOMEM);
     assert_null(tr);
     ds_transport_destroy(NULL);
-    assert_int_equal(ds_transport_lags(NULL), 0);
+    assert_int_equal(ds_transport_get_lags(NULL), 0);
 
     tr = new_transport(2, 4, 1);
     double xy[4] = {1, 2, 3, 4}, v[4] = {1, 0, 0, 1};
-    assert_int_equal(ds_transport_add(tr, NULL, v), DS_ERR_ARG);
-    assert_int_equal(ds_transport_add(NULL, xy, v), DS_ERR_ARG);
+    assert_int_equal(ds_transport_add(tr, NULL, v, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_add(NULL, xy, v, NULL), DS_ERR_ARG);
     v[3] = NAN;
-    assert_int_equal(ds_transport_add(tr, xy, v), DS_ERR_ARG);
+    assert_int_equal(ds_transport_add(tr, xy, v, NULL), DS_ERR_ARG);
     v[3] = 1.0;
     xy[2] = INFINITY;
-    assert_int_equal(ds_transport_add(tr, xy, v), DS_ERR_ARG);
+    assert_int_equal(ds_transport_add(tr, xy, v, NULL), DS_ERR_ARG);
     uint64_t origins[4];
-    assert_int_equal(ds_transport_get(tr, NULL, NULL, origins), DS_OK);
+    assert_int_equal(ds_transport_get(tr, NULL, NULL, origins, NULL), DS_OK);
     assert_int_equal(origins[0], 0); /* the refused samples added nothing */
     xy[2] = 3.0;
-    assert_int_equal(ds_transport_add(tr, xy, v), DS_OK);
-    assert_int_equal(ds_transport_add(tr, xy, v), DS_OK);
+    assert_int_equal(ds_transport_add(tr, xy, v, NULL), DS_OK);
+    assert_int_equal(ds_transport_add(tr, xy, v, NULL), DS_OK);
     double d;
-    assert_int_equal(ds_transport_diffusion(tr, 0.1, 0, 1, &d, NULL), DS_OK);
-    assert_int_equal(ds_transport_diffusion(tr, 0.1, 0, 2, &d, NULL), DS_ERR_ARG); /* unseen */
-    assert_int_equal(ds_transport_diffusion(tr, 0.1, 1, 1, &d, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_transport_diffusion(tr, 0.1, 0, 4, &d, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_transport_diffusion(tr, 0.0, 0, 1, &d, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_transport_diffusion(tr, NAN, 0, 1, &d, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_transport_diffusion(NULL, 0.1, 0, 1, &d, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_transport_get(NULL, NULL, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_get_diffusion(tr, 0.1, 0, 1, &d, NULL, NULL), DS_OK);
+    assert_int_equal(ds_transport_get_diffusion(tr, 0.1, 0, 2, &d, NULL, NULL),
+                     DS_ERR_ARG); /* unseen */
+    assert_int_equal(ds_transport_get_diffusion(tr, 0.1, 1, 1, &d, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_get_diffusion(tr, 0.1, 0, 4, &d, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_get_diffusion(tr, 0.0, 0, 1, &d, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_get_diffusion(tr, NAN, 0, 1, &d, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_get_diffusion(NULL, 0.1, 0, 1, &d, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_get(NULL, NULL, NULL, NULL, NULL), DS_ERR_ARG);
 
-    ds_sim *sim = test_create(3, 5.0, 1, DS_AUTO);
-    assert_int_equal(ds_transport_sample(tr, sim), DS_ERR_ARG); /* 3 disks, not 2 */
-    assert_int_equal(ds_transport_sample(NULL, sim), DS_ERR_ARG);
-    assert_int_equal(ds_transport_sample(tr, NULL), DS_ERR_ARG);
-    ds_destroy(sim);
+    ds_sim *sim = test_create(3, 5.0, 1, DS_BROADPHASE_AUTO);
+    assert_int_equal(ds_transport_sample(tr, sim, NULL), DS_ERR_ARG); /* 3 disks, not 2 */
+    assert_int_equal(ds_transport_sample(NULL, sim, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_transport_sample(tr, NULL, NULL), DS_ERR_ARG);
+    ds_sim_destroy(sim);
     ds_transport_destroy(tr);
 }
 
@@ -210,9 +213,9 @@ typedef struct fluid {
 static fluid new_fluid(size_t n, double eta, double interval_in_t_enskog, uint64_t seed)
 {
     fluid f;
-    ds_params p = ds_default_params(n, sqrt(eta * 1e6 / ((double)n * PI)));
-    p.boundary = DS_PERIODIC;
-    p.integrator = DS_EVENT_DRIVEN;
+    ds_params p = ds_params_default(n, sqrt(eta * 1e6 / ((double)n * PI)));
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     p.seed = seed;
     f.sigma = 2.0 * p.radius;
     f.density = (double)n / 1e6;
@@ -220,20 +223,20 @@ static fluid new_fluid(size_t n, double eta, double interval_in_t_enskog, uint64
     f.t_enskog = 1.0 / (4.0 / f.sigma * (z - 1.0) * sqrt(5000.0 / PI));
     p.dt = interval_in_t_enskog * f.t_enskog;
     f.sim = NULL;
-    assert_int_equal(ds_create(&p, &f.sim), DS_OK);
-    ds_run(f.sim, (uint64_t)(50.0 / interval_in_t_enskog)); /* 50 mean free times */
-    ds_reset_observables(f.sim);
+    assert_int_equal(ds_sim_create(&p, NULL, &f.sim, NULL), DS_OK);
+    ds_sim_run(f.sim, (uint64_t)(50.0 / interval_in_t_enskog), NULL); /* 50 mean free times */
+    ds_sim_reset_observables(f.sim);
     return f;
 }
 
-/* Runs a fresh accumulator over `samples` samples, one per ds_step. */
+/* Runs a fresh accumulator over `samples` samples, one per ds_sim_step. */
 static ds_transport *run_block(const fluid *f, size_t lags, size_t every, int samples)
 {
-    ds_transport *tr = new_transport(ds_count(f->sim), lags, every);
+    ds_transport *tr = new_transport(ds_sim_get_count(f->sim), lags, every);
     for (int s = 0; s < samples; ++s) {
         if (s)
-            ds_step(f->sim);
-        assert_int_equal(ds_transport_sample(tr, f->sim), DS_OK);
+            ds_sim_step(f->sim, NULL);
+        assert_int_equal(ds_transport_sample(tr, f->sim, NULL), DS_OK);
     }
     return tr;
 }
@@ -252,14 +255,15 @@ static void test_einstein_and_green_kubo_agree_in_a_fluid(void **state)
     enum { BLOCKS = 8, LAGS = 200 };
     const int blocks = quick_mode() ? 3 : BLOCKS, samples = quick_mode() ? 400 : 2000;
     fluid f = new_fluid(256, 0.3, 0.1, 5);
-    const double h = ds_dt(f.sim);
+    const double h = ds_sim_get_dt(f.sim);
     double diff[BLOCKS], einstein[BLOCKS], slope = 0.0;
     for (int b = 0; b < blocks; ++b) {
         ds_transport *tr = run_block(&f, LAGS, 4, samples);
         double green_kubo, vacf[LAGS];
         assert_int_equal(
-            ds_transport_diffusion(tr, h, LAGS / 2, LAGS - 1, &einstein[b], &green_kubo), DS_OK);
-        assert_int_equal(ds_transport_get(tr, NULL, vacf, NULL), DS_OK);
+            ds_transport_get_diffusion(tr, h, LAGS / 2, LAGS - 1, &einstein[b], &green_kubo, NULL),
+            DS_OK);
+        assert_int_equal(ds_transport_get(tr, NULL, vacf, NULL, NULL), DS_OK);
         slope += fabs(vacf[1] - vacf[0]) / h / blocks;
         diff[b] = einstein[b] - green_kubo;
         ds_transport_destroy(tr);
@@ -274,7 +278,7 @@ static void test_einstein_and_green_kubo_agree_in_a_fluid(void **state)
     /* And the agreement means something: both are far from 0 and the
      * bound is a small part of D. */
     assert_true(trapezoids < 0.01 * e.mean);
-    ds_destroy(f.sim);
+    ds_sim_destroy(f.sim);
 }
 
 /* The autocorrelation starts falling at the collision rate: C'(0+) = -nu
@@ -299,16 +303,16 @@ static void test_vacf_falls_at_the_collision_rate(void **state)
     const int blocks = quick_mode() ? 3 : BLOCKS, samples = quick_mode() ? 300 : 2000;
     const size_t n = 256;
     fluid f = new_fluid(n, 0.3, 0.02, 3);
-    const double h = ds_dt(f.sim);
+    const double h = ds_sim_get_dt(f.sim);
     double ratio[BLOCKS];
     for (int b = 0; b < blocks; ++b) {
-        const uint64_t collisions = ds_collision_count(f.sim);
-        const double t0 = ds_time(f.sim);
+        const uint64_t collisions = ds_sim_get_collision_count(f.sim);
+        const double t0 = ds_sim_get_time(f.sim);
         ds_transport *tr = run_block(&f, 3, 1, samples);
-        const double nu = 2.0 * (double)(ds_collision_count(f.sim) - collisions) /
-                          ((double)n * (ds_time(f.sim) - t0));
+        const double nu = 2.0 * (double)(ds_sim_get_collision_count(f.sim) - collisions) /
+                          ((double)n * (ds_sim_get_time(f.sim) - t0));
         double c[3];
-        assert_int_equal(ds_transport_get(tr, NULL, c, NULL), DS_OK);
+        assert_int_equal(ds_transport_get(tr, NULL, c, NULL, NULL), DS_OK);
         const double slope = (-3.0 * c[0] + 4.0 * c[1] - c[2]) / (2.0 * h);
         ratio[b] = -slope / (nu * c[0] * 2.0 * n / (2.0 * n - 1.0));
         ds_transport_destroy(tr);
@@ -319,7 +323,7 @@ static void test_vacf_falls_at_the_collision_rate(void **state)
     assert_true(fabs(r.mean - 1.0) <= 5.0 * r.error);
     /* Or the check would mean little (the quick run's blocks are shorter). */
     assert_true(r.error < (quick_mode() ? 0.05 : 0.01));
-    ds_destroy(f.sim);
+    ds_sim_destroy(f.sim);
 }
 
 /* Low density, area fraction 0.02: D against Enskog's D_E = D_0 /
@@ -351,14 +355,15 @@ static void test_low_density_diffusion_is_enskogs(void **state)
     const double eta = 0.02;
     const int blocks = quick_mode() ? 3 : BLOCKS, samples = quick_mode() ? 200 : 820;
     fluid f = new_fluid(512, eta, 0.5, 11);
-    const double h = ds_dt(f.sim);
+    const double h = ds_sim_get_dt(f.sim);
     double ratio[BLOCKS];
     for (int b = 0; b < blocks; ++b) {
-        ds_reset_observables(f.sim);
+        ds_sim_reset_observables(f.sim);
         ds_transport *tr = run_block(&f, LAGS, 2, samples);
         double d;
-        assert_int_equal(ds_transport_diffusion(tr, h, 20, 40, &d, NULL), DS_OK);
-        const double kt = ds_temperature(f.sim), z = ds_compressibility(f.sim);
+        assert_int_equal(ds_transport_get_diffusion(tr, h, 20, 40, &d, NULL, NULL), DS_OK);
+        const double kt = ds_sim_get_temperature(f.sim),
+                     z = ds_sim_get_compressibility_factor(f.sim);
         const double d0 = sqrt(kt / PI) / (2.0 * f.density * f.sigma);
         ratio[b] = d / (d0 * 2.0 * eta / (z - 1.0));
         ds_transport_destroy(tr);
@@ -372,7 +377,7 @@ static void test_low_density_diffusion_is_enskogs(void **state)
     assert_true(r.mean <= upper + 5.0 * r.error);
     /* Or the bounds would mean little (the quick run's blocks are shorter). */
     assert_true(r.error < (quick_mode() ? 0.05 : 0.01));
-    ds_destroy(f.sim);
+    ds_sim_destroy(f.sim);
 }
 
 /* Intermediate density, area fraction 0.3 (A / A0 = 3.02), the window 20
@@ -401,15 +406,16 @@ static void test_intermediate_density_diffusion_is_above_enskog_within_the_tail(
     const double eta = 0.3;
     const int blocks = quick_mode() ? 3 : BLOCKS, samples = quick_mode() ? 800 : 4010;
     fluid f = new_fluid(256, eta, 0.1, 17);
-    const double h = ds_dt(f.sim);
+    const double h = ds_sim_get_dt(f.sim);
     double ratio[BLOCKS], bound[BLOCKS];
     for (int b = 0; b < blocks; ++b) {
-        ds_reset_observables(f.sim);
+        ds_sim_reset_observables(f.sim);
         ds_transport *tr = run_block(&f, LAGS, 10, samples);
         double d;
-        assert_int_equal(ds_transport_diffusion(tr, h, 200, 400, &d, NULL), DS_OK);
+        assert_int_equal(ds_transport_get_diffusion(tr, h, 200, 400, &d, NULL, NULL), DS_OK);
         ds_transport_destroy(tr);
-        const double kt = ds_temperature(f.sim), z = ds_compressibility(f.sim);
+        const double kt = ds_sim_get_temperature(f.sim),
+                     z = ds_sim_get_compressibility_factor(f.sim);
         const double g = (z - 1.0) / (2.0 * eta), n = f.density, sigma = f.sigma;
         const double d_enskog = sqrt(kt / PI) / (2.0 * n * sigma * g);
         const double eta_0 = sqrt(kt / PI) / (2.0 * sigma);
@@ -428,7 +434,7 @@ static void test_intermediate_density_diffusion_is_above_enskog_within_the_tail(
     assert_true(r.mean >= 1.0 - 5.0 * r.error);
     assert_true(r.mean <= upper.mean + 5.0 * r.error);
     assert_true(r.error < (quick_mode() ? 0.15 : 0.05));
-    ds_destroy(f.sim);
+    ds_sim_destroy(f.sim);
 }
 
 int main(void)

@@ -21,13 +21,45 @@
 /* Creates a simulation or fails the test. */
 static inline ds_sim *test_create(size_t n, double radius, uint64_t seed, ds_broadphase bp)
 {
-    ds_params p = ds_default_params(n, radius);
+    ds_params p = ds_params_default(n, radius);
     p.seed = seed;
     p.broadphase = bp;
     ds_sim *sim = NULL;
-    assert_int_equal(ds_create(&p, &sim), DS_OK);
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
     assert_non_null(sim);
     return sim;
+}
+
+/* psi6 of the disks of sim (ds_sim_get_psi6), NaN where it refuses. */
+static inline double psi6_of(const ds_sim *sim)
+{
+    double psi6 = NAN;
+    (void)ds_sim_get_psi6(sim, &psi6, NULL);
+    return psi6;
+}
+
+/* Disk i's radius and mass (ds_sim_get_radii, ds_sim_get_masses: 2.x's
+ * ds_radius_of and ds_mass_of), 0 out of range. */
+static inline double radius_of(const ds_sim *sim, size_t i)
+{
+    const size_t n = ds_sim_get_count(sim);
+    double *r = malloc((n ? n : 1) * sizeof *r), v = 0.0;
+    assert_non_null(r);
+    if (i < n && ds_sim_get_radii(sim, r, NULL) == DS_OK)
+        v = r[i];
+    free(r);
+    return v;
+}
+
+static inline double mass_of(const ds_sim *sim, size_t i)
+{
+    const size_t n = ds_sim_get_count(sim);
+    double *m = malloc((n ? n : 1) * sizeof *m), v = 0.0;
+    assert_non_null(m);
+    if (i < n && ds_sim_get_masses(sim, m, NULL) == DS_OK)
+        v = m[i];
+    free(m);
+    return v;
 }
 
 /* DS_TEST_QUICK=1 (for the valgrind run in CI) shortens the long runs; a
@@ -71,16 +103,16 @@ static inline int compare_doubles(const void *a, const void *b)
  * sigma^2 = <v^2>/2 per component). */
 static inline double ks_distance_to_rayleigh(const ds_sim *sim)
 {
-    const size_t n = ds_count(sim);
+    const size_t n = ds_sim_get_count(sim);
     ds_disk *disks = malloc(n * sizeof *disks);
     double *speed = malloc(n * sizeof *speed);
     assert_non_null(disks);
     assert_non_null(speed);
-    assert_int_equal(ds_get_all(sim, disks), DS_OK);
+    assert_int_equal(ds_sim_get_disks(sim, disks, NULL), DS_OK);
     for (size_t k = 0; k < n; ++k)
         speed[k] = sqrt(disks[k].vx * disks[k].vx + disks[k].vy * disks[k].vy);
     qsort(speed, n, sizeof *speed, compare_doubles);
-    const double v2 = 2.0 * ds_kinetic_energy(sim) / (double)n;
+    const double v2 = 2.0 * ds_sim_get_kinetic_energy(sim) / (double)n;
     double d = 0.0;
     for (size_t i = 0; i < n; ++i) {
         double f = 1.0 - exp(-speed[i] * speed[i] / v2);
@@ -106,7 +138,7 @@ static inline double ks_critical_1_percent(size_t n) { return 1.628 / sqrt((doub
  * resolutions, with speeds never above vmax. A pair adds t = s*dx to one
  * disk and subtracts the same computed t from the other, so the exact
  * change cancels and only the two roundings remain: <= eps * vmax per
- * component per collision. Each of the two ds_momentum sums compared adds
+ * component per collision. Each of the two ds_sim_get_momentum sums compared adds
  * <= n eps sum|v| <= n eps sqrt(n) vmax (Cauchy-Schwarz, sum v^2 <= vmax^2
  * with vmax = sqrt(2E)). */
 static inline double momentum_rounding_bound(uint64_t collisions, double vmax, size_t n)
@@ -118,7 +150,7 @@ static inline double momentum_rounding_bound(uint64_t collisions, double vmax, s
 static inline void place(ds_sim *sim, size_t i, double x, double y, double vx, double vy)
 {
     const ds_disk d = {x, y, vx, vy};
-    assert_int_equal(ds_set(sim, i, d), DS_OK);
+    assert_int_equal(ds_sim_set_disk(sim, i, d, NULL), DS_OK);
 }
 
 /* |got - want| within 1e-9 of max(|want|, 1): the header's promise for

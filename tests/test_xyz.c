@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Extended XYZ trajectories: what ds_format_xyz_frame writes reads back as
+/* Extended XYZ trajectories: what ds_xyz_format writes reads back as
  * the simulation (parsed here, in C, always), `disks --trajectory` holds
  * exactly the frames it writes as text, and a third-party reader, ASE's
  * ase.io.read, sees the same frames, positions, radii and velocities when
@@ -19,11 +19,12 @@
 /* A strict reader of the frames we write                              */
 /* ------------------------------------------------------------------ */
 
-/* One frame as the header's comment on ds_format_xyz_frame describes it. */
+/* One frame as the header's comment on ds_xyz_format describes it. */
 typedef struct xyz_frame {
     size_t count;
     double time, box, box_y, height;
-    int periodic;         /* pbc="T T F", and each line ends with ix iy */
+    int periodic;         /* pbc="T T F" or "T F F" (a channel), and lines end with ix iy */
+    int periodic_y;       /* pbc="T T F" */
     ds_frame_disk *disks; /* x, y, r, vx, vy */
     long *image;          /* ix, iy of each disk when periodic, else NULL */
 } xyz_frame;
@@ -84,7 +85,8 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
         expect(&p, " Time=");
         f->time = number(&p);
         expect(&p, "pbc=\"");
-        f->periodic = next_is(&p, "T T F");
+        f->periodic_y = next_is(&p, "T T F");
+        f->periodic = f->periodic_y || next_is(&p, "T F F");
         if (!f->periodic)
             expect(&p, "F F F");
         expect(&p, "\"\n");
@@ -150,12 +152,12 @@ static int within_six_decimals(double got, double want) { return fabs(got - want
 static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(300, 4.0, 9, DS_SAP);
-    ds_run(sim, 500); /* slots permuted by the sort: output must not be */
-    size_t cap = ds_xyz_frame_size(sim), len = 0;
+    ds_sim *sim = test_create(300, 4.0, 9, DS_BROADPHASE_SAP);
+    ds_sim_run(sim, 500, NULL); /* slots permuted by the sort: output must not be */
+    size_t cap = ds_xyz_get_size(sim), len = 0;
     char *buf = malloc(cap + 1);
     assert_non_null(buf);
-    assert_int_equal(ds_format_xyz_frame(sim, buf, cap, &len), DS_OK);
+    assert_int_equal(ds_xyz_format(sim, buf, cap, &len, NULL), DS_OK);
     buf[len] = '\0';
     xyz_frame f;
     assert_int_equal(parse_trajectory(buf, &f, 1), 1);
@@ -165,7 +167,7 @@ static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
     assert_false(f.periodic);
     assert_true(within_six_decimals(f.time, 0.5));
     ds_disk want[300];
-    assert_int_equal(ds_get_all(sim, want), DS_OK);
+    assert_int_equal(ds_sim_get_disks(sim, want, NULL), DS_OK);
     for (size_t i = 0; i < 300; ++i) {
         assert_true(within_six_decimals(f.disks[i].x, want[i].x));
         assert_true(within_six_decimals(f.disks[i].y, want[i].y));
@@ -175,10 +177,10 @@ static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
     }
     free_frames(&f, 1);
     free(buf);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
-/* The header's comment on ds_format_xyz_frame, claim by claim, on what
+/* The header's comment on ds_xyz_format, claim by claim, on what
  * it must describe beyond one square box of one radius: a mixture in a
  * box taller than wide, with walls and periodic, after the disks have
  * crossed the periodic box's sides. The parser above accepts only the
@@ -187,37 +189,40 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
 {
     (void)state;
     enum { N = 24 };
-    const ds_species kinds[2] = {{12, 3.0, 0.0}, {12, 4.5, 0.0}};
+    const ds_species kinds[2] = {{12, 3.0, 0.0, NULL}, {12, 4.5, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
-    for (int periodic = 0; periodic < 2; ++periodic) {
-        ds_params p = ds_default_params(N, 3.0);
+    for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
+        /* Along x a channel is periodic too: images along x, 0 along y. */
+        const int periodic = b != DS_BOUNDARY_WALLS;
+        ds_params p = ds_params_default(N, 3.0);
         p.box = 160.0;
         p.box_y = 230.0;
         p.seed = 5;
-        p.boundary = periodic ? DS_PERIODIC : DS_WALLS;
+        p.boundary = (ds_boundary)b;
         ds_sim *sim = NULL;
-        assert_int_equal(ds_create_mixture(&p, &mixture, &sim), DS_OK);
-        ds_run(sim, 3000); /* t = 3: at speeds near 100 many disks cross a side */
-        size_t cap = ds_xyz_frame_size(sim), len = 0;
+        assert_int_equal(ds_sim_create(&p, &mixture, &sim, NULL), DS_OK);
+        ds_sim_run(sim, 3000, NULL); /* t = 3: at speeds near 100 many disks cross a side */
+        size_t cap = ds_xyz_get_size(sim), len = 0;
         char *buf = malloc(cap + 1);
         assert_non_null(buf);
-        assert_int_equal(ds_format_xyz_frame(sim, buf, cap, &len), DS_OK);
+        assert_int_equal(ds_xyz_format(sim, buf, cap, &len, NULL), DS_OK);
         buf[len] = '\0';
         xyz_frame f;
         assert_int_equal(parse_trajectory(buf, &f, 1), 1);
         assert_int_equal(f.count, N);
         assert_int_equal(f.periodic, periodic);
+        assert_int_equal(f.periodic_y, b == DS_BOUNDARY_PERIODIC);
         /* Lx, Ly and H = 2 r_max in the shortest text that reads back. */
-        assert_true(f.box == ds_box(sim) && f.box_y == ds_box_y(sim));
-        assert_true(f.height == 2.0 * ds_radius_max(sim) && f.height == 9.0);
-        assert_true(within_six_decimals(f.time, ds_time(sim)));
+        assert_true(f.box == ds_sim_get_box_width(sim) && f.box_y == ds_sim_get_box_height(sim));
+        assert_true(f.height == 2.0 * ds_sim_get_radius_max(sim) && f.height == 9.0);
+        assert_true(within_six_decimals(f.time, ds_sim_get_time(sim)));
         ds_disk want[N];
         int32_t image[2 * N];
-        assert_int_equal(ds_get_all(sim, want), DS_OK);
-        assert_int_equal(ds_get_images(sim, image), DS_OK);
+        assert_int_equal(ds_sim_get_disks(sim, want, NULL), DS_OK);
+        assert_int_equal(ds_sim_get_images(sim, image, NULL), DS_OK);
         int crossed = 0;
         for (size_t i = 0; i < N; ++i) {
-            assert_true(f.disks[i].r == ds_radius_of(sim, i)); /* each its own, exactly */
+            assert_true(f.disks[i].r == radius_of(sim, i)); /* each its own, exactly */
             assert_true(within_six_decimals(f.disks[i].x, want[i].x));
             assert_true(within_six_decimals(f.disks[i].y, want[i].y));
             assert_true(within_six_decimals(f.disks[i].vx, want[i].vx));
@@ -225,29 +230,30 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
             if (periodic) {
                 assert_int_equal(f.image[2 * i], image[2 * i]);
                 assert_int_equal(f.image[2 * i + 1], image[2 * i + 1]);
+                assert_true(b == DS_BOUNDARY_PERIODIC || image[2 * i + 1] == 0);
                 crossed += image[2 * i] != 0 || image[2 * i + 1] != 0;
             }
         }
         assert_true(!periodic || crossed > 0); /* the image column was put to the test */
         free_frames(&f, 1);
         free(buf);
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
     }
 }
 
 static void test_frames_written_one_after_another_make_a_trajectory(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(40, 7.5, 3, DS_SAP_STRIPS);
+    ds_sim *sim = test_create(40, 7.5, 3, DS_BROADPHASE_STRIPS);
     FILE *out = tmpfile();
     assert_non_null(out);
     ds_disk last[40];
     for (int k = 0; k < 3; ++k) {
         if (k > 0)
-            ds_run(sim, 250);
-        assert_int_equal(ds_write_xyz_frame(sim, out), DS_OK);
+            ds_sim_run(sim, 250, NULL);
+        assert_int_equal(ds_xyz_write(sim, out, NULL), DS_OK);
     }
-    assert_int_equal(ds_get_all(sim, last), DS_OK);
+    assert_int_equal(ds_sim_get_disks(sim, last, NULL), DS_OK);
     rewind(out);
     char *text = read_all(out);
     xyz_frame f[4];
@@ -261,44 +267,44 @@ static void test_frames_written_one_after_another_make_a_trajectory(void **state
         assert_true(within_six_decimals(f[2].disks[i].x, last[i].x));
     free_frames(f, 3);
     free(text);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_formatting_reports_the_bytes_needed(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(25, 5.0, 1, DS_AUTO);
-    size_t need = 0, len = 0, cap = ds_xyz_frame_size(sim);
-    assert_int_equal(ds_format_xyz_frame(sim, NULL, 0, &need), DS_ERR_ARG);
+    ds_sim *sim = test_create(25, 5.0, 1, DS_BROADPHASE_AUTO);
+    size_t need = 0, len = 0, cap = ds_xyz_get_size(sim);
+    assert_int_equal(ds_xyz_format(sim, NULL, 0, &need, NULL), DS_ERR_ARG);
     char *buf = malloc(cap);
     assert_non_null(buf);
-    assert_int_equal(ds_format_xyz_frame(sim, buf, cap, &len), DS_OK);
+    assert_int_equal(ds_xyz_format(sim, buf, cap, &len, NULL), DS_OK);
     assert_int_equal(need, len);
     assert_true(len <= cap);
-    assert_int_equal(ds_format_xyz_frame(sim, buf, len - 1, &need), DS_ERR_ARG);
+    assert_int_equal(ds_xyz_format(sim, buf, len - 1, &need, NULL), DS_ERR_ARG);
     assert_int_equal(need, len);
     free(buf);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 static void test_bad_arguments_and_a_full_disk_are_errors(void **state)
 {
     (void)state;
-    ds_sim *sim = test_create(50, 5.0, 1, DS_SAP);
+    ds_sim *sim = test_create(50, 5.0, 1, DS_BROADPHASE_SAP);
     size_t len = 99;
     char buf[8];
-    assert_int_equal(ds_format_xyz_frame(NULL, buf, sizeof buf, &len), DS_ERR_ARG);
+    assert_int_equal(ds_xyz_format(NULL, buf, sizeof buf, &len, NULL), DS_ERR_ARG);
     assert_int_equal(len, 0);
-    assert_int_equal(ds_format_xyz_frame(sim, NULL, 10, &len), DS_ERR_ARG);
-    assert_int_equal(ds_write_xyz_frame(NULL, stdout), DS_ERR_ARG);
-    assert_int_equal(ds_write_xyz_frame(sim, NULL), DS_ERR_ARG);
-    assert_int_equal(ds_xyz_frame_size(NULL), 0);
+    assert_int_equal(ds_xyz_format(sim, NULL, 10, &len, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_xyz_write(NULL, stdout, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_xyz_write(sim, NULL, NULL), DS_ERR_ARG);
+    assert_int_equal(ds_xyz_get_size(NULL), 0);
     FILE *full = fopen("/dev/full", "w");
     if (full) { /* Linux: writes fail with ENOSPC, seen at the flush */
-        assert_int_equal(ds_write_xyz_frame(sim, full), DS_ERR_IO);
+        assert_int_equal(ds_xyz_write(sim, full, NULL), DS_ERR_IO);
         fclose(full);
     }
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
 }
 
 /* ------------------------------------------------------------------ */
@@ -352,7 +358,7 @@ static void test_disks_trajectory_holds_exactly_its_frames(void **state)
         char path[128];
         snprintf(path, sizeof path, "%s/run/frame_%04d.txt", workdir, k);
         ds_frame frame;
-        assert_int_equal(ds_read_frame(path, &frame, NULL), DS_OK);
+        assert_int_equal(ds_frame_read(path, &frame, NULL), DS_OK);
         assert_int_equal(f[k].count, frame.count);
         assert_true(within_six_decimals(f[k].time, k * 30 * 0.001));
         /* The same six-decimal text in both files: the same doubles. */

@@ -27,8 +27,8 @@ Error         every failure the library reports; ArgumentError (also a
 
 INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES and
 GROWTH_STATES are the names the arguments and properties take;
-DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z the
-library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
+DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z and
+VELOCITY_MAX the library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
 """
 from ._disksim import (
     BOUNDARIES,
@@ -42,6 +42,7 @@ from ._disksim import (
     MASS_RULES,
     MAX_AREA_FRACTION,
     PLACEMENTS,
+    VELOCITY_MAX,
     ArgumentError,
     Contacts,
     Error,
@@ -81,6 +82,7 @@ __all__ = [
     "MASS_RULES",
     "GROWTH_STATES",
     "JAMMED_Z",
+    "VELOCITY_MAX",
     "DEFAULT_SEED",
     "CONTACT_TOLERANCE",
     "MAX_AREA_FRACTION",

@@ -1,18 +1,30 @@
 /* SPDX-License-Identifier: MIT */
 /* Analysis of any set of centres: pair counts for g(r)
- * (ds_pair_histogram) and psi6 of each disk (ds_local_psi6), as module
+ * (ds_pair_histogram) and psi6 of each disk (ds_psi6_local), as module
  * functions over an (n, 2) array and as Sim methods over its disks. Both
  * run with the GIL released, on copies of the centres. */
 #include "disksim_py.h"
 
-/* The library returns a status only; these are the header's words for
- * what it refuses. */
-#define HISTOGRAM_RULES                                                                            \
-    "dr and the box's sides must be finite and > 0, the centres finite, and in a periodic box "    \
-    "bins * dr at most half the shorter side"
-#define PSI6_RULES                                                                                 \
-    "cutoff and the box's sides must be finite and > 0, the centres finite, and in a periodic "    \
-    "box the cutoff below half the shorter side"
+#include <string.h>
+
+/* The library's refusal, raised in the functions' names for their
+ * arguments: its box_x is box, its x and y are positions. */
+static PyObject *raise_refusal(ds_error *err)
+{
+    static const char *const names[][2] = {
+        {"box_x", "box"}, {"x", "positions"}, {"y", "positions"}};
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k) {
+        const size_t flen = strlen(names[k][0]);
+        if (strcmp(err->field, names[k][0]) != 0 || strncmp(err->message, err->field, flen) != 0)
+            continue;
+        char words[sizeof err->message];
+        PyOS_snprintf(words, sizeof words, "%s%s", names[k][1], err->message + flen);
+        memcpy(err->message, words, sizeof words);
+        PyOS_snprintf(err->field, sizeof err->field, "%s", names[k][1]);
+        break;
+    }
+    return dspy_raise_error(err);
+}
 
 typedef struct centres {
     size_t n;
@@ -58,7 +70,7 @@ static int centres_from_array(centres *c, PyObject *value)
 static int centres_from_sim(centres *c, const ds_sim *sim)
 {
     ds_disk *disks = dspy_get_all(sim);
-    if (!disks || centres_alloc(c, ds_count(sim)) < 0) {
+    if (!disks || centres_alloc(c, ds_sim_get_count(sim)) < 0) {
         PyMem_RawFree(disks);
         return -1;
     }
@@ -78,7 +90,7 @@ typedef struct box_args {
 
 static int box_from_args(box_args *b, PyObject *box, PyObject *box_y, PyObject *boundary)
 {
-    int bnd = DS_WALLS;
+    int bnd = DS_BOUNDARY_WALLS;
     b->box = 1000.0;
     if (box && dspy_double_arg(box, "box", &b->box) < 0)
         return -1;
@@ -93,26 +105,22 @@ static int box_from_args(box_args *b, PyObject *box, PyObject *box_y, PyObject *
 
 static PyObject *histogram(centres *c, const box_args *b, double dr, uint64_t bins)
 {
-    if (bins == 0 || dspy_check_memory(8.0 * (double)bins, "bins") < 0) {
-        if (bins == 0)
-            dspy_raise(DS_ERR_ARG, "bins", "bins = 0: there must be at least one bin");
+    if (dspy_check_memory(8.0 * (double)bins, "bins") < 0)
         return NULL;
-    }
     npy_intp dims[1] = {(npy_intp)bins};
     PyArrayObject *counts = (PyArrayObject *)PyArray_ZEROS(1, dims, NPY_UINT64, 0);
     if (!counts)
         return NULL;
     uint64_t *out = (uint64_t *)PyArray_DATA(counts);
     ds_status st;
+    ds_error err;
     Py_BEGIN_ALLOW_THREADS
-    st = ds_pair_histogram(c->n, c->x, c->y, b->box, b->box_y, b->boundary, dr, (size_t)bins, out);
+    st = ds_pair_histogram(c->n, c->x, c->y, b->box, b->box_y, b->boundary, dr, (size_t)bins, out,
+                           &err);
     Py_END_ALLOW_THREADS
     if (st != DS_OK) {
         Py_DECREF(counts);
-        return st == DS_ERR_ARG
-                   ? dspy_raisef(st, NULL, "pair_histogram: dr = %g, bins = %llu, box %g x %g: %s",
-                                 dr, (unsigned long long)bins, b->box, b->box_y, HISTOGRAM_RULES)
-                   : dspy_raise(st, NULL, ds_status_str(st));
+        return raise_refusal(&err);
     }
     return (PyObject *)counts;
 }
@@ -129,8 +137,9 @@ static PyObject *psi6(centres *c, const box_args *b, double cutoff)
         return out ? PyErr_NoMemory() : NULL;
     }
     ds_status st;
+    ds_error err;
     Py_BEGIN_ALLOW_THREADS
-    st = ds_local_psi6(c->n, c->x, c->y, b->box, b->box_y, b->boundary, cutoff, re, im);
+    st = ds_psi6_local(c->n, c->x, c->y, b->box, b->box_y, b->boundary, cutoff, re, im, &err);
     Py_END_ALLOW_THREADS
     if (st == DS_OK) {
         /* complex128 is two doubles, real then imaginary. */
@@ -144,9 +153,7 @@ static PyObject *psi6(centres *c, const box_args *b, double cutoff)
     PyMem_RawFree(im);
     if (st != DS_OK) {
         Py_DECREF(out);
-        return st == DS_ERR_ARG ? dspy_raisef(st, NULL, "local_psi6: cutoff = %g, box %g x %g: %s",
-                                              cutoff, b->box, b->box_y, PSI6_RULES)
-                                : dspy_raise(st, NULL, ds_status_str(st));
+        return raise_refusal(&err);
     }
     return (PyObject *)out;
 }
@@ -197,7 +204,8 @@ PyObject *dspy_sim_pair_histogram(dspy_sim *self, PyObject *args, PyObject *kwar
     centres c = {0, NULL, NULL};
     if (!sim || centres_from_sim(&c, sim) < 0)
         return NULL;
-    const box_args b = {ds_box(sim), ds_box_y(sim), ds_boundary_used(sim)};
+    const box_args b = {ds_sim_get_box_width(sim), ds_sim_get_box_height(sim),
+                        ds_sim_get_boundary(sim)};
     PyObject *r = histogram(&c, &b, dr, bins);
     centres_free(&c);
     return r;
@@ -247,8 +255,9 @@ PyObject *dspy_sim_local_psi6(dspy_sim *self, PyObject *args, PyObject *kwargs)
     if (!sim || centres_from_sim(&c, sim) < 0)
         return NULL;
     if (cutoff_obj == Py_None)
-        cutoff = 1.4 * 2.0 * ds_radius(sim); /* ds_psi6's cutoff */
-    const box_args b = {ds_box(sim), ds_box_y(sim), ds_boundary_used(sim)};
+        cutoff = 1.4 * 2.0 * ds_sim_get_radius(sim); /* ds_sim_get_psi6's cutoff */
+    const box_args b = {ds_sim_get_box_width(sim), ds_sim_get_box_height(sim),
+                        ds_sim_get_boundary(sim)};
     PyObject *r = psi6(&c, &b, cutoff);
     centres_free(&c);
     return r;

@@ -55,17 +55,22 @@ PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused)
         Py_DECREF(ase);
         return NULL;
     }
-    const size_t n = ds_count(sim);
+    const size_t n = ds_sim_get_count(sim);
     /* The library's XYZ: each disk's radius, the cell 2 r_max high. */
-    const double r = ds_radius_max(sim), box = ds_box(sim), box_y = ds_box_y(sim), t = ds_time(sim);
-    const int periodic = ds_boundary_used(sim) == DS_PERIODIC;
+    const double r = ds_sim_get_radius_max(sim), box = ds_sim_get_box_width(sim),
+                 box_y = ds_sim_get_box_height(sim), t = ds_sim_get_time(sim);
+    /* Periodic along x in a channel and a periodic box, along y in a
+     * periodic box only. */
+    const ds_boundary boundary = ds_sim_get_boundary(sim);
+    const int periodic = boundary == DS_BOUNDARY_PERIODIC;
+    const int periodic_x = periodic || boundary == DS_BOUNDARY_CHANNEL;
     PyObject *positions = xyz_array(disks, n, 0), *velo = xyz_array(disks, n, 1);
     PyMem_RawFree(disks);
     PyObject *numbers = filled(n, 0.0, NPY_INT64), *radius = filled(n, r, NPY_DOUBLE);
     if (radius)
-        ds_get_radii(sim, (double *)PyArray_DATA((PyArrayObject *)radius), NULL);
+        ds_sim_get_radii(sim, (double *)PyArray_DATA((PyArrayObject *)radius), NULL);
     PyObject *cell = Py_BuildValue("[ddd]", box, box_y, 2.0 * r);
-    PyObject *pbc = Py_BuildValue("[OOO]", periodic ? Py_True : Py_False,
+    PyObject *pbc = Py_BuildValue("[OOO]", periodic_x ? Py_True : Py_False,
                                   periodic ? Py_True : Py_False, Py_False);
     PyObject *atoms = NULL;
     if (positions && velo && numbers && radius && cell && pbc) {

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Exact checkpoints (ds_save_state, ds_load_state, ds_format_state,
- * ds_parse_state): Sim.save and disksim.load for files, and pickling, so
+/* Exact checkpoints (ds_checkpoint_save, ds_checkpoint_load, ds_checkpoint_format,
+ * ds_checkpoint_parse): Sim.save and disksim.load for files, and pickling, so
  * also copy.copy and copy.deepcopy, through the same bytes. A Sim made
  * from a checkpoint goes on bit for bit as the saved one would have. The
  * checkpoint does not tell the seed, the speed or the placement, so a Sim
@@ -23,7 +23,7 @@ static PyObject *new_sim(PyTypeObject *type, ds_sim *sim, const ds_params *param
     Py_XDECREF(empty);
     if (!obj || dspy_sim_adopt((dspy_sim *)obj, sim, params, unknown, mixture_args) < 0) {
         if (!obj) {
-            ds_destroy(sim);
+            ds_sim_destroy(sim);
             Py_XDECREF(mixture_args);
         }
         Py_XDECREF(obj);
@@ -32,15 +32,15 @@ static PyObject *new_sim(PyTypeObject *type, ds_sim *sim, const ds_params *param
     return obj;
 }
 
-static PyObject *raise_state_error(ds_status st, int errnum, const ds_state_error *err,
-                                   PyObject *path)
+/* The library's refusal of a checkpoint (err, status st), or the file's:
+ * errnum, or err's message for a file that is not a regular one. */
+static PyObject *raise_state_error(ds_status st, int errnum, const ds_error *err, PyObject *path)
 {
-    const char *why = err->message[0] ? err->message : ds_status_str(st);
     if (st == DS_ERR_IO)
-        return dspy_raise_file(errnum, errnum ? strerror(errnum) : why, path);
-    if (st == DS_ERR_FORMAT)
-        return path ? dspy_raise_format(path, 0, why) : dspy_raise(st, NULL, why);
-    return dspy_raise(st, NULL, why);
+        return dspy_raise_file(errnum, errnum ? strerror(errnum) : err->message, path);
+    if (st == DS_ERR_FORMAT && path)
+        return dspy_raise_format(path, 0, err->message);
+    return dspy_raise_error(err);
 }
 
 PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs)
@@ -57,6 +57,7 @@ PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs)
     }
     const char *name = PyBytes_AS_STRING(path);
     ds_status st;
+    ds_error err;
     int errnum = 0;
     self->busy = 1;
     Py_BEGIN_ALLOW_THREADS
@@ -66,7 +67,7 @@ PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs)
         st = DS_ERR_IO;
         errnum = errno;
     } else {
-        st = ds_save_state(sim, f);
+        st = ds_checkpoint_save(sim, f, &err);
         errnum = st == DS_ERR_IO ? errno : 0;
         if (fclose(f) != 0 && st == DS_OK) {
             st = DS_ERR_IO;
@@ -77,8 +78,9 @@ PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs)
     self->busy = 0;
     Py_DECREF(path);
     if (st != DS_OK) {
-        const ds_state_error none = {"the checkpoint could not be written"};
-        return raise_state_error(st, errnum, &none, path_obj);
+        if (!errnum && st == DS_ERR_IO)
+            PyOS_snprintf(err.message, sizeof err.message, "the checkpoint could not be written");
+        return raise_state_error(st, errnum, &err, path_obj);
     }
     Py_RETURN_NONE;
 }
@@ -104,12 +106,13 @@ PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
         return NULL;
     const char *name = PyBytes_AS_STRING(path);
     ds_sim *sim = NULL;
-    ds_state_error err = {""};
+    ds_error err;
+    memset(&err, 0, sizeof err);
     ds_status st;
     int errnum = 0;
     Py_BEGIN_ALLOW_THREADS
     errno = 0;
-    /* ds_load_state reads to the end of the file: from a device such as
+    /* ds_checkpoint_load reads to the end of the file: from a device such as
      * /dev/zero that is never, so only regular files are read. Opened
      * without blocking, since opening a named pipe waits for a writer,
      * possibly forever; then what was opened is judged (no other file can
@@ -131,7 +134,7 @@ PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
         errnum = errno;
         close(fd);
     } else {
-        st = ds_load_state(f, &sim, &err);
+        st = ds_checkpoint_load(f, &sim, &err);
         errnum = st == DS_ERR_IO ? errno : 0;
         fclose(f);
     }
@@ -150,7 +153,7 @@ PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    const size_t size = ds_state_size(sim);
+    const size_t size = ds_checkpoint_get_size(sim);
     PyObject *data = size <= PY_SSIZE_T_MAX ? PyBytes_FromStringAndSize(NULL, (Py_ssize_t)size)
                                             : PyErr_NoMemory();
     if (!data)
@@ -158,14 +161,15 @@ PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused)
     size_t len = 0;
     ds_status st;
     char *buf = PyBytes_AS_STRING(data);
+    ds_error err;
     self->busy = 1;
     Py_BEGIN_ALLOW_THREADS
-    st = ds_format_state(sim, buf, size, &len);
+    st = ds_checkpoint_format(sim, buf, size, &len, &err);
     Py_END_ALLOW_THREADS
     self->busy = 0;
-    if (st != DS_OK || len != size) {
+    if (st != DS_OK) {
         Py_DECREF(data);
-        return dspy_raise(st != DS_OK ? st : DS_ERR_NOMEM, NULL, ds_status_str(st));
+        return dspy_raise_error(&err);
     }
     PyObject *params = dspy_params_dict(&self->params, self->unknown, self->mixture_args);
     PyObject *module = params ? PyImport_ImportModule("disksim._disksim") : NULL;
@@ -214,13 +218,13 @@ PyObject *dspy_restore(PyObject *module, PyObject *args)
                keep_given(mix.args, params) == 0) {
         dspy_mixture_free(&mix); /* the checkpoint has the radii and masses */
         ds_sim *sim = NULL;
-        ds_state_error err = {""};
+        ds_error err;
         ds_status st;
         Py_BEGIN_ALLOW_THREADS
-        st = ds_parse_state(data.buf, (size_t)data.len, &sim, &err);
+        st = ds_checkpoint_parse(data.buf, (size_t)data.len, &sim, &err);
         Py_END_ALLOW_THREADS
-        if (st == DS_OK && (ds_count(sim) != p.n || ds_radius(sim) != p.radius)) {
-            ds_destroy(sim);
+        if (st == DS_OK && (ds_sim_get_count(sim) != p.n || ds_sim_get_radius(sim) != p.radius)) {
+            ds_sim_destroy(sim);
             dspy_raise(DS_ERR_ARG, NULL, "_restore: the parameters are not the checkpoint's");
         } else {
             result = st == DS_OK ? new_sim((PyTypeObject *)type, sim, &p, unknown, mix.args)

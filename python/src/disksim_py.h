@@ -51,6 +51,9 @@ int dspy_add_exceptions(PyObject *module);
  * sentence) and the attributes status (the enumerator's name) and field
  * (a ds_params member, or None). Returns NULL. */
 PyObject *dspy_raise(ds_status status, const char *field, const char *message);
+/* The library's refusal err (status, message, field) raised, with the
+ * attributes value and limit too (None where err has NaN). NULL. */
+PyObject *dspy_raise_error(const ds_error *err);
 /* dspy_raise with a printf-formatted message. */
 PyObject *dspy_raisef(ds_status status, const char *field, const char *fmt, ...);
 /* FileError(errnum, message, path) (an OSError with errno, strerror and
@@ -147,7 +150,7 @@ extern const char *const dspy_mixture_names[4];
 /* ---------------------------------------------------------------- parameters */
 
 /* ds_params and the mixture from Sim's arguments (n, radius, and the
- * keyword-only rest), checked by ds_diagnose_mixture: on failure the
+ * keyword-only rest), checked by ds_params_check: on failure the
  * library's sentence is raised (and the mixture freed). On success the
  * caller frees the mixture (dspy_mixture_free) and owns mixture->args.
  * warning receives the first warning's sentence ("" if none). */
@@ -203,7 +206,7 @@ PyObject *dspy_positions_property(dspy_sim *self, void *closure);
 PyObject *dspy_velocities_property(dspy_sim *self, void *closure);
 PyObject *dspy_unwrapped_property(dspy_sim *self, void *closure);
 PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs);
-/* Every disk of sim (ds_get_all) into a new buffer; NULL with MemoryError. */
+/* Every disk of sim (ds_sim_get_disks) into a new buffer; NULL with MemoryError. */
 ds_disk *dspy_get_all(const ds_sim *sim);
 
 /* growth.c: compression, velocities, contacts. */

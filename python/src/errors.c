@@ -14,12 +14,15 @@
  *   NoMemoryError  (Error, MemoryError)  DS_ERR_NOMEM, or more than the
  *                                        machine's memory asked for
  *
- * Each carries `status`, the name of the ds_status enumerator, and
- * `field`, the ds_params member at fault for a refused parameter (else
- * None). */
+ * Each carries `status`, the name of the ds_status enumerator, `field`,
+ * what the library names at fault (a ds_params member, an argument:
+ * ds_error's field; else None), and `value` and `limit`, the number
+ * refused and the limit it broke (else None): the library's reason, which
+ * the module passes on without deriving its rules again. */
 
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 
@@ -29,8 +32,9 @@ static const char error_doc[] =
     "Error(message)\n\n"
     "Every failure disksim reports: the library's sentence saying what was refused\n"
     "and why. Attributes: status, the name of the library's ds_status (e.g.\n"
-    "'DS_ERR_ARG'); field, the parameter at fault (e.g. 'radius') or None.\n"
-    "Subclasses: ArgumentError, FormatError, FileError, NoMemoryError.";
+    "'DS_ERR_ARG'); field, what is at fault as the library names it (e.g. 'radius',\n"
+    "'rate') or None; value and limit, the number refused and the limit it broke, or\n"
+    "None. Subclasses: ArgumentError, FormatError, FileError, NoMemoryError.";
 static const char argument_error_doc[] =
     "A value the library refuses: a parameter of Sim (field names it), a\n"
     "number of steps, a state whose disks are outside the box or overlap\n"
@@ -51,8 +55,9 @@ static PyObject *new_error(PyObject *module, const char *name, PyObject *bases, 
 {
     char full[64];
     snprintf(full, sizeof full, "disksim.%s", name);
-    /* Class attributes, so an Error raised without them still has both. */
-    PyObject *attrs = Py_BuildValue("{sOsO}", "status", Py_None, "field", Py_None);
+    /* Class attributes, so an Error raised without them still has them. */
+    PyObject *attrs = Py_BuildValue("{sOsOsOsO}", "status", Py_None, "field", Py_None, "value",
+                                    Py_None, "limit", Py_None);
     PyObject *type = bases && attrs ? PyErr_NewExceptionWithDoc(full, doc, bases, attrs) : NULL;
     Py_XDECREF(bases);
     Py_XDECREF(attrs);
@@ -110,6 +115,8 @@ const char *dspy_status_name(ds_status status)
         return "DS_ERR_FORMAT";
     case DS_ERR_OVERLAP:
         return "DS_ERR_OVERLAP";
+    case DS_STATUS_COUNT:
+        break;
     }
     return "unknown";
 }
@@ -128,6 +135,7 @@ static PyObject *type_of(ds_status status)
     case DS_ERR_FORMAT:
         return dspy_FormatError;
     case DS_OK:
+    case DS_STATUS_COUNT:
         break;
     }
     return dspy_Error;
@@ -137,7 +145,7 @@ PyObject *dspy_raise(ds_status status, const char *field, const char *message)
 {
     PyObject *type = type_of(status);
     PyObject *exc =
-        PyObject_CallFunction(type, "s", message && *message ? message : ds_status_str(status));
+        PyObject_CallFunction(type, "s", message && *message ? message : ds_status_name(status));
     if (!exc)
         return NULL;
     PyObject *field_obj = field && *field ? PyUnicode_FromString(field) : Py_NewRef(Py_None);
@@ -148,6 +156,27 @@ PyObject *dspy_raise(ds_status status, const char *field, const char *message)
     Py_XDECREF(field_obj);
     Py_XDECREF(status_obj);
     Py_DECREF(exc);
+    return NULL;
+}
+
+/* A number of ds_error as Python has it: None for NaN. */
+static PyObject *number_or_none(double v)
+{
+    return isnan(v) ? Py_NewRef(Py_None) : PyFloat_FromDouble(v);
+}
+
+PyObject *dspy_raise_error(const ds_error *err)
+{
+    (void)dspy_raise(err->status, err->field, err->message);
+    /* The exception being raised gets the numbers too. */
+    PyObject *exc = dspy_take_exception();
+    PyObject *value = number_or_none(err->value), *limit = number_or_none(err->limit);
+    if (exc && value && limit && PyObject_SetAttrString(exc, "value", value) == 0 &&
+        PyObject_SetAttrString(exc, "limit", limit) == 0)
+        PyErr_SetObject((PyObject *)Py_TYPE(exc), exc);
+    Py_XDECREF(value);
+    Py_XDECREF(limit);
+    Py_XDECREF(exc);
     return NULL;
 }
 

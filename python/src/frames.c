@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Frames: Sim.write_frame (ds_write_frame, ds_write_frame_velocities) and
- * disksim.read_frame (ds_read_frame) returning a Frame of arrays. Files
+/* Frames: Sim.write_frame (ds_frame_write, ds_frame_write) and
+ * disksim.read_frame (ds_frame_read) returning a Frame of arrays. Files
  * are read and written with the GIL released. */
 
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
@@ -53,6 +53,7 @@ PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs)
     }
     const char *name = PyBytes_AS_STRING(path);
     ds_status st = DS_OK;
+    ds_error err;
     int errnum = 0;
     self->busy = 1;
     Py_BEGIN_ALLOW_THREADS
@@ -62,7 +63,7 @@ PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs)
         st = DS_ERR_IO;
         errnum = errno;
     } else {
-        st = velocities ? ds_write_frame_velocities(sim, f) : ds_write_frame(sim, f);
+        st = ds_frame_write(sim, velocities != 0, f, &err);
         errnum = st == DS_ERR_IO ? errno : 0;
         if (fclose(f) != 0 && st == DS_OK) {
             st = DS_ERR_IO;
@@ -76,7 +77,7 @@ PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs)
         dspy_raise_file(errnum, errnum ? strerror(errnum) : "the frame could not be written",
                         path_obj);
     else if (st != DS_OK)
-        dspy_raise(st, NULL, ds_status_str(st));
+        dspy_raise_error(&err);
     else
         result = Py_NewRef(Py_None);
     Py_DECREF(path);
@@ -121,21 +122,21 @@ PyObject *dspy_read_frame(PyObject *module, PyObject *args, PyObject *kwargs)
     if (dspy_path_arg(path_obj, &path) < 0)
         return NULL;
     ds_frame frame;
-    ds_frame_error err;
+    ds_error err;
     ds_status st;
     int errnum = 0;
     Py_BEGIN_ALLOW_THREADS
     errno = 0;
-    st = ds_read_frame(PyBytes_AS_STRING(path), &frame, &err);
+    st = ds_frame_read(PyBytes_AS_STRING(path), &frame, &err);
     errnum = st == DS_ERR_IO ? errno : 0;
     Py_END_ALLOW_THREADS
     Py_DECREF(path);
     if (st == DS_ERR_IO)
         return dspy_raise_file(errnum, err.message, path_obj);
     if (st == DS_ERR_FORMAT)
-        return dspy_raise_format(path_obj, err.line, err.message);
+        return dspy_raise_format(path_obj, err.index, err.message);
     if (st != DS_OK)
-        return dspy_raise(st, NULL, err.message[0] ? err.message : ds_status_str(st));
+        return dspy_raise_error(&err);
     PyObject *positions = column_array(&frame, 2, 0);
     PyObject *radii = positions ? column_array(&frame, 1, 2) : NULL;
     PyObject *velocities =

@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Compression and what goes with it: Sim.set_growth (ds_set_growth),
- * Sim.scale_velocities (ds_scale_velocities) and Sim.contacts
- * (ds_count_contacts, a Contacts named tuple). The library answers these
- * with a status only: the sentences raised are the header's rules, with
- * the values given and the first rule they break. */
+/* Compression and what goes with it: Sim.set_growth (ds_sim_set_growth),
+ * Sim.scale_velocities (ds_sim_scale_velocities) and Sim.contacts
+ * (ds_sim_get_contacts, a Contacts named tuple). What the library refuses
+ * is raised with its sentence, field, value and limit: the module holds
+ * none of these arguments to a rule of its own. */
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
 
 #include <math.h>
@@ -52,42 +52,6 @@ const char dspy_set_growth_doc[] =
     "largest pair's surfaces recede faster than 10 rms speeds, until_eta not 0 and\n"
     "not between the area fraction of now and 1, until_z not 0 and not in (1, 1e9].";
 
-/* The first of the header's rules that rate, until_eta and until_z break. */
-static PyObject *growth_refused(const ds_sim *sim, double rate, double until_eta, double until_z)
-{
-    const double eta = ds_area_fraction(sim);
-    if (ds_integrator_used(sim) != DS_EVENT_DRIVEN || ds_boundary_used(sim) != DS_PERIODIC)
-        return dspy_raisef(DS_ERR_ARG, NULL,
-                           "set_growth: growth runs with integrator='event' in a periodic box "
-                           "only, not integrator='%s' with boundary='%s'",
-                           ds_integrator_name(ds_integrator_used(sim)),
-                           ds_boundary_name(ds_boundary_used(sim)));
-    if (!(rate >= 0.0) || !isfinite(rate))
-        return dspy_raisef(DS_ERR_ARG, "rate", "set_growth: rate = %g must be a finite number >= 0",
-                           rate);
-    double mass = 0.0;
-    for (size_t i = 0; i < ds_count(sim); ++i)
-        mass += ds_mass_of(sim, i);
-    const double rms = sqrt(2.0 * ds_kinetic_energy(sim) / mass);
-    if (rate > 0.0 && !(2.0 * ds_radius_max(sim) * rate <= 10.0 * rms))
-        return dspy_raisef(DS_ERR_ARG, "rate",
-                           "set_growth: rate = %g is too fast: the largest disks' surfaces would "
-                           "recede at %g, more than 10 times the rms speed %g",
-                           rate, 2.0 * ds_radius_max(sim) * rate, rms);
-    if (until_eta != 0.0 && !(until_eta > eta && until_eta < 1.0))
-        return dspy_raisef(DS_ERR_ARG, "until_eta",
-                           "set_growth: until_eta = %.17g must be 0 (no target) or between the "
-                           "area fraction of now, %.17g, and 1",
-                           until_eta, eta);
-    if (until_z != 0.0 && !(until_z > 1.0 && until_z <= 1e9))
-        return dspy_raisef(DS_ERR_ARG, "until_z",
-                           "set_growth: until_z = %g must be 0 (JAMMED_Z, 1e6) or in (1, 1e9]",
-                           until_z);
-    return dspy_raisef(DS_ERR_ARG, NULL,
-                       "set_growth(rate=%g, until_eta=%g, until_z=%g) was refused by the library",
-                       rate, until_eta, until_z);
-}
-
 PyObject *dspy_sim_set_growth(dspy_sim *self, PyObject *args, PyObject *kwargs)
 {
     static char *keywords[] = {"rate", "until_eta", "until_z", NULL};
@@ -104,11 +68,9 @@ PyObject *dspy_sim_set_growth(dspy_sim *self, PyObject *args, PyObject *kwargs)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    const ds_status st = ds_set_growth(sim, rate, until_eta, until_z);
-    if (st == DS_ERR_ARG)
-        return growth_refused(sim, rate, until_eta, until_z);
-    if (st != DS_OK)
-        return dspy_raise(st, NULL, ds_status_str(st));
+    ds_error err;
+    if (ds_sim_set_growth(sim, rate, until_eta, until_z, &err) != DS_OK)
+        return dspy_raise_error(&err);
     Py_RETURN_NONE;
 }
 
@@ -116,12 +78,8 @@ const char dspy_scale_velocities_doc[] =
     "scale_velocities($self, /, factor)\n--\n\n"
     "Every velocity times factor (> 0, finite), now: a thermostat's step, or a\n"
     "compression taking out its heat. ArgumentError for another factor, or one that\n"
-    "would take a velocity component beyond 1e12, which set_state refuses too.";
-
-/* ds_set's bound on a velocity component. ds_scale_velocities does not
- * hold a factor to it, and velocities beyond it overflow to infinities,
- * with which an event-driven step never ends. */
-#define MOST_SPEED 1e12
+    "would take a velocity component beyond VELOCITY_MAX (1e12), which set_state\n"
+    "refuses too.";
 
 PyObject *dspy_sim_scale_velocities(dspy_sim *self, PyObject *args, PyObject *kwargs)
 {
@@ -132,23 +90,11 @@ PyObject *dspy_sim_scale_velocities(dspy_sim *self, PyObject *args, PyObject *kw
         dspy_double_arg(factor_obj, "factor", &factor) < 0)
         return NULL;
     ds_sim *sim = dspy_sim_of(self);
-    ds_disk *disks = sim ? dspy_get_all(sim) : NULL;
-    if (!disks)
+    if (!sim)
         return NULL;
-    double fastest = 0.0;
-    for (size_t i = 0; i < ds_count(sim); ++i)
-        fastest = fmax(fastest, fmax(fabs(disks[i].vx), fabs(disks[i].vy)));
-    PyMem_RawFree(disks);
-    if (factor > 0.0 && isfinite(factor) && !(fastest * factor <= MOST_SPEED))
-        return dspy_raisef(DS_ERR_ARG, "factor",
-                           "factor = %g would take a velocity component to %g, beyond the %g "
-                           "set_state accepts",
-                           factor, fastest * factor, MOST_SPEED);
-    const ds_status st = ds_scale_velocities(sim, factor);
-    if (st == DS_ERR_ARG)
-        return dspy_raisef(st, "factor", "factor = %g must be a finite number > 0", factor);
-    if (st != DS_OK)
-        return dspy_raise(st, NULL, ds_status_str(st));
+    ds_error err;
+    if (ds_sim_scale_velocities(sim, factor, &err) != DS_OK)
+        return dspy_raise_error(&err);
     Py_RETURN_NONE;
 }
 
@@ -176,16 +122,15 @@ PyObject *dspy_sim_contacts(dspy_sim *self, PyObject *args, PyObject *kwargs)
     if (!sim)
         return NULL;
     ds_contacts c;
+    ds_error err;
     ds_status st;
     self->busy = 1;
     Py_BEGIN_ALLOW_THREADS
-    st = ds_count_contacts(sim, gap, &c);
+    st = ds_sim_get_contacts(sim, gap, &c, &err);
     Py_END_ALLOW_THREADS
     self->busy = 0;
-    if (st == DS_ERR_ARG)
-        return dspy_raisef(st, "gap", "gap = %g must be in [0, 1)", gap);
     if (st != DS_OK)
-        return dspy_raise(st, NULL, ds_status_str(st));
+        return dspy_raise_error(&err);
     PyObject *result = PyStructSequence_New(contacts_type);
     PyObject *items[4] = {PyLong_FromSize_t(c.pairs), PyLong_FromSize_t(c.rattlers),
                           PyFloat_FromDouble(c.per_disk), PyFloat_FromDouble(c.rattler_fraction)};

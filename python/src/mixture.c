@@ -3,7 +3,7 @@
  * mass]), ...], or radii= (and masses=) per disk, and mass=, the rule for
  * the masses not given.
  *
- * The library judges the values (ds_diagnose_mixture: counts that do not
+ * The library judges the values (ds_params_check: counts that do not
  * add up to n, radii or masses that are not positive finite numbers,
  * both forms or neither) and its sentence is what is raised; the module
  * refuses only what the library cannot see: wrong types, negative counts,
@@ -101,6 +101,7 @@ static int one_species(PyObject *item, Py_ssize_t k, ds_species *kind, PyObject 
     kind->count = (size_t)count;
     kind->radius = radius;
     kind->mass = mass;
+    kind->name = NULL; /* "A", "B", ... */
     *normal = len == 2 ? Py_BuildValue("(Kd)", (unsigned long long)count, radius)
                        : Py_BuildValue("(Kdd)", (unsigned long long)count, radius, mass);
     return *normal ? 0 : -1;

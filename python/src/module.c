@@ -12,11 +12,12 @@ static PyObject *memory_needed(PyObject *module, PyObject *args, PyObject *kwarg
     if (dspy_params_from_args(args, kwargs, &p, &mix, NULL) < 0)
         return NULL;
     size_t bytes = 0;
-    const ds_status st = ds_memory_needed_mixture(&p, dspy_mixture_of(&mix), &bytes);
+    ds_error err;
+    const ds_status st = ds_params_memory(&p, dspy_mixture_of(&mix), &bytes, &err);
     dspy_mixture_free(&mix);
     Py_XDECREF(mix.args);
     if (st != DS_OK)
-        return dspy_raise(st, "n", ds_status_str(st));
+        return dspy_raise_error(&err);
     return PyLong_FromSize_t(bytes);
 }
 
@@ -33,7 +34,7 @@ static PyMethodDef module_functions[] = {
      "Unpickles a Sim (Sim.__reduce__ names it): not for direct use."},
     {"memory_needed", (PyCFunction)(void (*)(void))memory_needed, METH_VARARGS | METH_KEYWORDS,
      "memory_needed(n, radius, **arguments)\n--\n\n"
-     "Bytes Sim(n, radius, **arguments) would allocate (ds_memory_needed), without\n"
+     "Bytes Sim(n, radius, **arguments) would allocate (ds_params_memory), without\n"
      "allocating them; the same arguments and the same exceptions as Sim. Sim itself\n"
      "refuses, with NoMemoryError, more than this machine's physical memory."},
     {NULL, NULL, 0, NULL},
@@ -41,7 +42,8 @@ static PyMethodDef module_functions[] = {
 
 static const char module_doc[] =
     "The C extension behind the package disksim: hard disks (2D elastic billiards)\n"
-    "through libdisksim's public API (include/disk_sim.h). Use it as `disksim`.";
+    "through libdisksim's public API (include/disk_sim.h and include/disksim/).\n"
+    "Use it as `disksim`.";
 
 static struct PyModuleDef module_def = {
     PyModuleDef_HEAD_INIT,
@@ -73,7 +75,8 @@ static int add_constants(PyObject *m)
         PyModule_AddObject(m, "CONTACT_TOLERANCE", PyFloat_FromDouble(DS_CONTACT_TOLERANCE)) < 0 ||
         PyModule_AddObject(m, "MAX_AREA_FRACTION", PyFloat_FromDouble(DS_MAX_AREA_FRACTION)) < 0 ||
         PyModule_AddIntConstant(m, "MANY_DISKS", DS_MANY_DISKS) < 0 ||
-        PyModule_AddObject(m, "JAMMED_Z", PyFloat_FromDouble(DS_JAMMED_Z)) < 0)
+        PyModule_AddObject(m, "JAMMED_Z", PyFloat_FromDouble(DS_JAMMED_Z)) < 0 ||
+        PyModule_AddObject(m, "VELOCITY_MAX", PyFloat_FromDouble(DS_VELOCITY_MAX)) < 0)
         return -1;
     return 0;
 }

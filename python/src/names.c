@@ -1,68 +1,63 @@
 /* SPDX-License-Identifier: MIT */
 /* The names of the library's enumerations, as the command takes them:
- * integrators and boundaries through the library's own name functions,
- * so a new integrator is a name here without an edit; placements from a
- * table (the library has no name function for them), as are mass rules
- * and growth states; broad phases through ds_broadphase_name. */
+ * each through the library's own name and parse functions (its one table
+ * of each), so a new integrator, boundary or broad phase is a name here
+ * without an edit and the module keeps no table of its own. */
 
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
 
 #include <string.h>
 
-/* Values are tried from 0 until the library calls one "unknown"; no
- * enumeration of the library is anywhere near this long. */
-#define MOST_VALUES 64
+/* The library's functions of each kind, through int-valued wrappers. */
+#define WRAP(type)                                                                                 \
+    static const char *type##_name_of(int v) { return type##_name((type)v); }                      \
+    static ds_status type##_parse_of(const char *name, int *out, ds_error *err)                    \
+    {                                                                                              \
+        type v;                                                                                    \
+        const ds_status st = type##_parse(name, &v, err);                                          \
+        if (st == DS_OK)                                                                           \
+            *out = (int)v;                                                                         \
+        return st;                                                                                 \
+    }
+WRAP(ds_integrator)
+WRAP(ds_boundary)
+WRAP(ds_placement)
+WRAP(ds_broadphase)
+WRAP(ds_mass_rule)
+WRAP(ds_growth_state)
 
-static const char *const placement_names[] = {[DS_RANDOM] = "random", [DS_LATTICE] = "lattice"};
-static const char *const mass_rule_names[] = {[DS_MASS_EQUAL] = "equal", [DS_MASS_AREA] = "area"};
-static const char *const growth_state_names[] = {[DS_GROWTH_NONE] = "none",
-                                                 [DS_GROWING] = "growing",
-                                                 [DS_GROWTH_REACHED_ETA] = "reached_eta",
-                                                 [DS_GROWTH_JAMMED] = "jammed"};
-#define NAME_IN(table, value)                                                                      \
-    ((size_t)(value) < sizeof table / sizeof table[0] ? table[value] : NULL)
+static const struct {
+    int count;
+    const char *(*name)(int value);
+    ds_status (*parse)(const char *name, int *out, ds_error *err);
+} kinds[DSPY_KINDS] = {
+    [DSPY_INTEGRATOR] = {DS_INTEGRATOR_COUNT, ds_integrator_name_of, ds_integrator_parse_of},
+    [DSPY_BOUNDARY] = {DS_BOUNDARY_COUNT, ds_boundary_name_of, ds_boundary_parse_of},
+    [DSPY_PLACEMENT] = {DS_PLACEMENT_COUNT, ds_placement_name_of, ds_placement_parse_of},
+    [DSPY_BROADPHASE] = {DS_BROADPHASE_COUNT, ds_broadphase_name_of, ds_broadphase_parse_of},
+    [DSPY_MASS_RULE] = {DS_MASS_RULE_COUNT, ds_mass_rule_name_of, ds_mass_rule_parse_of},
+    [DSPY_GROWTH_STATE] = {DS_GROWTH_STATE_COUNT, ds_growth_state_name_of,
+                           ds_growth_state_parse_of},
+};
 
 const char *dspy_name_of(dspy_kind kind, int value)
 {
-    const char *name = NULL;
-    if (value < 0 || value >= MOST_VALUES)
+    if ((unsigned)kind >= DSPY_KINDS || value < 0 || value >= kinds[kind].count)
         return NULL;
-    switch (kind) {
-    case DSPY_INTEGRATOR:
-        name = ds_integrator_name((ds_integrator)value);
-        break;
-    case DSPY_BOUNDARY:
-        name = ds_boundary_name((ds_boundary)value);
-        break;
-    case DSPY_PLACEMENT:
-        name = NAME_IN(placement_names, value);
-        break;
-    case DSPY_MASS_RULE:
-        name = NAME_IN(mass_rule_names, value);
-        break;
-    case DSPY_GROWTH_STATE:
-        name = NAME_IN(growth_state_names, value);
-        break;
-    case DSPY_BROADPHASE:
-        name = ds_broadphase_name((ds_broadphase)value);
-        break;
-    case DSPY_KINDS:
-        break;
-    }
-    return name && strcmp(name, "unknown") != 0 ? name : NULL;
+    return kinds[kind].name(value);
 }
 
 PyObject *dspy_names(dspy_kind kind)
 {
-    PyObject *list = PyList_New(0);
-    for (int v = 0; list && dspy_name_of(kind, v); ++v) {
-        PyObject *s = PyUnicode_FromString(dspy_name_of(kind, v));
-        if (!s || PyList_Append(list, s) < 0)
-            Py_CLEAR(list);
-        Py_XDECREF(s);
+    const int count = (unsigned)kind < DSPY_KINDS ? kinds[kind].count : 0;
+    PyObject *tuple = PyTuple_New(count);
+    for (int v = 0; tuple && v < count; ++v) {
+        PyObject *s = PyUnicode_FromString(kinds[kind].name(v));
+        if (!s)
+            Py_CLEAR(tuple);
+        else
+            PyTuple_SET_ITEM(tuple, v, s);
     }
-    PyObject *tuple = list ? PyList_AsTuple(list) : NULL;
-    Py_XDECREF(list);
     return tuple;
 }
 
@@ -76,20 +71,18 @@ int dspy_parse_name(dspy_kind kind, PyObject *value, const char *field, int *out
     const char *given = PyUnicode_AsUTF8(value);
     if (!given)
         return -1;
-    char accepted[256] = "";
-    for (int v = 0; dspy_name_of(kind, v); ++v) {
-        if (strcmp(given, dspy_name_of(kind, v)) == 0) {
-            *out = v;
-            return 0;
-        }
-        const size_t used = strlen(accepted);
-        PyOS_snprintf(accepted + used, sizeof accepted - used, "%s'%s'", used ? ", " : "",
-                      dspy_name_of(kind, v));
+    ds_error err;
+    if (kinds[kind].parse(given, out, &err) == DS_OK)
+        return 0;
+    /* The library's sentence ("mass_rule = 'volume' is not one of ...")
+     * about the module's argument: its name for it ("mass = ..."). */
+    const size_t flen = strlen(err.field);
+    if (strcmp(err.field, field) != 0 && strncmp(err.message, err.field, flen) == 0) {
+        char words[sizeof err.message];
+        PyOS_snprintf(words, sizeof words, "%s%s", field, err.message + flen);
+        memcpy(err.message, words, sizeof words);
+        PyOS_snprintf(err.field, sizeof err.field, "%s", field);
     }
-    PyObject *message = PyUnicode_FromFormat("%s = %R is not one of %s", field, value, accepted);
-    const char *text = message ? PyUnicode_AsUTF8(message) : NULL;
-    if (text)
-        dspy_raise(DS_ERR_ARG, field, text);
-    Py_XDECREF(message);
+    dspy_raise_error(&err);
     return -1;
 }

@@ -4,7 +4,7 @@
  * one paragraph of Sim's docstring. The mixture's arguments (species,
  * radii, masses, mass) are a ds_mixture beside it, made in mixture.c.
  *
- * The library judges every value (ds_diagnose_params) and its sentence
+ * The library judges every value (ds_params_check) and its sentence
  * is what is raised; the module refuses only what Python adds: wrong
  * types, negative integers, and 0 for a length, which the C API reads as
  * "the default" but which from Python, where the defaults are written
@@ -194,19 +194,19 @@ static int parse(PyObject *args, PyObject *kwargs, ds_params *p, dspy_mixture *m
 int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params,
                           dspy_mixture *mixture, char warning[256])
 {
-    ds_params p = ds_default_params(0, 0.0);
+    ds_params p = ds_params_default(0, 0.0);
     for (size_t k = 0; k < PARAM_ARGS; ++k)
         if (param_args[k].kind == ARG_LENGTH)
             *(double *)member(&p, &param_args[k]) = param_args[k].fallback;
     if (parse(args, kwargs, &p, mixture) < 0 || dspy_mixture_convert(mixture, p.n) < 0)
         return -1;
     unsigned warnings = 0;
-    ds_params_error err;
-    const ds_status st = ds_diagnose_mixture(&p, dspy_mixture_of(mixture), &warnings, &err);
+    ds_error err;
+    const ds_status st = ds_params_check(&p, dspy_mixture_of(mixture), &warnings, &err);
     if (st != DS_OK) {
         dspy_mixture_free(mixture);
         Py_CLEAR(mixture->args);
-        dspy_raise(st, err.field, err.message);
+        dspy_raise_error(&err);
         return -1;
     }
     if (warning)
@@ -277,7 +277,8 @@ static PyObject *mixture_repr(PyObject *text, PyObject *mixture_args)
         const char *name = dspy_mixture_names[k];
         PyObject *v = PyDict_GetItemString(mixture_args, name);
         const int plain = !v || v == Py_None ||
-                          (PyUnicode_Check(v) && PyUnicode_CompareWithASCIIString(v, "equal") == 0);
+                          (PyUnicode_Check(v) && PyUnicode_CompareWithASCIIString(
+                                                     v, ds_mass_rule_name(DS_MASS_EQUAL)) == 0);
         if (plain)
             continue;
         PyObject *part = PyUnicode_FromFormat(", %s=%R", name, v);
@@ -290,7 +291,7 @@ static PyObject *mixture_repr(PyObject *text, PyObject *mixture_args)
 
 PyObject *dspy_params_repr(const ds_params *p, unsigned unknown, PyObject *mixture_args)
 {
-    ds_params defaults = ds_default_params(p->n, p->radius);
+    ds_params defaults = ds_params_default(p->n, p->radius);
     for (size_t k = 0; k < PARAM_ARGS; ++k)
         if (param_args[k].kind == ARG_LENGTH)
             *(double *)member(&defaults, &param_args[k]) = param_args[k].fallback;
@@ -327,13 +328,14 @@ PyObject *dspy_params_repr(const ds_params *p, unsigned unknown, PyObject *mixtu
 
 unsigned dspy_params_of_sim(const ds_sim *sim, ds_params *p)
 {
-    *p = ds_default_params(ds_count(sim), ds_radius(sim));
-    p->box = ds_box(sim);
-    p->box_y = ds_box_y(sim) == ds_box(sim) ? 0.0 : ds_box_y(sim);
-    p->dt = ds_dt(sim);
-    p->integrator = ds_integrator_used(sim);
-    p->boundary = ds_boundary_used(sim);
-    p->broadphase = ds_broadphase_used(sim);
+    *p = ds_params_default(ds_sim_get_count(sim), ds_sim_get_radius(sim));
+    p->box = ds_sim_get_box_width(sim);
+    p->box_y =
+        ds_sim_get_box_height(sim) == ds_sim_get_box_width(sim) ? 0.0 : ds_sim_get_box_height(sim);
+    p->dt = ds_sim_get_dt(sim);
+    p->integrator = ds_sim_get_integrator(sim);
+    p->boundary = ds_sim_get_boundary(sim);
+    p->broadphase = ds_sim_get_broadphase(sim);
     /* What the library does not tell: the rows of the table it leaves out. */
     unsigned unknown = 0;
     for (size_t k = 0; k < PARAM_ARGS; ++k) {

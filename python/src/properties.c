@@ -15,20 +15,31 @@ typedef struct count_getter {
     uint64_t (*get)(const ds_sim *);
 } count_getter;
 
-static uint64_t count_of(const ds_sim *sim) { return ds_count(sim); }
+static uint64_t count_of(const ds_sim *sim) { return ds_sim_get_count(sim); }
+/* psi6, NaN where the library refuses it (a periodic box too narrow). */
+static double psi6_or_nan(const ds_sim *sim)
+{
+    double psi6 = NAN;
+    (void)ds_sim_get_psi6(sim, &psi6, NULL);
+    return psi6;
+}
 
-static const real_getter get_time = {ds_time}, get_radius = {ds_radius}, get_box = {ds_box},
-                         get_box_y = {ds_box_y}, get_dt = {ds_dt},
-                         get_kinetic_energy = {ds_kinetic_energy}, get_pressure = {ds_pressure},
-                         get_virial_pressure = {ds_virial_pressure}, get_psi6 = {ds_psi6},
-                         get_wall_impulse = {ds_wall_impulse},
-                         get_collision_seconds = {ds_collision_seconds},
-                         get_radius_max = {ds_radius_max}, get_area_fraction = {ds_area_fraction},
-                         get_growth_z = {ds_growth_z}, get_temperature = {ds_temperature},
-                         get_compressibility = {ds_compressibility};
-static const count_getter get_steps = {ds_steps}, get_n = {count_of},
-                          get_collision_count = {ds_collision_count},
-                          get_wall_count = {ds_wall_count}, get_pairs_tested = {ds_pairs_tested};
+static const real_getter get_time = {ds_sim_get_time}, get_radius = {ds_sim_get_radius},
+                         get_box = {ds_sim_get_box_width}, get_box_y = {ds_sim_get_box_height},
+                         get_dt = {ds_sim_get_dt}, get_kinetic_energy = {ds_sim_get_kinetic_energy},
+                         get_pressure = {ds_sim_get_pressure},
+                         get_virial_pressure = {ds_sim_get_virial_pressure},
+                         get_psi6 = {psi6_or_nan}, get_wall_impulse = {ds_sim_get_wall_impulse},
+                         get_collision_seconds = {ds_sim_get_collision_seconds},
+                         get_radius_max = {ds_sim_get_radius_max},
+                         get_area_fraction = {ds_sim_get_area_fraction},
+                         get_growth_z = {ds_sim_get_growth_z},
+                         get_temperature = {ds_sim_get_temperature},
+                         get_compressibility_factor = {ds_sim_get_compressibility_factor};
+static const count_getter get_steps = {ds_sim_get_steps}, get_n = {count_of},
+                          get_collision_count = {ds_sim_get_collision_count},
+                          get_wall_count = {ds_sim_get_wall_count},
+                          get_pairs_tested = {ds_sim_get_pairs_tested};
 
 static PyObject *real_property(dspy_sim *self, void *closure)
 {
@@ -51,13 +62,13 @@ static PyObject *name_property(dspy_sim *self, void *closure)
     int value = 0;
     switch (kind) {
     case DSPY_INTEGRATOR:
-        value = (int)ds_integrator_used(sim);
+        value = (int)ds_sim_get_integrator(sim);
         break;
     case DSPY_BOUNDARY:
-        value = (int)ds_boundary_used(sim);
+        value = (int)ds_sim_get_boundary(sim);
         break;
     case DSPY_BROADPHASE:
-        value = (int)ds_broadphase_used(sim);
+        value = (int)ds_sim_get_broadphase(sim);
         break;
     case DSPY_PLACEMENT:
         if (dspy_param_unknown(self->unknown, "placement"))
@@ -65,7 +76,7 @@ static PyObject *name_property(dspy_sim *self, void *closure)
         value = (int)self->params.placement;
         break;
     case DSPY_GROWTH_STATE:
-        value = (int)ds_growth_state_of(sim);
+        value = (int)ds_sim_get_growth_state(sim);
         break;
     case DSPY_MASS_RULE:
     case DSPY_KINDS:
@@ -84,11 +95,13 @@ static PyObject *per_disk(dspy_sim *self, int masses)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    npy_intp dims[1] = {(npy_intp)ds_count(sim)};
+    npy_intp dims[1] = {(npy_intp)ds_sim_get_count(sim)};
     PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, dims, NPY_DOUBLE);
-    if (a) {
-        double *out = (double *)PyArray_DATA(a);
-        ds_get_radii(sim, masses ? NULL : out, masses ? out : NULL);
+    ds_error err;
+    if (a && (masses ? ds_sim_get_masses(sim, (double *)PyArray_DATA(a), &err)
+                     : ds_sim_get_radii(sim, (double *)PyArray_DATA(a), &err)) != DS_OK) {
+        Py_DECREF(a);
+        return dspy_raise_error(&err);
     }
     return (PyObject *)a;
 }
@@ -105,6 +118,43 @@ static PyObject *masses_property(dspy_sim *self, void *closure)
     return per_disk(self, 1);
 }
 
+/* Every disk's kind as a new (n,) uint32 array. */
+static PyObject *kinds_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    npy_intp dims[1] = {(npy_intp)ds_sim_get_count(sim)};
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(1, dims, NPY_UINT32);
+    ds_error err;
+    if (a && ds_sim_get_kinds(sim, (uint32_t *)PyArray_DATA(a), &err) != DS_OK) {
+        Py_DECREF(a);
+        return dspy_raise_error(&err);
+    }
+    return (PyObject *)a;
+}
+
+/* The kinds' names, a tuple of str by kind. */
+static PyObject *kind_names_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    const size_t count = ds_sim_get_kind_count(sim);
+    PyObject *names = PyTuple_New((Py_ssize_t)count);
+    for (size_t k = 0; names && k < count; ++k) {
+        PyObject *name = PyUnicode_FromString(ds_sim_get_kind_name(sim, k));
+        if (!name) {
+            Py_CLEAR(names);
+            break;
+        }
+        PyTuple_SET_ITEM(names, (Py_ssize_t)k, name);
+    }
+    return names;
+}
+
 static PyObject *momentum_property(dspy_sim *self, void *closure)
 {
     (void)closure;
@@ -112,7 +162,7 @@ static PyObject *momentum_property(dspy_sim *self, void *closure)
     if (!sim)
         return NULL;
     double px, py;
-    ds_momentum(sim, &px, &py);
+    ds_sim_get_momentum(sim, &px, &py);
     return Py_BuildValue("(dd)", px, py);
 }
 
@@ -160,6 +210,14 @@ PyGetSetDef dspy_sim_getset[] = {
      "Every disk's mass as a new (n,) float64 array, in generation order (a copy;\n"
      "1 for each disk of one kind).",
      NULL},
+    {"kinds", (getter)kinds_property, NULL,
+     "Every disk's kind as a new (n,) uint32 array, in generation order: its\n"
+     "species' index in species= (0 without species).",
+     NULL},
+    {"kind_names", (getter)kind_names_property, NULL,
+     "The kinds' names by kind, a tuple of str: 'A', 'B', ... in the order of\n"
+     "species= (('A',) without species).",
+     NULL},
     REAL(radius_max, "The largest radius (radius with one kind of disk)."),
     REAL(area_fraction, "The fraction of the box the disks cover: sum of pi r^2 over box box_y."),
     REAL(box, "Width of the box."),
@@ -198,13 +256,13 @@ PyGetSetDef dspy_sim_getset[] = {
          "any step: P A = E + (1 / (2 t)) sum over collisions of r_ij . dp_i, with E the\n"
          "kinetic energy (N kT = E in 2D) and A the area the centres reach, (box - 2R)\n"
          "(box_y - 2R) with walls, box box_y in a periodic box. The compressibility\n"
-         "factor is Z = compressibility. With the time step the collisions happen a\n"
-         "little inside 2R, which biases it low."),
+         "factor is Z = compressibility_factor. With the time step the collisions happen\n"
+         "a little inside 2R, which biases it low."),
     REAL(temperature,
          "The temperature the collisions see: kT = kinetic_energy / n with walls; in a\n"
          "periodic box, where the momentum is conserved, kT = K_int / (n - 1), K_int the\n"
          "kinetic energy less the centre of mass's (0 for one disk)."),
-    REAL(compressibility,
+    REAL(compressibility_factor,
          "The canonical compressibility factor Z = P A / (n kT), kT = temperature,\n"
          "averaged since the last reset (0 before any step): the Z Monte Carlo gives at\n"
          "the same n. With walls it is virial_pressure * A / kinetic_energy; periodic,\n"
@@ -223,9 +281,10 @@ PyGetSetDef dspy_sim_getset[] = {
          "sorting, pruning, testing and resolving pairs; with 'event', processing\n"
          "events (collisions, wall turns, cell crossings) and their predictions."),
     NAME(growth_state,
-         "Growth (set_growth): 'none' (never grown, or stopped with rate 0), 'growing',\n"
-         "'reached_eta' (stopped at until_eta) or 'jammed' (stopped when Z passed\n"
-         "until_z)."),
+         "Growth (set_growth): 'none' (never grown, stopped with rate 0, ended by\n"
+         "set_state, or stopped by run() for want of memory, which raises\n"
+         "NoMemoryError), 'growing', 'reached_eta' (stopped at until_eta) or 'jammed'\n"
+         "(stopped when Z passed until_z)."),
     REAL(growth_z, "The reduced pressure Z growth measured over its last window of 2 n\n"
                    "collisions (when it jammed, the window that stopped it); 0 before its\n"
                    "first window, and for a simulation that never grew."),

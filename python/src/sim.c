@@ -126,13 +126,14 @@ static int sim_init(dspy_sim *self, PyObject *args, PyObject *kwargs)
         return -1;
     const ds_mixture *mixture = dspy_mixture_of(&mix);
     size_t bytes = 0;
-    const ds_status need = ds_memory_needed_mixture(&p, mixture, &bytes);
+    ds_error err;
+    const ds_status need = ds_params_memory(&p, mixture, &bytes, &err);
     char what[64];
     PyOS_snprintf(what, sizeof what, "n = %zu disks", p.n);
     ds_sim *sim = NULL;
     ds_status st = DS_OK;
     if (need != DS_OK)
-        dspy_raisef(need, "n", "n = %zu disks: %s", p.n, ds_status_str(need));
+        dspy_raise_error(&err);
     else if (dspy_check_memory((double)bytes, what) < 0)
         ;
     else if (warning[0] && PyErr_WarnEx(PyExc_RuntimeWarning, warning, 1) < 0)
@@ -140,21 +141,11 @@ static int sim_init(dspy_sim *self, PyObject *args, PyObject *kwargs)
     else {
         self->busy = 1;
         Py_BEGIN_ALLOW_THREADS
-        st = ds_create_mixture(&p, mixture, &sim);
+        st = ds_sim_create(&p, mixture, &sim, &err);
         Py_END_ALLOW_THREADS
         self->busy = 0;
-        if (st == DS_ERR_PLACEMENT && mixture)
-            dspy_raisef(st, "n",
-                        "n = %zu disks of the mixture could not be placed: a disk found no free "
-                        "place in 2 million random draws (placement='lattice' fits more)",
-                        p.n);
-        else if (st == DS_ERR_PLACEMENT)
-            dspy_raisef(st, "n",
-                        "n = %zu disks of radius %g could not be placed: a disk found no free "
-                        "place in 2 million random draws (placement='lattice' fits more)",
-                        p.n, p.radius);
-        else if (st != DS_OK)
-            dspy_raisef(st, NULL, "n = %zu disks: %s", p.n, ds_status_str(st));
+        if (st != DS_OK)
+            dspy_raise_error(&err);
     }
     dspy_mixture_free(&mix);
     if (!sim) {
@@ -170,7 +161,7 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
     if (!mixture_args) /* a loaded checkpoint: its radii and masses are radii, masses */
         mixture_args = PyDict_New();
     if (self->busy || !mixture_args) {
-        ds_destroy(sim);
+        ds_sim_destroy(sim);
         Py_XDECREF(mixture_args);
         if (self->busy)
             PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
@@ -181,7 +172,7 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
         p = *params;
     else
         unknown = dspy_params_of_sim(sim, &p);
-    ds_destroy(self->sim); /* __init__ called again: the new one replaces it */
+    ds_sim_destroy(self->sim); /* __init__ called again: the new one replaces it */
     self->sim = sim;
     self->params = p;
     self->unknown = unknown;
@@ -191,7 +182,7 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
 
 static void sim_dealloc(dspy_sim *self)
 {
-    ds_destroy(self->sim);
+    ds_sim_destroy(self->sim);
     Py_CLEAR(self->mixture_args);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
@@ -203,7 +194,7 @@ static PyObject *sim_close(dspy_sim *self, PyObject *unused)
         PyErr_SetString(dspy_Error, "this Sim is in use by another thread");
         return NULL;
     }
-    ds_destroy(self->sim);
+    ds_sim_destroy(self->sim);
     self->sim = NULL;
     Py_RETURN_NONE;
 }
@@ -240,9 +231,9 @@ static PyObject *sim_repr(dspy_sim *self)
         Py_DECREF(args);
         return r;
     }
-    char *time = PyOS_double_to_string(ds_time(self->sim), 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
+    char *time = PyOS_double_to_string(ds_sim_get_time(self->sim), 'r', 0, Py_DTSF_ADD_DOT_0, NULL);
     PyObject *r = time ? PyUnicode_FromFormat("<disksim.%U at t = %s after %llu steps>", args, time,
-                                              (unsigned long long)ds_steps(self->sim))
+                                              (unsigned long long)ds_sim_get_steps(self->sim))
                        : PyErr_NoMemory();
     PyMem_Free(time);
     Py_DECREF(args);
@@ -252,7 +243,9 @@ static PyObject *sim_repr(dspy_sim *self)
 /* ---------------------------------------------------------------- running */
 
 /* steps whole steps, in chunks with the GIL released, taking signals
- * between them; on KeyboardInterrupt the steps done stay done. */
+ * between them; on KeyboardInterrupt the steps done stay done. A run the
+ * library stops (a growth without memory for its cells, NoMemoryError)
+ * likewise keeps the steps it took. */
 static int advance(dspy_sim *self, ds_sim *sim, uint64_t steps)
 {
     uint64_t chunk = 1;
@@ -260,11 +253,18 @@ static int advance(dspy_sim *self, ds_sim *sim, uint64_t steps)
     while (steps > 0) {
         const uint64_t k = chunk < steps ? chunk : steps;
         double seconds;
+        ds_status st;
+        ds_error err;
         Py_BEGIN_ALLOW_THREADS
-        const double t0 = ds_now();
-        ds_run(sim, k);
-        seconds = ds_now() - t0;
+        const double t0 = ds_timer_now();
+        st = ds_sim_run(sim, k, &err);
+        seconds = ds_timer_now() - t0;
         Py_END_ALLOW_THREADS
+        if (st != DS_OK) {
+            self->busy = 0;
+            dspy_raise_error(&err);
+            return -1;
+        }
         steps -= k;
         if (steps && PyErr_CheckSignals() < 0) {
             self->busy = 0;
@@ -309,7 +309,7 @@ static PyObject *sim_reset_observables(dspy_sim *self, PyObject *unused)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    ds_reset_observables(sim);
+    ds_sim_reset_observables(sim);
     Py_RETURN_NONE;
 }
 
@@ -337,7 +337,7 @@ static PyMethodDef sim_methods[] = {
      "set_state($self, /, positions, velocities=None)\n--\n\n"
      "Replace every disk at once: positions and velocities are (n, 2) arrays (or\n"
      "anything numpy reads as one), row i becoming disk i; velocities=None keeps the\n"
-     "present ones. The whole state is checked before anything changes (ds_set_all):\n"
+     "present ones. The whole state is checked before anything changes (ds_sim_set_disks):\n"
      "ArgumentError if a value is not finite, a velocity component exceeds 1e12, a\n"
      "centre is outside the box ([R, box - R] x [R, box_y - R] with walls,\n"
      "[0, box) x [0, box_y) periodic) or two disks overlap (status DS_ERR_OVERLAP),\n"
@@ -368,7 +368,7 @@ static PyMethodDef sim_methods[] = {
      "each disk as a complex array. cutoff=None is psi6's, 1.4 d (d = 2R)."},
     {"save", (PyCFunction)(void (*)(void))dspy_sim_save, METH_VARARGS | METH_KEYWORDS,
      "save($self, /, path)\n--\n\n"
-     "Write an exact checkpoint of the simulation to path (ds_save_state): the\n"
+     "Write an exact checkpoint of the simulation to path (ds_checkpoint_save): the\n"
      "parameters, time and step count, every disk to the bit, the observables'\n"
      "accumulators and the integrator's own state. disksim.load(path) gives a Sim\n"
      "that goes on bit for bit as this one would have. The format is the library's,\n"
@@ -376,7 +376,7 @@ static PyMethodDef sim_methods[] = {
      "copy.copy() use the same checkpoint, in memory."},
     {"__reduce__", (PyCFunction)dspy_sim_reduce, METH_NOARGS,
      "__reduce__($self, /)\n--\n\n"
-     "For pickle and copy: the exact checkpoint (ds_format_state) and the arguments.\n"
+     "For pickle and copy: the exact checkpoint (ds_checkpoint_format) and the arguments.\n"
      "The copy is a new, independent simulation that goes on bit for bit as this one."},
     {"to_ase", (PyCFunction)dspy_sim_to_ase, METH_NOARGS,
      "to_ase($self, /)\n--\n\n"

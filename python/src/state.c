@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* A Sim's state as arrays: positions, velocities and unwrapped centres out
- * (ds_get_all, ds_get_unwrapped, a fresh copy each time), and set_state in (ds_set_all, which
- * checks the whole state before anything changes).
+ * (ds_sim_get_disks, ds_sim_get_unwrapped, a fresh copy each time), and set_state in
+ * (ds_sim_set_disks, which checks the whole state before anything changes).
  *
  * Converting an argument can run Python code (an object's __array__ or
  * __float__), which could close or re-create this very Sim: the ds_sim is
@@ -13,14 +13,14 @@
 
 ds_disk *dspy_get_all(const ds_sim *sim)
 {
-    const size_t n = ds_count(sim);
+    const size_t n = ds_sim_get_count(sim);
     ds_disk *disks =
         n <= PY_SSIZE_T_MAX / sizeof *disks ? PyMem_RawMalloc(n * sizeof *disks + 1) : NULL;
     if (!disks) {
         PyErr_NoMemory();
         return NULL;
     }
-    ds_get_all(sim, disks);
+    ds_sim_get_disks(sim, disks, NULL);
     return disks;
 }
 
@@ -29,7 +29,7 @@ static PyObject *xy_of(dspy_sim *self, int velocities)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    const size_t n = ds_count(sim);
+    const size_t n = ds_sim_get_count(sim);
     PyArrayObject *a = dspy_new_xy(n);
     ds_disk *disks = a ? dspy_get_all(sim) : NULL;
     if (!disks) {
@@ -63,9 +63,9 @@ PyObject *dspy_unwrapped_property(dspy_sim *self, void *closure)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    PyArrayObject *a = dspy_new_xy(ds_count(sim));
+    PyArrayObject *a = dspy_new_xy(ds_sim_get_count(sim));
     if (a)
-        ds_get_unwrapped(sim, (double *)PyArray_DATA(a));
+        ds_sim_get_unwrapped(sim, (double *)PyArray_DATA(a), NULL);
     return (PyObject *)a;
 }
 
@@ -79,7 +79,7 @@ PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs)
     ds_sim *sim = dspy_sim_of(self);
     if (!sim)
         return NULL;
-    const size_t n = ds_count(sim);
+    const size_t n = ds_sim_get_count(sim);
     PyArrayObject *positions = dspy_xy_array(positions_obj, "positions", n);
     PyArrayObject *velocities = positions && velocities_obj != Py_None
                                     ? dspy_xy_array(velocities_obj, "velocities", n)
@@ -92,9 +92,9 @@ PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs)
     sim = dspy_sim_of(self);
     if (!sim)
         goto done;
-    if (ds_count(sim) != n) {
+    if (ds_sim_get_count(sim) != n) {
         dspy_raisef(DS_ERR_ARG, "positions", "this Sim was re-created with %zu disks meanwhile",
-                    ds_count(sim));
+                    ds_sim_get_count(sim));
         goto done;
     }
     disks = dspy_get_all(sim);
@@ -110,15 +110,15 @@ PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs)
             disks[i].vy = v[2 * i + 1];
         }
     }
-    ds_state_error err;
+    ds_error err;
     ds_status st;
     self->busy = 1;
     Py_BEGIN_ALLOW_THREADS
-    st = ds_set_all(sim, disks, &err);
+    st = ds_sim_set_disks(sim, disks, &err);
     Py_END_ALLOW_THREADS
     self->busy = 0;
     if (st != DS_OK)
-        dspy_raise(st, NULL, err.message);
+        dspy_raise_error(&err);
     else
         result = Py_NewRef(Py_None);
 done:

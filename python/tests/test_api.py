@@ -4,6 +4,7 @@ import inspect
 import pydoc
 
 import numpy as np
+import pytest
 
 import disksim
 
@@ -47,13 +48,35 @@ def test_the_signature_is_introspectable_and_its_defaults_are_the_librarys():
 
 def test_the_names_are_the_librarys():
     assert disksim.INTEGRATORS == ("step", "event")
-    assert disksim.BOUNDARIES == ("walls", "periodic")
+    assert disksim.BOUNDARIES == ("walls", "periodic", "channel")
     assert disksim.PLACEMENTS == ("random", "lattice")
     assert set(disksim.BROADPHASES) == {"sap", "brute", "strips", "auto", "cells"}
     assert disksim.MASS_RULES == ("equal", "area")
     assert disksim.GROWTH_STATES == ("none", "growing", "reached_eta", "jammed")
     assert disksim.JAMMED_Z == 1e6
+    assert disksim.VELOCITY_MAX == 1e12
     assert disksim.__version__ == disksim.library_version
+
+
+def test_3_0_names_z_the_compressibility_factor():
+    # 3.0: Sim.compressibility is compressibility_factor, as the library's
+    # ds_sim_get_compressibility_factor (Z, not the compressibility kappa).
+    s = disksim.Sim(100, 5, boundary="periodic")
+    s.run(200)
+    assert s.compressibility_factor > 1.0
+    assert not hasattr(s, "compressibility")
+
+
+def test_a_refusal_carries_the_librarys_field_value_and_limit():
+    with pytest.raises(disksim.ArgumentError) as info:
+        disksim.Sim(400, 600.0)
+    e = info.value
+    assert (e.status, e.field, e.value, e.limit) == ("DS_ERR_ARG", "radius", 600.0, 500.0)
+    assert str(e).startswith("radius = 600 does not fit a box of 1000 x 1000")
+    with pytest.raises(disksim.ArgumentError) as info:
+        disksim.Sim(10, 5, integrator="exact")
+    assert info.value.field == "integrator" and info.value.value is None
+    assert str(info.value) == "integrator = 'exact' is not one of 'step', 'event'"
 
 
 def test_params_recreate_the_same_simulation():

@@ -14,6 +14,7 @@ ase_io = pytest.importorskip("ase.io", reason="ASE is not installed (Debian: pyt
 @pytest.mark.parametrize("options, arguments", [
     ((), {}),
     (("--periodic", "--integrator", "event"), {"boundary": "periodic", "integrator": "event"}),
+    (("--boundary", "channel", "--box-y", "600"), {"boundary": "channel", "box_y": 600.0}),
 ])
 def test_to_ase_is_what_ase_reads_from_the_commands_trajectory(disks_command, tmp_path, options,
                                                                 arguments):
@@ -33,6 +34,8 @@ def test_to_ase_is_what_ase_reads_from_the_commands_trajectory(disks_command, tm
     assert np.array_equal(mine.get_masses(), read.get_masses())
     assert mine.info["Time"] == pytest.approx(read.info["Time"]) == 0.1
     assert (mine.positions[:, 2] == 0).all()
+    assert list(mine.pbc) == [arguments.get("boundary", "walls") != "walls",
+                              arguments.get("boundary") == "periodic", False]
 
 
 def test_to_ase_without_ase_says_what_to_install(monkeypatch):

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """Exact checkpoints from Python: Sim.save and disksim.load, pickle and copy,
-all through the library's ds_save_state / ds_parse_state. A Sim made from a
+all through the library's ds_checkpoint_save / ds_checkpoint_parse. A Sim made from a
 checkpoint goes on bit for bit as the saved one would have."""
 import copy
 import os
@@ -121,7 +121,7 @@ def test_a_checkpoint_that_cannot_be_written_is_a_file_error():
 
 
 def test_a_checkpoint_is_read_from_a_regular_file_only():
-    # ds_load_state reads to the end of the file, which /dev/zero never has
+    # ds_checkpoint_load reads to the end of the file, which /dev/zero never has
     with pytest.raises(disksim.FileError, match="not a regular file"):
         disksim.load("/dev/zero")
     with pytest.raises(disksim.FileError, match="not a regular file"):

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: MIT
-"""Compression from Python: Sim.set_growth (ds_set_growth), growth_state,
+"""Compression from Python: Sim.set_growth (ds_sim_set_growth), growth_state,
 growth_z, scale_velocities and contacts(), and checkpoints of mixtures and
 of growing runs, which go on bit for bit as the C tests check."""
 import copy
@@ -71,7 +71,7 @@ def test_scale_velocities_scales_the_energy_by_its_square():
 
 
 def test_contacts_of_a_lattice_are_its_coordination_number():
-    # ds_count_contacts's own case: 64 disks on the 8 x 8 triangular
+    # ds_sim_get_contacts's own case: 64 disks on the 8 x 8 triangular
     # lattice, diameters 1e-6 short of the spacing: six contacts each within
     # a gap of 1e-5, none within 1e-7 (all rattlers).
     spacing = 1000.0 / 8
@@ -135,27 +135,32 @@ def test_a_growing_run_saved_and_loaded_goes_on_bit_for_bit(tmp_path):
 
 
 # ---------------------------------------------------------------------------
-# Refusals, in the header's words
+# Refusals, in the library's words, with the field it names
 
 
 def test_growth_is_refused_where_it_cannot_run():
     cases = [
-        (dict(), "growth runs with integrator='event' in a periodic box only, not "
-                 "integrator='step' with boundary='walls'"),
-        (dict(integrator="event"), "not integrator='event' with boundary='walls'"),
-        (dict(boundary="periodic"), "not integrator='step' with boundary='periodic'"),
+        (dict(), "integrator", r"integrator = step: growth needs the event-driven integrator"),
+        (dict(integrator="event"), "boundary", "boundary = walls: growth needs a periodic box"),
+        (dict(boundary="periodic"), "integrator", "integrator = step: growth needs"),
     ]
-    for kw, words in cases:
-        with pytest.raises(disksim.ArgumentError, match=words):
+    for kw, field, words in cases:
+        with pytest.raises(disksim.ArgumentError, match=words) as info:
             disksim.Sim(10, 5.0, **kw).set_growth(0.1)
+        assert info.value.field == field
+        assert info.value.value is None and info.value.limit is None
 
 
 def test_a_growth_faster_than_the_disks_move_is_refused():
     # 10 disks of R = 5 at the speed of 100: the largest pair's surfaces
     # recede at 2 x 5 x rate, at most 10 x 100, so rate <= 100.
     s = disksim.Sim(10, 5.0, integrator="event", boundary="periodic")
-    with pytest.raises(disksim.ArgumentError, match="rate = 200 is too fast"):
+    with pytest.raises(disksim.ArgumentError, match="rate = 200 is too fast") as info:
         s.set_growth(200.0)
+    # The library's numbers: the rate refused and the fastest it takes (the
+    # rms speed, 100 to rounding once the mean velocity is taken out).
+    assert (info.value.field, info.value.value) == ("rate", 200.0)
+    assert info.value.limit == pytest.approx(100.0, rel=1e-12)
     assert s.growth_state == "none"
     s.set_growth(100.0)
     assert s.growth_state == "growing"

@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: MIT
 """Mixtures from Python: Sim(..., species=...) or radii= and masses= per
-disk, through ds_create_mixture. The radii and masses come back as given,
+disk, through ds_sim_create. The radii and masses come back as given,
 and an event-driven periodic run with unequal masses conserves energy and
 momentum to rounding (the bounds below say how much rounding)."""
 import math
+import pickle
 
 import numpy as np
 import pytest
@@ -29,6 +30,19 @@ def test_a_binary_mixtures_radii_come_back_in_generation_order():
     assert abs(s.area_fraction - eta) < 1e-12
     radii[:] = 0.0  # a copy: changing it changes nothing
     assert s.radii[0] == 6.0
+
+
+def test_each_disk_knows_its_species_through_a_run_and_a_checkpoint():
+    s = binary(200, 6.0, integrator="event", boundary="periodic", seed=3)
+    want = np.repeat(np.arange(2, dtype=np.uint32), 100)
+    assert s.kinds.dtype == np.uint32 and np.array_equal(s.kinds, want)
+    assert s.kind_names == ("A", "B")
+    s.run(200)  # the cells' sorts move the slots; the kinds go with them
+    back = pickle.loads(pickle.dumps(s))
+    assert np.array_equal(back.kinds, want) and back.kind_names == ("A", "B")
+    one = disksim.Sim(10, 5.0)
+    assert np.array_equal(one.kinds, np.zeros(10, np.uint32))
+    assert one.kind_names == ("A",)
 
 
 def test_mass_area_weighs_each_disk_as_its_area():

@@ -5,32 +5,61 @@
  *
  * The pipeline is create (sim/params.c, init/) -> step (an integrator,
  * through its table: timestep/, event/) -> observe (observe/) -> write
- * (io/). sim/sim.c keeps the public API and dispatches through the table;
- * the parts never call sim/. Not installed. */
+ * (io/). sim/ keeps the public API and dispatches through the table;
+ * the parts never call sim/. Refusals are made through core/error.c.
+ * Not installed. */
 #ifndef DS_CORE_H
 #define DS_CORE_H
 
+#include "core/box.h"
 #include "core/disk_arrays.h"
+#include "core/protocol.h"
 #include "core/state_io.h"
 #include "disk_sim.h"
 
 #define DS_TWO_PI 6.28318530717958647692
 
-/* What the parts read and never write: the parameters with the defaults
- * resolved, fixed at creation. */
+/* For a hot loop's helper that must inline: gcc's size heuristic
+ * otherwise keeps a large one out of line (the strips' merge, the
+ * event-driven prediction's gathering: 7% per collision measured). */
+#if defined(__GNUC__)
+#define DS_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define DS_ALWAYS_INLINE inline
+#endif
+
+/* What the parts read: the parameters with the defaults resolved, fixed
+ * at creation, and two things that may change as the run goes, each with
+ * one writer: the box (its sides change only through a state built again
+ * for them; sheared images' shift moves with time) and the disks' sizes
+ * (ds_world_take_radii, whenever radii change: growth). */
 typedef struct ds_world {
     size_t n;
-    double radius, box, box_y, speed, dt; /* box is the width, box_y the height */
+    double radius, speed, dt;
+    /* The box: every part asks it (box.h), none keeps a flag of its own. */
+    ds_box box;
     /* The disks' smallest and largest radius (both radius for one kind;
      * a mixture's radii are in the disk arrays) and the area they cover,
      * sum of pi r^2. Pruning and cells take the largest. */
     double radius_min, radius_max, covered;
     ds_integrator integrator;
+    /* The request's name for the box (ds_sim_get_boundary, checkpoints):
+     * the parts read box's edges instead. */
     ds_boundary boundary;
-    ds_broadphase broadphase; /* resolved, never DS_AUTO */
+    ds_broadphase broadphase; /* resolved, never DS_BROADPHASE_AUTO */
     ds_placement placement;
     uint64_t seed;
 } ds_world;
+
+/* The box a request names: its sides and, along each axis, walls or
+ * periodic as the boundary says (a channel: periodic along x, walls
+ * along y). */
+static inline ds_box ds_box_of(ds_boundary boundary, double width, double height)
+{
+    const ds_edge along_x = boundary == DS_BOUNDARY_WALLS ? DS_EDGE_WALLS : DS_EDGE_PERIODIC;
+    const ds_edge along_y = boundary == DS_BOUNDARY_PERIODIC ? DS_EDGE_PERIODIC : DS_EDGE_WALLS;
+    return ds_box_make(width, height, along_x, along_y);
+}
 
 /* The area n disks of radius r cover, n pi r^2, as one expression: the
  * world of one kind of disk, and each term of a mixture's sum (n = 1). */
@@ -55,9 +84,9 @@ typedef struct ds_tally {
     double wall_reach;
     double virial; /* sum over collisions of r_ij . dp_i since the reset */
     /* The pressure tensor's parts, components xx, yy, xy, never reset
-     * (ds_stress_integral): the collisions' virial tensor, sum of
+     * (ds_sim_get_stress_integral): the collisions' virial tensor, sum of
      * (r_i - r_j)_a dp_i,b; the kinetic tensor sum m v_a v_b as a run
-     * goes (ds_run computes it at the start, then every collision and
+     * goes (ds_sim_run computes it at the start, then every collision and
      * wall turn changes it, collide.h); and the kinetic tensor's time
      * integral, which has reached the integrator's time stress_clock. */
     double stress_virial[3], kinetic[3], kinetic_integral[3];
@@ -68,7 +97,7 @@ typedef struct ds_integrator_ops ds_integrator_ops;
 
 struct ds_sim {
     ds_world world;
-    /* The disks at ds_time in generation-indexed slots (disk_arrays.h).
+    /* The disks at ds_sim_get_time in generation-indexed slots (disk_arrays.h).
      * An integrator with records of its own refreshes them after each
      * run. */
     ds_disks disks;
@@ -78,73 +107,138 @@ struct ds_sim {
     ds_timer collision_timer;
     ds_tally tally;
     uint64_t observables_since_step; /* step count at the last reset */
+    /* The kinds of disk (a mixture's species; one, "A", without) and
+     * their names: kind_names[k] for k < kind_count (NULL: one kind). A
+     * disk's kind is its column kind (absent: 0). */
+    size_t kind_count;
+    char (*kind_names)[DS_KIND_NAME_MAX];
+    /* What acts on the run from outside its dynamics (core/protocol.h):
+     * installed by their setters, their hooks called by the integrator. */
+    ds_protocols protocols;
 };
+
+/* Where an integrator's growing radii stand (ds_integrator_ops.growth):
+ * since integrator time `from` every radius is r_i(from) (1 + rate (t -
+ * from)); scale is r_i(from) over the radius at the growth's start, so
+ * that a speed relative to those (dr_i / dt over it) is rate scale; eta
+ * the area fraction at from. */
+typedef struct ds_growth_law {
+    double rate, scale, from, eta;
+} ds_growth_law;
 
 /* One integrator: a way to advance the disks by whole steps of dt. Each
  * fills one table (timestep/time_step.c, event/event_driven.c), listed in
- * sim/integrators.c by its ds_integrator value. */
+ * sim/tables.c by its ds_integrator value. */
 struct ds_integrator_ops {
     const char *name; /* ds_integrator_name */
     /* The least room between disks it takes, as a fraction of a diameter
      * (DS_ROOM_TO_MOVE, or 0): sim/params.c refuses lattices and walls
      * closer than that. */
     double min_room;
-    /* Whether broad phase bp (never DS_AUTO) serves this integrator. */
+    /* Whether broad phase bp (never DS_BROADPHASE_AUTO) serves this
+     * integrator. */
     int (*fits)(ds_broadphase bp);
-    /* The broad phase DS_AUTO means for world w. */
+    /* The broad phase DS_BROADPHASE_AUTO means for world w. */
     ds_broadphase (*choose)(const ds_world *w);
     /* Refusals and warnings of its own for world w, beyond those
      * params.c makes for every integrator: DS_OK, or a status with err
-     * filled as ds_diagnose_params describes; warnings gets DS_WARN_*
+     * filled as ds_params_check describes; warnings gets DS_WARN_*
      * bits (err->warning the first one's sentence). */
-    ds_status (*check)(const ds_world *w, unsigned *warnings, ds_params_error *err);
+    ds_status (*check)(const ds_world *w, unsigned *warnings, ds_error *err);
     /* Bytes its state allocates for world w (broad phase resolved). */
     size_t (*bytes)(const ds_world *w);
     /* Builds its state (sim->state) from the disks in sim->disks, in
      * generation order, at the time sim->steps stands for (0 when the
-     * simulation is created, later for ds_set_all); it may permute the
-     * slots (ds_disks_permute). */
-    ds_status (*create)(ds_sim *sim);
+     * simulation is created, later for ds_sim_set_disks); it may permute
+     * the slots (ds_disks_permute). A failure (DS_ERR_NOMEM) says why in
+     * err. */
+    ds_status (*create)(ds_sim *sim, ds_error *err);
     void (*destroy)(ds_sim *sim); /* frees sim->state; safe after a failed create */
     /* Advances steps steps (>= 1) of dt; sim->disks shows the disks at
-     * the new time afterwards, slot[] valid. */
-    void (*run)(ds_sim *sim, uint64_t steps);
+     * the new time afterwards, slot[] valid. A run that cannot go on
+     * (DS_ERR_NOMEM, with err filled: a protocol's step's end failed) stops
+     * at the end of a whole step, sim->steps counting it, every part of sim
+     * as at that step's end. */
+    ds_status (*run)(ds_sim *sim, uint64_t steps, ds_error *err);
     /* Replaces the disk in slot k (already checked to be inside the box,
      * finite), or refuses it without changing anything. */
     ds_status (*set)(ds_sim *sim, size_t k, ds_disk d);
     /* Writes whatever of its state the next step depends on, beyond what
-     * sim/state.c writes (the world, the steps, the tally, the disk
+     * sim/checkpoint.c writes (the world, the steps, the tally, the disk
      * arrays in their slots), so that a run loaded from it goes on to the
      * bit as if it had never stopped. */
-    void (*save)(const ds_sim *sim, ds_writer *w);
+    void (*save)(const ds_sim *sim, ds_state_writer *w);
     /* Reads that back into sim->state, the rest of sim already restored:
      * DS_OK, or DS_ERR_FORMAT (or DS_ERR_NOMEM) with a reason, leaving
      * what it made for destroy. It checks what could make the library
      * misbehave (indices out of range, lists that loop, times that are
-     * not numbers); the checksum catches the rest. */
-    ds_status (*load)(ds_sim *sim, ds_reader *r, ds_state_error *err);
-    /* Growth (ds_set_growth), or NULL where the integrator has none. */
-    ds_status (*set_growth)(ds_sim *sim, double rate, double until_eta, double until_z);
+     * not numbers); the checksum catches the rest. version is the file's
+     * format version; what an older one kept here that a protocol keeps
+     * now goes to legacy (core/protocol.h). */
+    ds_status (*load)(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
+                      ds_error *err);
     /* Every velocity times factor (> 0), at the present time. */
     ds_status (*scale_velocities)(ds_sim *sim, double factor);
-    /* Where growth stands (a ds_growth_state) and the Z of its last
-     * window, or NULL: DS_GROWTH_NONE. */
-    int (*growth_state)(const ds_sim *sim, double *z);
+
+    /* What only the integrator knows of what it samples (observe/ asks):
+     * the temperature kT, and the compressibility factor Z averaged since
+     * the last reset (0 before any step). NULL: molecular dynamics, kT
+     * from the velocities and Z from the collision virial. A sampler
+     * without velocities (event-chain Monte Carlo) fills both. */
+    double (*temperature)(const ds_sim *sim);
+    double (*compressibility)(const ds_sim *sim);
+
+    /* Services to protocols, at integrator time t inside the present
+     * step (each NULL where the integrator has none: a protocol that needs
+     * it refuses to start, saying so). */
+    /* The integrator time of the present step boundary. */
+    double (*now)(const ds_sim *sim);
+    /* The kinetic energy K and the centre of mass's share P^2 / (2 M). */
+    void (*kinetic)(const ds_sim *sim, double *k, double *momentum_energy);
+    /* At t: every velocity times factor (1: none; the stress tally's
+     * kinetic part with them, as a heat bath's step taken out of the
+     * run), and from t on radii that grow linearly in time at speed
+     * (relative to the radii at the growth's start; 0: radii fixed at
+     * those of t), fresh to start a growth from the radii of t; every
+     * disk predicted again. DS_ERR_NOMEM, nothing changed, without memory
+     * for a growth's radii. */
+    ds_status (*grow)(ds_sim *sim, double t, double factor, double speed, int fresh);
+    void (*growth_law)(const ds_sim *sim, ds_growth_law *law);
+    /* Room for the growing contacts up to integrator time until: the
+     * state built again with room for radii 5% larger when it has less
+     * (*rebuilt then set; the state's origin is then the present).
+     * DS_ERR_NOMEM, nothing changed, without memory for that. */
+    ds_status (*widen)(ds_sim *sim, double until, int *rebuilt);
 };
 
-/* Fills err (if not NULL) with a printf-style sentence; returns status. */
-ds_status ds_state_refuse(ds_state_error *err, ds_status status, const char *fmt, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
+#define DS_PRINTF(f, a) __attribute__((format(printf, f, a)))
+#else
+#define DS_PRINTF(f, a)
 #endif
-    ;
 
-/* Fills err (if not NULL) with field and a printf-style message; returns
- * status, so a check reads `return ds_refuse(err, DS_ERR_ARG, "n", ...)`. */
-ds_status ds_refuse(ds_params_error *err, ds_status status, const char *field, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 4, 5)))
-#endif
-    ;
+/* The error model (core/error.c). ds_error_clear empties err (NULL does
+ * nothing): every public call that takes one starts with it. */
+void ds_error_clear(ds_error *err);
+/* Fills err (if not NULL) with the status, the field at fault, the value
+ * and the limit it broke (NAN where they are not numbers) and a
+ * printf-style sentence; returns status, so a check reads
+ * `return ds_refuse(err, DS_ERR_ARG, "n", (double)n, 1.0, "n = %zu ...", n)`. */
+ds_status ds_refuse(ds_error *err, ds_status status, const char *field, double value, double limit,
+                    const char *fmt, ...) DS_PRINTF(6, 7);
+/* A checkpoint refused: ds_refuse with field "checkpoint" and no numbers. */
+ds_status ds_state_refuse(ds_error *err, ds_status status, const char *fmt, ...) DS_PRINTF(3, 4);
+/* The disk (or line) at fault, beside a refusal. */
+void ds_error_index(ds_error *err, size_t index);
+/* The status a public call returns, into err: on DS_OK the refusal parts
+ * are emptied (a warning stays), and a failure no refusal explained gets
+ * ds_status_name's words. Returns status. */
+ds_status ds_error_done(ds_error *err, ds_status status);
+
+/* An enumeration's value by name (core/names.c): *out = the v < count
+ * whose name_of(v) is name, or DS_ERR_ARG naming field and the names
+ * known. Clears err first. */
+ds_status ds_parse_name(const char *field, const char *name, int count,
+                        const char *(*name_of)(int value), int *out, ds_error *err);
 
 #endif

@@ -1,129 +1,164 @@
 /* SPDX-License-Identifier: MIT */
-/* The disks' arrays (see disk_arrays.h). */
-#include <math.h>
+/* The disks' columns (see disk_arrays.h): each operation over every row
+ * of DS_DISK_COLUMNS. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/disk_arrays.h"
 
-/* The moving arrays of n + 1 slots, the sentinel at n. */
-static ds_status alloc_moving(ds_disks *d, size_t n, int radii, int masses, int images)
+/* Column `name` of n + 1 elements: the new value, the sentinel at n. */
+#define ALLOC_COLUMN(d, name, fresh, sentinel)                                                    \
+    do {                                                                                          \
+        if (!((d)->name = malloc(((d)->n + 1) * sizeof *(d)->name)))                              \
+            return DS_ERR_NOMEM;                                                                  \
+        for (size_t k = 0; k < (d)->n; ++k)                                                       \
+            (d)->name[k] = fresh;                                                                 \
+        (d)->name[(d)->n] = sentinel;                                                             \
+    } while (0)
+
+/* The columns every simulation has, and those of `like` if given. */
+static ds_status alloc_columns(ds_disks *d, size_t n, const ds_disks *like)
 {
-    const size_t cap = n + 1;
+    memset(d, 0, sizeof *d);
     d->n = n;
-    d->x = malloc(cap * sizeof *d->x);
-    d->y = malloc(cap * sizeof *d->y);
-    d->vx = malloc(cap * sizeof *d->vx);
-    d->vy = malloc(cap * sizeof *d->vy);
-    d->id = malloc(cap * sizeof *d->id);
-    if (!d->x || !d->y || !d->vx || !d->vy || !d->id ||
-        ds_disks_add_mixture(d, radii, masses) != DS_OK ||
-        (images && ds_disks_add_images(d) != DS_OK)) {
-        ds_disks_free(d);
-        return DS_ERR_NOMEM;
-    }
-    /* Slot n is the sweep sentinel: never inside any x window. */
-    d->x[n] = INFINITY;
-    d->y[n] = INFINITY;
-    d->vx[n] = d->vy[n] = 0.0;
-    d->id[n] = UINT32_MAX;
-    return DS_OK;
-}
-
-ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses)
-{
-    const size_t cap = d->n + 1;
-    if (radii && !d->r && !(d->r = calloc(cap, sizeof *d->r)))
-        return DS_ERR_NOMEM;
-    if (masses && !d->m) {
-        if (!(d->m = malloc(cap * sizeof *d->m)))
-            return DS_ERR_NOMEM;
-        for (size_t k = 0; k < cap; ++k)
-            d->m[k] = 1.0;
-    }
-    return DS_OK;
-}
-
-ds_status ds_disks_add_images(ds_disks *d)
-{
-    const size_t cap = d->n + 1;
-    if (!d->ix && !(d->ix = calloc(cap, sizeof *d->ix)))
-        return DS_ERR_NOMEM;
-    if (!d->iy && !(d->iy = calloc(cap, sizeof *d->iy)))
-        return DS_ERR_NOMEM;
+#define ALLOC_IF(name, type, every, fresh, sentinel, codec)                                       \
+    if ((every) || (like && like->name))                                                          \
+        ALLOC_COLUMN(d, name, (type)(fresh), (type)(sentinel));
+    DS_DISK_COLUMNS(ALLOC_IF)
+#undef ALLOC_IF
     return DS_OK;
 }
 
 ds_status ds_disks_alloc(ds_disks *d, size_t n)
 {
-    memset(d, 0, sizeof *d);
-    if (alloc_moving(d, n, 0, 0, 0) != DS_OK)
-        return DS_ERR_NOMEM;
-    d->slot = malloc((n + 1) * sizeof *d->slot);
-    if (!d->slot) {
+    ds_status st = alloc_columns(d, n, NULL);
+    if (st == DS_OK && !(d->slot = malloc((n + 1) * sizeof *d->slot)))
+        st = DS_ERR_NOMEM;
+    if (st != DS_OK) {
         ds_disks_free(d);
-        return DS_ERR_NOMEM;
+        return st;
     }
-    for (size_t k = 0; k < n; ++k) {
-        d->x[k] = d->y[k] = d->vx[k] = d->vy[k] = 0.0;
+    for (size_t k = 0; k < n; ++k)
         d->id[k] = d->slot[k] = (uint32_t)k;
-    }
     d->slot[n] = UINT32_MAX;
     return DS_OK;
 }
 
-ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like)
+ds_status ds_disks_alloc_like(ds_disks *d, const ds_disks *like)
 {
-    memset(d, 0, sizeof *d);
-    return alloc_moving(d, like->n, like->r != NULL, like->m != NULL, like->ix != NULL);
+    const ds_status st = alloc_columns(d, like->n, like);
+    if (st != DS_OK)
+        ds_disks_free(d);
+    return st;
+}
+
+ds_status ds_disks_clone(ds_disks *d, const ds_disks *src)
+{
+    ds_status st = alloc_columns(d, src->n, src);
+    if (st == DS_OK && !(d->slot = malloc((src->n + 1) * sizeof *d->slot)))
+        st = DS_ERR_NOMEM;
+    if (st != DS_OK) {
+        ds_disks_free(d);
+        return st;
+    }
+#define CLONE(name, type, every, fresh, sentinel, codec)                                          \
+    if (src->name)                                                                                \
+        memcpy(d->name, src->name, (src->n + 1) * sizeof *d->name);
+    DS_DISK_COLUMNS(CLONE)
+#undef CLONE
+    memcpy(d->slot, src->slot, (src->n + 1) * sizeof *d->slot);
+    return DS_OK;
+}
+
+ds_status ds_disks_clone_ordered(ds_disks *d, const ds_disks *src)
+{
+    ds_status st = alloc_columns(d, src->n, src);
+    if (st == DS_OK && !(d->slot = malloc((src->n + 1) * sizeof *d->slot)))
+        st = DS_ERR_NOMEM;
+    if (st != DS_OK) {
+        ds_disks_free(d);
+        return st;
+    }
+    for (size_t i = 0; i < src->n; ++i)
+        ds_disks_copy(d, i, src, src->slot[i]);
+    for (size_t i = 0; i <= src->n; ++i)
+        d->slot[i] = i < src->n ? (uint32_t)i : UINT32_MAX;
+    return DS_OK;
+}
+
+ds_status ds_disks_add(ds_disks *d, ds_column c)
+{
+    switch (c) {
+#define ADD_CASE(name, type, every, fresh, sentinel, codec)                                       \
+    case DS_COLUMN_##name:                                                                        \
+        if (!d->name)                                                                             \
+            ALLOC_COLUMN(d, name, (type)(fresh), (type)(sentinel));                               \
+        return DS_OK;
+        DS_DISK_COLUMNS(ADD_CASE)
+#undef ADD_CASE
+    case DS_COLUMN_COUNT:
+        break;
+    }
+    return DS_ERR_ARG;
+}
+
+ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses)
+{
+    if (radii && ds_disks_add(d, DS_COLUMN_r) != DS_OK)
+        return DS_ERR_NOMEM;
+    return masses ? ds_disks_add(d, DS_COLUMN_m) : DS_OK;
+}
+
+ds_status ds_disks_add_images(ds_disks *d)
+{
+    if (ds_disks_add(d, DS_COLUMN_ix) != DS_OK)
+        return DS_ERR_NOMEM;
+    return ds_disks_add(d, DS_COLUMN_iy);
+}
+
+uint32_t ds_disks_columns(const ds_disks *d)
+{
+    uint32_t bits = 0;
+#define HAS_BIT(name, type, every, fresh, sentinel, codec)                                        \
+    if (d->name)                                                                                  \
+        bits |= 1u << DS_COLUMN_##name;
+    DS_DISK_COLUMNS(HAS_BIT)
+#undef HAS_BIT
+    return bits;
+}
+
+int ds_disks_has(const ds_disks *d, ds_column c)
+{
+    return c < DS_COLUMN_COUNT && (ds_disks_columns(d) >> c & 1u);
 }
 
 void ds_disks_free(ds_disks *d)
 {
-    free(d->x);
-    free(d->y);
-    free(d->vx);
-    free(d->vy);
-    free(d->r);
-    free(d->m);
-    free(d->ix);
-    free(d->iy);
-    free(d->id);
+#define FREE(name, type, every, fresh, sentinel, codec)                                           \
+    free(d->name);                                                                                \
+    d->name = NULL;
+    DS_DISK_COLUMNS(FREE)
+#undef FREE
     free(d->slot);
-    d->x = d->y = d->vx = d->vy = d->r = d->m = NULL;
-    d->ix = d->iy = NULL;
-    d->id = d->slot = NULL;
-}
-
-static void swap_doubles(double **a, double **b)
-{
-    double *t = *a;
-    *a = *b;
-    *b = t;
+    d->slot = NULL;
 }
 
 void ds_disks_swap(ds_disks *a, ds_disks *b)
 {
-    swap_doubles(&a->x, &b->x);
-    swap_doubles(&a->y, &b->y);
-    swap_doubles(&a->vx, &b->vx);
-    swap_doubles(&a->vy, &b->vy);
-    swap_doubles(&a->r, &b->r);
-    swap_doubles(&a->m, &b->m);
-    int32_t *ix = a->ix, *iy = a->iy;
-    a->ix = b->ix;
-    a->iy = b->iy;
-    b->ix = ix;
-    b->iy = iy;
-    uint32_t *t = a->id;
-    a->id = b->id;
-    b->id = t;
+#define SWAP(name, type, every, fresh, sentinel, codec)                                           \
+    {                                                                                             \
+        type *t = a->name;                                                                        \
+        a->name = b->name;                                                                        \
+        b->name = t;                                                                              \
+    }
+    DS_DISK_COLUMNS(SWAP)
+#undef SWAP
 }
 
 ds_status ds_disks_permute(ds_disks *d, const uint32_t *order)
 {
     ds_disks old;
-    if (ds_disks_alloc_spare(&old, d) != DS_OK)
+    if (ds_disks_alloc_like(&old, d) != DS_OK)
         return DS_ERR_NOMEM;
     ds_disks_swap(d, &old);
     for (size_t k = 0; k < d->n; ++k)
@@ -137,6 +172,29 @@ void ds_disks_rebuild_slots(ds_disks *d)
 {
     for (size_t k = 0; k < d->n; ++k)
         d->slot[d->id[k]] = (uint32_t)k;
+}
+
+void ds_disks_save(const ds_disks *d, ds_state_writer *w)
+{
+    for (size_t k = 0; k < d->n; ++k) {
+#define SAVE(name, type, every, fresh, sentinel, codec)                                           \
+    if ((every) || d->name)                                                                       \
+        ds_put_##codec(w, d->name[k]);
+        DS_DISK_COLUMNS(SAVE)
+#undef SAVE
+    }
+}
+
+int ds_disks_load_all(ds_disks *d, ds_reader *r)
+{
+    for (size_t k = 0; k < d->n && !r->failed; ++k) {
+#define LOAD(name, type, every, fresh, sentinel, codec)                                           \
+    if ((every) || d->name)                                                                       \
+        d->name[k] = ds_get_##codec(r);
+        DS_DISK_COLUMNS(LOAD)
+#undef LOAD
+    }
+    return !r->failed;
 }
 
 void ds_disks_kinetic_tensor(const ds_disks *d, double k[3])

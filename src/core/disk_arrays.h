@@ -1,75 +1,111 @@
 /* SPDX-License-Identifier: MIT */
-/* The disks' state, structure of arrays: the one owner of the per-disk
- * data and of every operation that moves or permutes it.
+/* The disks' state, structure of arrays, from one table of columns: the
+ * one owner of the per-disk data and of every operation that moves or
+ * permutes it.
  *
- * Slot k of every array is one disk. The broad phases keep the slots in
- * the order their sweeps read (x order for DS_SAP, strip then x for
- * DS_SAP_STRIPS, cell order for the event-driven integrator), so a disk's
- * slot changes and id[k] says which disk (its generation index) slot k
- * holds; slot[i] is the inverse, rebuilt after the slots move. Every
- * array has one element past n: DS_SAP keeps x[n] = +infinity there as a
- * sweep sentinel.
+ * Slot k of every column is one disk. The integrators keep the slots in
+ * the order their loops read (x order for the sweep, strip then x for the
+ * strips, cell order for the event-driven integrator), so a disk's slot
+ * changes and id[k] says which disk (its generation index) slot k holds;
+ * slot[i] is the inverse, rebuilt after the slots move. Every column has
+ * one element past n, the sentinel: x[n] = +infinity ends every sweep
+ * window.
  *
- * Adding a per-disk array (a radius, a mass, image counters) is one edit
- * here: the field in ds_disks and ds_disk_record, its line in load, store
- * and copy, and its allocation in disk_arrays.c. Every sort, merge and
- * permutation moves disks through these functions, so they all carry it.
- * An integrator that keeps its own records (the event-driven ed_disk)
- * copies from the arrays when it is created and back when it shows the
- * disks (event/event_driven.c says where). Not installed. */
+ * DS_DISK_COLUMNS is the table: a row per column with its name, C type,
+ * whether every simulation has it (1) or only some (0: the pointer is
+ * NULL where it is absent, and a hot loop that has asked once takes the
+ * plain path), the value a new element starts with, the sentinel's, and
+ * how a checkpoint writes it. The struct, the record that moves a disk
+ * between slots, allocation, copy, swap, permutation and the checkpoint's
+ * disk loop are generated from it: adding a per-disk array is one row
+ * here plus whoever fills and reads it. An integrator that keeps records
+ * of its own (the event-driven ed_disk) copies from the columns when it is
+ * created and back when it shows the disks, and says which. Not
+ * installed. */
 #ifndef DS_DISK_ARRAYS_H
 #define DS_DISK_ARRAYS_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/state_io.h"
 #include "disk_sim.h"
+
+/*  name  type      every  new         sentinel    codec */
+#define DS_DISK_COLUMNS(X)                                                                        \
+    X(x, double, 1, 0.0, INFINITY, f64)     /* centre (sentinel: past every sweep window) */     \
+    X(y, double, 1, 0.0, INFINITY, f64)                                                          \
+    X(vx, double, 1, 0.0, 0.0, f64)         /* velocity */                                       \
+    X(vy, double, 1, 0.0, 0.0, f64)                                                              \
+    X(id, uint32_t, 1, 0u, UINT32_MAX, u32) /* generation index of the disk in the slot */       \
+    X(r, double, 0, 0.0, 0.0, f64)          /* a mixture's radius (else the world's) */          \
+    X(m, double, 0, 1.0, 1.0, f64)          /* a mixture's mass (else 1) */                      \
+    X(ix, int32_t, 0, 0, 0, i32)            /* periodic images crossed along x */                \
+    X(iy, int32_t, 0, 0, 0, i32)            /* ... and along y (both or neither) */              \
+    X(kind, uint32_t, 0, 0u, 0u, u32)       /* a mixture's species index */
+
+typedef enum ds_column {
+#define DS_COLUMN_ENUM(name, type, every, fresh, sentinel, codec) DS_COLUMN_##name,
+    DS_DISK_COLUMNS(DS_COLUMN_ENUM)
+#undef DS_COLUMN_ENUM
+        DS_COLUMN_COUNT
+} ds_column;
 
 typedef struct ds_disks {
     size_t n;
-    double *x, *y, *vx, *vy;
-    /* A mixture's radii and masses (ds_disks_add_mixture); NULL when every
-     * disk has the world's radius (r) or mass 1 (m): then the hot loops
-     * take the one radius, and the arrays cost nothing. */
-    double *r, *m;
-    /* A periodic box's image counters: how many times each disk has
-     * crossed the box along x and along y (+1 out at the far edge, -1 out
-     * at 0), so that its unwrapped centre is x + ix box (ds_disks_add_images);
-     * NULL with walls. They wrap past 2^31 crossings. */
-    int32_t *ix, *iy;
-    uint32_t *id;   /* the generation index of the disk in each slot */
-    uint32_t *slot; /* the slot of disk i: the inverse of id */
+#define DS_COLUMN_MEMBER(name, type, every, fresh, sentinel, codec) type *name;
+    DS_DISK_COLUMNS(DS_COLUMN_MEMBER)
+#undef DS_COLUMN_MEMBER
+    uint32_t *slot; /* the slot of disk i: the inverse of id, never saved */
 } ds_disks;
 
 /* One disk with everything that moves with it between slots. */
 typedef struct ds_disk_record {
-    double x, y, vx, vy, r, m;
-    int32_t ix, iy;
-    uint32_t id;
+#define DS_COLUMN_FIELD(name, type, every, fresh, sentinel, codec) type name;
+    DS_DISK_COLUMNS(DS_COLUMN_FIELD)
+#undef DS_COLUMN_FIELD
 } ds_disk_record;
 
-/* Memory per disk: the arrays that move (a spare set, see
- * ds_disks_alloc_spare) and the slot index; a mixture's radius and mass. */
-#define DS_DISKS_MOVING_BYTES (4 * sizeof(double) + sizeof(uint32_t))
+/* Bytes per disk of the columns every simulation has, of all of them, of
+ * the slot index, of a mixture's columns and of the image counts (memory
+ * estimates). */
+#define DS_COLUMN_SIZE(name, type, every, fresh, sentinel, codec) +sizeof(type)
+#define DS_COLUMN_EVERY_SIZE(name, type, every, fresh, sentinel, codec) +(every) * sizeof(type)
+#define DS_DISKS_MOVING_BYTES (0 DS_DISK_COLUMNS(DS_COLUMN_EVERY_SIZE))
+#define DS_DISKS_ALL_BYTES (0 DS_DISK_COLUMNS(DS_COLUMN_SIZE) + sizeof(uint32_t))
 #define DS_DISKS_BYTES_PER_DISK (DS_DISKS_MOVING_BYTES + sizeof(uint32_t))
-#define DS_DISKS_MIXTURE_BYTES (2 * sizeof(double))
+#define DS_DISKS_MIXTURE_BYTES (sizeof(double) + sizeof(double) + sizeof(uint32_t))
 #define DS_DISKS_IMAGE_BYTES (2 * sizeof(int32_t))
 
-/* Arrays for n disks (+ 1: the sentinel slot n, x = y = +infinity), the
- * slots in generation order (id[k] = k, slot[i] = i), positions and
- * velocities zero. DS_ERR_NOMEM leaves nothing allocated. */
+/* Columns for n disks (+ 1: the sentinel slot n), the ones every
+ * simulation has: the slots in generation order (id[k] = k, slot[i] = i),
+ * positions and velocities zero. DS_ERR_NOMEM leaves nothing allocated. */
 ds_status ds_disks_alloc(ds_disks *d, size_t n);
-/* The radius and mass arrays of a mixture (radii, masses: either NULL
- * for none), sentinel slot included. */
+/* Adds optional column c (a no-op where it is there), every element at
+ * the table's new value: DS_ERR_NOMEM changes nothing. */
+ds_status ds_disks_add(ds_disks *d, ds_column c);
+/* The optional columns of a mixture (radii, masses: either 0 for none)
+ * and of a periodic box (both image counts): ds_disks_add of each. */
 ds_status ds_disks_add_mixture(ds_disks *d, int radii, int masses);
-/* The image counters of a periodic box, zero, sentinel slot included. */
 ds_status ds_disks_add_images(ds_disks *d);
-/* A second set of the moving arrays of `like` (no slot[]), for a broad
- * phase that rebuilds the order into it and swaps (DS_SAP_STRIPS). */
-ds_status ds_disks_alloc_spare(ds_disks *d, const ds_disks *like);
+/* Whether column c is there. */
+int ds_disks_has(const ds_disks *d, ds_column c);
+/* A bit per column that is there (bit c for column c). */
+uint32_t ds_disks_columns(const ds_disks *d);
+/* A second set of the columns `like` has (no slot[]), for a broad phase
+ * that rebuilds the order into it and swaps (the strips), or a state
+ * built beside the old one (ds_rebuild). */
+ds_status ds_disks_alloc_like(ds_disks *d, const ds_disks *like);
+/* A whole copy of src (every column and slot[]): the disks of a state to
+ * build beside src's. */
+ds_status ds_disks_clone(ds_disks *d, const ds_disks *src);
+/* The same with the slots in generation order (slot k holds disk k): the
+ * columns of a new state, which its integrator sorts as it needs. */
+ds_status ds_disks_clone_ordered(ds_disks *d, const ds_disks *src);
 void ds_disks_free(ds_disks *d); /* NULL pointers are allowed */
 
-/* Exchanges the moving arrays of a and b (not slot[]). */
+/* Exchanges the columns of a and b (not slot[]). */
 void ds_disks_swap(ds_disks *a, ds_disks *b);
 
 /* Moves the disks so that new slot k holds what slot order[k] held
@@ -79,74 +115,64 @@ ds_status ds_disks_permute(ds_disks *d, const uint32_t *order);
 /* slot[] from id[], after the slots moved. */
 void ds_disks_rebuild_slots(ds_disks *d);
 
+/* A checkpoint's disks: slot by slot, each column that is there in the
+ * table's order, by its codec (ds_disks_columns says which, and load reads
+ * into the columns d has). Load returns 0 if the bytes ran out. */
+void ds_disks_save(const ds_disks *d, ds_state_writer *w);
+int ds_disks_load_all(ds_disks *d, ds_reader *r);
+
 /* The kinetic tensor sum m v_a v_b over the disks: k[0] xx, k[1] yy,
- * k[2] xy (m = 1 without a mixture's masses). */
+ * k[2] xy (m = 1 without masses). */
 void ds_disks_kinetic_tensor(const ds_disks *d, double k[3]);
 
-/* A mixture's arrays move with the disk; whether they exist does not
- * change during a run, so the branches on it are always predicted. */
+/* An optional column's presence does not change during a run, so the
+ * branches on it are always predicted. */
 static inline ds_disk_record ds_disks_load(const ds_disks *d, size_t k)
 {
     ds_disk_record r;
-    r.x = d->x[k];
-    r.y = d->y[k];
-    r.vx = d->vx[k];
-    r.vy = d->vy[k];
-    r.r = d->r ? d->r[k] : 0.0;
-    r.m = d->m ? d->m[k] : 1.0;
-    r.ix = d->ix ? d->ix[k] : 0;
-    r.iy = d->iy ? d->iy[k] : 0;
-    r.id = d->id[k];
+#define DS_COLUMN_LOAD(name, type, every, fresh, sentinel, codec)                                 \
+    r.name = (every) || d->name ? d->name[k] : (type)(fresh);
+    DS_DISK_COLUMNS(DS_COLUMN_LOAD)
+#undef DS_COLUMN_LOAD
     return r;
 }
 
 static inline void ds_disks_store(ds_disks *d, size_t k, ds_disk_record r)
 {
-    d->x[k] = r.x;
-    d->y[k] = r.y;
-    d->vx[k] = r.vx;
-    d->vy[k] = r.vy;
-    if (d->r)
-        d->r[k] = r.r;
-    if (d->m)
-        d->m[k] = r.m;
-    if (d->ix) {
-        d->ix[k] = r.ix;
-        d->iy[k] = r.iy;
-    }
-    d->id[k] = r.id;
+#define DS_COLUMN_STORE(name, type, every, fresh, sentinel, codec)                                \
+    if ((every) || d->name)                                                                       \
+        d->name[k] = r.name;
+    DS_DISK_COLUMNS(DS_COLUMN_STORE)
+#undef DS_COLUMN_STORE
 }
 
 /* Slot `from` of src into slot `to` of dst (the same set or another, with
- * the same arrays). */
+ * the same columns). */
 static inline void ds_disks_copy(ds_disks *dst, size_t to, const ds_disks *src, size_t from)
 {
-    dst->x[to] = src->x[from];
-    dst->y[to] = src->y[from];
-    dst->vx[to] = src->vx[from];
-    dst->vy[to] = src->vy[from];
-    if (src->r)
-        dst->r[to] = src->r[from];
-    if (src->m)
-        dst->m[to] = src->m[from];
-    if (src->ix) {
-        dst->ix[to] = src->ix[from];
-        dst->iy[to] = src->iy[from];
-    }
-    dst->id[to] = src->id[from];
+#define DS_COLUMN_COPY(name, type, every, fresh, sentinel, codec)                                 \
+    if ((every) || src->name)                                                                     \
+        dst->name[to] = src->name[from];
+    DS_DISK_COLUMNS(DS_COLUMN_COPY)
+#undef DS_COLUMN_COPY
 }
 
-/* ds_disks_copy for arrays known to hold no mixture's and no image
- * counters (r, m and ix NULL):
- * for a loop that has asked once. */
+/* ds_disks_copy for columns known to hold none of the optional ones: for
+ * a loop that has asked once (ds_disks_columns). */
 static inline void ds_disks_copy_motion(ds_disks *dst, size_t to, const ds_disks *src,
                                         size_t from)
 {
-    dst->x[to] = src->x[from];
-    dst->y[to] = src->y[from];
-    dst->vx[to] = src->vx[from];
-    dst->vy[to] = src->vy[from];
-    dst->id[to] = src->id[from];
+#define DS_COLUMN_COPY_EVERY(name, type, every, fresh, sentinel, codec)                           \
+    if (every)                                                                                    \
+        dst->name[to] = src->name[from];
+    DS_DISK_COLUMNS(DS_COLUMN_COPY_EVERY)
+#undef DS_COLUMN_COPY_EVERY
 }
+
+/* The columns every simulation has, as a bit set: the columns of a plain
+ * simulation (ds_disks_columns equal to it: no optional column). */
+#define DS_COLUMN_EVERY_BIT(name, type, every, fresh, sentinel, codec)                            \
+    | ((every) ? 1u << DS_COLUMN_##name : 0u)
+#define DS_DISKS_EVERY_COLUMN (0u DS_DISK_COLUMNS(DS_COLUMN_EVERY_BIT))
 
 #endif

@@ -16,8 +16,9 @@ size_t ds_grid_cells_along(double len, double min_side, size_t cap)
     return fit >= (double)cap ? cap : (size_t)fit;
 }
 
-void ds_grid_init(ds_grid *g, double box_x, double box_y, double min_side, size_t cap, int periodic)
+void ds_grid_init(ds_grid *g, const ds_box *box, double min_side, size_t cap)
 {
+    const double box_x = box->side[0], box_y = box->side[1];
     g->nx = ds_grid_cells_along(box_x, min_side, cap);
     g->ny = ds_grid_cells_along(box_y, min_side, cap);
     while ((double)g->nx * (double)g->ny > (double)cap) {
@@ -28,16 +29,18 @@ void ds_grid_init(ds_grid *g, double box_x, double box_y, double min_side, size_
     }
     g->inv_wx = (double)g->nx / box_x;
     g->inv_wy = (double)g->ny / box_y;
-    g->periodic = periodic;
+    g->wrap[0] = ds_box_periodic(box, 0);
+    g->wrap[1] = ds_box_periodic(box, 1);
 }
 
-void ds_grid_init_line(ds_grid *g, double len, double min_side, size_t cap, int periodic)
+void ds_grid_init_line(ds_grid *g, double len, double min_side, size_t cap, int wrap)
 {
     g->nx = ds_grid_cells_along(len, min_side, cap);
     g->ny = 1;
     g->inv_wx = (double)g->nx / len;
     g->inv_wy = 0.0;
-    g->periodic = periodic;
+    g->wrap[0] = wrap;
+    g->wrap[1] = 0;
 }
 
 void ds_grid_bins_free(ds_grid_bins *b)

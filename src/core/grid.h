@@ -15,28 +15,29 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/box.h"
 #include "disk_sim.h"
 
 typedef struct ds_grid {
     size_t nx, ny;         /* cells per row, rows */
     double inv_wx, inv_wy; /* cells per unit length */
-    int periodic;
+    int wrap[2];           /* whether the cells wrap along x, along y (the box's periodic axes) */
 } ds_grid;
 
 /* Cells along a side of length len, each wider than min_side by a
  * relative 1e-9 at least: from 1 to cap. */
 size_t ds_grid_cells_along(double len, double min_side, size_t cap);
 
-/* The grid of the box_x by box_y box with cells at least min_side wide,
- * at most cap cells in all (a dilute system would want far more, mostly
- * empty: past cap the larger count is halved, which keeps every cell at
- * least min_side wide). */
-void ds_grid_init(ds_grid *g, double box_x, double box_y, double min_side, size_t cap,
-                  int periodic);
+/* The grid of the box with cells at least min_side wide, wrapping along
+ * its periodic axes, at most cap cells in all (a dilute system would want
+ * far more, mostly empty: past cap the larger count is halved, which keeps
+ * every cell at least min_side wide). */
+void ds_grid_init(ds_grid *g, const ds_box *box, double min_side, size_t cap);
 
 /* A grid of one row along a side of length len (a seam), cells at least
- * min_side long, at most cap; every y is in row 0. */
-void ds_grid_init_line(ds_grid *g, double len, double min_side, size_t cap, int periodic);
+ * min_side long, at most cap, wrapping if wrap; every coordinate of the
+ * other axis is in row 0. */
+void ds_grid_init_line(ds_grid *g, double len, double min_side, size_t cap, int wrap);
 
 /* The column (row) of coordinate x (y), clamped into the grid. In a
  * periodic grid the coordinates must be in the box already (ds_wrap_any
@@ -65,9 +66,9 @@ static inline size_t ds_grid_row(const ds_grid *g, double y)
 }
 
 /* The neighbour indices along one side, each once: -1 past a wall. */
-static inline int ds_grid_along(size_t c, size_t cells, int periodic, long out[3])
+static inline int ds_grid_along(size_t c, size_t cells, int wrap, long out[3])
 {
-    if (periodic && cells < 3) {
+    if (wrap && cells < 3) {
         for (size_t k = 0; k < cells; ++k)
             out[k] = (long)k;
         return (int)cells;
@@ -75,7 +76,7 @@ static inline int ds_grid_along(size_t c, size_t cells, int periodic, long out[3
     for (int k = 0; k < 3; ++k) {
         long s = (long)c + k - 1;
         if (s < 0 || s >= (long)cells)
-            s = !periodic ? -1 : s < 0 ? s + (long)cells : s - (long)cells;
+            s = !wrap ? -1 : s < 0 ? s + (long)cells : s - (long)cells;
         out[k] = s;
     }
     return 3;
@@ -104,8 +105,8 @@ static inline int ds_grid_neighbours(const ds_grid *g, size_t column, size_t row
         return 9;
     }
     long cx[3], cy[3];
-    const int kx = ds_grid_along(column, g->nx, g->periodic, cx),
-              ky = ds_grid_along(row, g->ny, g->periodic, cy);
+    const int kx = ds_grid_along(column, g->nx, g->wrap[0], cx),
+              ky = ds_grid_along(row, g->ny, g->wrap[1], cy);
     int count = 0;
     for (int b = 0; b < ky; ++b)
         for (int a = 0; a < kx; ++a)

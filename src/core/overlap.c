@@ -1,41 +1,39 @@
 /* SPDX-License-Identifier: MIT */
-/* Overlapping disks, found through the cell grid (see overlap.h). */
+/* Overlapping disks, found through the neighbour pairs (see overlap.h). */
 #include "core/overlap.h"
-#include "core/boundary.h"
-#include "core/grid.h"
+#include "core/pairs.h"
+
+typedef struct first_overlap {
+    const double *r; /* radii, or NULL for one radius */
+    double radius, keep;
+    size_t a, b;
+} first_overlap;
+
+static int is_overlap(void *ctx, size_t j, size_t k, double dx, double dy, double r2)
+{
+    first_overlap *f = ctx;
+    (void)dx;
+    (void)dy;
+    const double limit = (f->r ? f->r[j] + f->r[k] : 2.0 * f->radius) * f->keep;
+    if (!(r2 < limit * limit))
+        return 0;
+    f->a = j;
+    f->b = k;
+    return 1;
+}
 
 ds_status ds_find_overlap(const ds_world *w, const double *x, const double *y, const double *r,
                           size_t *a, size_t *b)
 {
-    const size_t n = w->n;
-    const int periodic = w->boundary == DS_PERIODIC;
-    const double keep = 1.0 - DS_CONTACT_TOLERANCE;
-    ds_grid g;
-    ds_grid_init(&g, w->box, w->box_y, 2.0 * w->radius_max, 4 * n + 16, periodic);
-    ds_grid_bins bins;
-    if (ds_grid_bin(&g, n, x, y, &bins) != DS_OK)
+    first_overlap f = {r, w->radius, 1.0 - DS_CONTACT_TOLERANCE, 0, 0};
+    ds_pairs p;
+    if (ds_pairs_begin(&p, &w->box, w->n, x, y, 2.0 * w->radius_max, 4 * w->n + 16, 1) != DS_OK)
         return DS_ERR_NOMEM;
-    ds_status st = DS_OK;
-    for (size_t j = 0; j < n && st == DS_OK; ++j) {
-        size_t around[9];
-        const int count = ds_grid_neighbours(&g, bins.cell[j] % g.nx, bins.cell[j] / g.nx, around);
-        for (int c = 0; c < count && st == DS_OK; ++c)
-            for (size_t s = bins.start[around[c]]; s < bins.start[around[c] + 1]; ++s) {
-                const size_t k = bins.order[s];
-                double dx = x[k] - x[j], dy = y[k] - y[j];
-                if (periodic) {
-                    dx = ds_nearest(dx, w->box);
-                    dy = ds_nearest(dy, w->box_y);
-                }
-                const double limit = (r ? r[j] + r[k] : 2.0 * w->radius) * keep;
-                if (k > j && dx * dx + dy * dy < limit * limit) {
-                    *a = j;
-                    *b = k;
-                    st = DS_ERR_OVERLAP;
-                    break;
-                }
-            }
-    }
-    ds_grid_bins_free(&bins);
-    return st;
+    const int found = ds_pairs_each(&p, 0, is_overlap, &f);
+    ds_pairs_end(&p);
+    if (!found)
+        return DS_OK;
+    *a = f.a;
+    *b = f.b;
+    return DS_ERR_OVERLAP;
 }

@@ -13,12 +13,14 @@
 #include <stdint.h>
 #include <string.h>
 
-typedef struct ds_writer {
+#include "disk_sim.h"
+
+typedef struct ds_state_writer {
     uint8_t *buf; /* NULL: only count */
     size_t len;   /* bytes written (or counted) so far */
-} ds_writer;
+} ds_state_writer;
 
-static inline void ds_put_u64(ds_writer *w, uint64_t v)
+static inline void ds_put_u64(ds_state_writer *w, uint64_t v)
 {
     if (w->buf)
         for (int k = 0; k < 8; ++k)
@@ -26,7 +28,7 @@ static inline void ds_put_u64(ds_writer *w, uint64_t v)
     w->len += 8;
 }
 
-static inline void ds_put_u32(ds_writer *w, uint32_t v)
+static inline void ds_put_u32(ds_state_writer *w, uint32_t v)
 {
     if (w->buf)
         for (int k = 0; k < 4; ++k)
@@ -34,7 +36,9 @@ static inline void ds_put_u32(ds_writer *w, uint32_t v)
     w->len += 4;
 }
 
-static inline void ds_put_f64(ds_writer *w, double v)
+static inline void ds_put_i32(ds_state_writer *w, int32_t v) { ds_put_u32(w, (uint32_t)v); }
+
+static inline void ds_put_f64(ds_state_writer *w, double v)
 {
     uint64_t bits;
     memcpy(&bits, &v, sizeof bits);
@@ -75,12 +79,46 @@ static inline uint32_t ds_get_u32(ds_reader *r)
     return v;
 }
 
+/* Any 32 bits are a count (image counts wrap past 2^31). */
+static inline int32_t ds_get_i32(ds_reader *r) { return (int32_t)ds_get_u32(r); }
+
 static inline double ds_get_f64(ds_reader *r)
 {
     const uint64_t bits = ds_get_u64(r);
     double v;
     memcpy(&v, &bits, sizeof v);
     return v;
+}
+
+/* A broad phase as saved states number it: 2.x's numbers (0 SAP, 1
+ * brute force, 2 strips, 3 auto, 4 cells), which the format keeps
+ * whatever the order of the public enumeration. */
+static inline uint32_t ds_broadphase_code(ds_broadphase bp)
+{
+    switch (bp) {
+    case DS_BROADPHASE_SAP:
+        return 0;
+    case DS_BROADPHASE_BRUTE:
+        return 1;
+    case DS_BROADPHASE_STRIPS:
+        return 2;
+    case DS_BROADPHASE_AUTO:
+        return 3;
+    case DS_BROADPHASE_CELLS:
+        return 4;
+    case DS_BROADPHASE_COUNT:
+        break;
+    }
+    return UINT32_MAX;
+}
+
+/* The broad phase saved as code, or DS_BROADPHASE_COUNT for none. */
+static inline ds_broadphase ds_broadphase_of_code(uint32_t code)
+{
+    for (int bp = 0; bp < DS_BROADPHASE_COUNT; ++bp)
+        if (ds_broadphase_code((ds_broadphase)bp) == code)
+            return (ds_broadphase)bp;
+    return DS_BROADPHASE_COUNT;
 }
 
 /* Bytes left to read. */

@@ -5,7 +5,7 @@
 
 #include "disk_sim.h"
 
-double ds_now(void)
+double ds_timer_now(void)
 {
     struct timespec ts;
     /* CLOCK_MONOTONIC cannot fail with a valid pointer on POSIX systems. */
@@ -22,14 +22,14 @@ void ds_timer_reset(ds_timer *timer)
 
 void ds_timer_start(ds_timer *timer)
 {
-    timer->started = ds_now();
+    timer->started = ds_timer_now();
     timer->running = 1;
 }
 
 void ds_timer_stop(ds_timer *timer)
 {
     if (timer->running) {
-        double elapsed = ds_now() - timer->started;
+        double elapsed = ds_timer_now() - timer->started;
         timer->total += elapsed > 0.0 ? elapsed : 0.0;
         timer->running = 0;
     }
@@ -39,6 +39,6 @@ double ds_timer_seconds(const ds_timer *timer)
 {
     if (!timer->running)
         return timer->total;
-    double elapsed = ds_now() - timer->started;
+    double elapsed = ds_timer_now() - timer->started;
     return timer->total + (elapsed > 0.0 ? elapsed : 0.0);
 }

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The event-driven integrator (DS_EVENT_DRIVEN): exact dynamics of hard
+/* The event-driven integrator (DS_INTEGRATOR_EVENT_DRIVEN): exact dynamics of hard
  * disks, every collision at its own time (event_driven.c and its parts:
  * event_predict.c, event_fetch.c, event_queue.c, cells.c). The rest of
  * the library sees only its table. Not installed. */

@@ -12,11 +12,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/overlap.h"
 #include "event/event_state.h"
 
-void ds_ed_save(const ds_sim *sim, ds_writer *w)
+void ds_ed_save(const ds_sim *sim, ds_state_writer *w)
 {
     const ds_events *e = sim->state;
     const size_t n = sim->world.n, cells = (size_t)e->cells.nx * e->cells.ny;
@@ -44,33 +44,49 @@ void ds_ed_save(const ds_sim *sim, ds_writer *w)
         ds_put_u32(w, e->cells.more[c]);
     for (size_t k = 0; k < n; ++k)
         ds_put_u32(w, e->cells.next[k]);
-    /* Growth: its clock, targets, energy and window, and the radii it
-     * grows from. */
-    const ds_growth *g = &e->growth;
+    /* Growing radii: their law and the radii they grow from (the growth
+     * protocol's part is its own, core/protocol.h). */
+    const ds_ed_law *g = &e->law;
     ds_put_u32(w, g->base ? 1u : 0u);
     if (!g->base)
         return;
     ds_put_f64(w, g->rate);
-    ds_put_f64(w, g->asked);
     ds_put_f64(w, g->scale);
     ds_put_f64(w, g->from);
-    ds_put_f64(w, g->stop_time);
-    ds_put_f64(w, g->until_eta);
-    ds_put_f64(w, g->until_z);
-    ds_put_f64(w, g->kinetic);
-    ds_put_f64(w, g->kinetic_target);
-    ds_put_f64(w, g->momentum_energy);
-    ds_put_u64(w, g->window);
-    ds_put_f64(w, g->window_start);
-    ds_put_f64(w, g->window_virial);
-    ds_put_u32(w, (uint32_t)g->stopped);
-    ds_put_f64(w, g->last_z);
+    ds_put_f64(w, g->eta);
     for (size_t k = 0; k < n; ++k)
         ds_put_f64(w, g->base[k]);
 }
 
+/* Format versions 1 and 2 kept the growth protocol's fields between the
+ * law's (as their ds_growth struct had them): the protocol's part goes to
+ * legacy, for the checkpoint's loader to hand over. */
+static void read_law_2x(ds_ed_law *g, ds_reader *r, ds_legacy *legacy)
+{
+    ds_growth_record *p = &legacy->growth;
+    legacy->has_growth = 1;
+    g->rate = ds_get_f64(r);
+    p->asked = ds_get_f64(r);
+    g->scale = ds_get_f64(r);
+    g->from = ds_get_f64(r);
+    p->stop_time = ds_get_f64(r);
+    p->until_eta = ds_get_f64(r);
+    p->until_z = ds_get_f64(r);
+    p->kinetic = ds_get_f64(r);
+    p->kinetic_target = ds_get_f64(r);
+    p->momentum_energy = ds_get_f64(r);
+    p->window = ds_get_u64(r);
+    p->window_start = ds_get_f64(r);
+    p->window_virial = ds_get_f64(r);
+    p->stopped = (int)ds_get_u32(r);
+    p->last_z = ds_get_f64(r);
+    p->growing = g->rate > 0.0;
+    if (p->stopped < 0 || p->stopped > 2)
+        r->failed = 1;
+}
+
 static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r,
-                             ds_state_error *err)
+                             uint32_t version, ds_legacy *legacy, ds_error *err)
 {
     const size_t n = sim->world.n;
     const uint32_t has = ds_get_u32(r);
@@ -78,45 +94,38 @@ static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r
         return ds_state_refuse(err, DS_ERR_FORMAT, "the growth's part is not one");
     if (!has)
         return DS_OK;
-    ds_growth *g = &e->growth;
-    if (!sim->disks.r || !e->periodic)
+    ds_ed_law *g = &e->law;
+    if (!sim->disks.r || !ds_box_periodic(&e->box, 0) || !ds_box_periodic(&e->box, 1))
         return ds_state_refuse(err, DS_ERR_FORMAT, "growth without radii or walls around it");
-    g->rate = ds_get_f64(r);
-    g->asked = ds_get_f64(r);
-    g->scale = ds_get_f64(r);
-    g->from = ds_get_f64(r);
-    g->stop_time = ds_get_f64(r);
-    g->until_eta = ds_get_f64(r);
-    g->until_z = ds_get_f64(r);
-    g->kinetic = ds_get_f64(r);
-    g->kinetic_target = ds_get_f64(r);
-    g->momentum_energy = ds_get_f64(r);
-    g->window = ds_get_u64(r);
-    g->window_start = ds_get_f64(r);
-    g->window_virial = ds_get_f64(r);
-    g->stopped = (int)ds_get_u32(r);
-    g->last_z = ds_get_f64(r);
+    if (version < 3) {
+        read_law_2x(g, r, legacy);
+    } else {
+        g->rate = ds_get_f64(r);
+        g->scale = ds_get_f64(r);
+        g->from = ds_get_f64(r);
+        g->eta = ds_get_f64(r);
+    }
     if (r->failed || !(g->rate >= 0.0 && g->rate < 1e300) ||
-        !(g->asked >= g->rate && g->asked < 1e300) || !(g->scale >= 1.0 && g->scale < 1e300) ||
-        !(g->until_eta >= 0.0 && g->until_eta < 1.0) || !(g->from <= now) || !isfinite(g->from) ||
-        isnan(g->stop_time) || !(g->until_z > 1.0 && g->until_z <= 1e9) || !isfinite(g->kinetic) ||
-        !(g->kinetic_target > 0.0 && isfinite(g->kinetic_target)) ||
-        !isfinite(g->momentum_energy) || !isfinite(g->window_start) ||
-        !isfinite(g->window_virial) || g->stopped < 0 || g->stopped > 2 ||
-        !(g->last_z == 0.0 || (g->last_z >= 1.0 && isfinite(g->last_z))) ||
-        !(1.0 + g->rate * (now - g->from) > 0.0))
+        !(g->scale >= 1.0 && g->scale < 1e300) || !(g->from <= now) || !isfinite(g->from) ||
+        !(g->eta >= 0.0 && g->eta < 1.0) || !(1.0 + g->rate * (now - g->from) > 0.0))
         return ds_state_refuse(err, DS_ERR_FORMAT, "the growth's clock or targets are not a run's");
     if (!(g->base = malloc(n * sizeof *g->base)))
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the growth of %zu disks", n);
     e->radius = g->base;
+    double covered = 0.0;
     for (size_t k = 0; k < n; ++k) {
         g->base[k] = ds_get_f64(r);
+        covered += g->base[k] * g->base[k];
         /* The radius shown is the base grown to now, to the bit. */
         if (r->failed || !(g->base[k] > 0.0) ||
             g->base[k] * (1.0 + g->rate * (now - g->from)) != sim->disks.r[k])
             return ds_state_refuse(err, DS_ERR_FORMAT, "disk %zu's growing radius is not its own",
                                    k);
     }
+    /* 2.x kept no area fraction: the one its restart computed from the
+     * same radii, to the bit. */
+    if (version < 3)
+        g->eta = 0.5 * DS_TWO_PI * covered / (e->box.side[0] * e->box.side[1]);
     return DS_OK;
 }
 
@@ -126,7 +135,7 @@ static int is_event_kind(uint32_t partner)
            partner == EV_CELL_Y || partner == EV_NONE;
 }
 
-static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, ds_state_error *err)
+static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, ds_error *err)
 {
     for (size_t k = 0; k < n; ++k) {
         ed_disk *d = &e->disk[k];
@@ -163,7 +172,7 @@ static ds_status read_records(ds_events *e, size_t n, double now, ds_reader *r, 
 /* Reads the cells and checks they hold every disk once, in the cell its
  * record names, packed from the first slot, with an overflow list only
  * behind four taken slots: what predicting and fetching rely on. */
-static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_state_error *err)
+static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_error *err)
 {
     ds_cells *c = &e->cells;
     const size_t cells = (size_t)c->nx * c->ny;
@@ -222,27 +231,26 @@ static ds_status read_cells(ds_events *e, size_t n, ds_reader *r, ds_state_error
 
 /* The records against the disk arrays, which were shown from them when
  * the state was saved: each record, flown from its time to now, is its
- * slot's disk to the bit (whose values sim/state.c checked as ds_set
+ * slot's disk to the bit (whose values sim/state.c checked as ds_sim_set_disk
  * checks a disk: finite, no faster than it allows, in the box); it lies
  * in the cell it names (up to rounding); and no two disks overlap. A
  * state that passes is one the integrator could have reached, so a run
  * from it is a run (a forged record far from its cell would have it
  * cross cells at one instant for ever). */
-static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_state_error *err)
+static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_error *err)
 {
     const ds_disks *a = &sim->disks;
     const ds_cells *c = &e->cells;
-    const double slack = 1e-9 * fmax(e->box_x, e->box_y);
+    const double slack = 1e-9 * fmax(e->box.side[0], e->box.side[1]);
     for (size_t k = 0; k < a->n; ++k) {
         const ed_disk *d = &e->disk[k];
         const double lag = now - d->t;
         double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
-        if (e->periodic) {
+        if (e->image) {
             /* The records' image counts: the arrays' less the wrap of
              * showing (ds_ed_show_at). */
             int32_t ix = 0, iy = 0;
-            x = ds_wrap_counting(x, e->box_x, &ix);
-            y = ds_wrap_counting(y, e->box_y, &iy);
+            ds_box_wrap(&e->box, &x, &y, &ix, &iy);
             e->image[2 * k] = (int32_t)((uint32_t)a->ix[k] - (uint32_t)ix);
             e->image[2 * k + 1] = (int32_t)((uint32_t)a->iy[k] - (uint32_t)iy);
         }
@@ -262,7 +270,8 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_s
     return st == DS_OK ? DS_OK : ds_state_refuse(err, st, "no memory to check the disks");
 }
 
-ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
+ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
+                     ds_error *err)
 {
     const size_t n = sim->world.n;
     if (ds_ed_alloc(sim) != DS_OK)
@@ -281,7 +290,7 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
         return ds_state_refuse(err, DS_ERR_FORMAT, "the event cells do not match the box");
     if (nx != e->cells.nx || ny != e->cells.ny) {
         ds_cells_free(&e->cells);
-        if (ds_cells_init_shape(&e->cells, n, e->box_x, e->box_y, nx, ny) != DS_OK)
+        if (ds_cells_init_shape(&e->cells, n, e->box.side[0], e->box.side[1], nx, ny) != DS_OK)
             return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the event cells");
     }
     /* The clock: the epoch is a step boundary, the present one at most
@@ -294,7 +303,7 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err)
     if (st == DS_OK)
         st = read_cells(e, n, r, err);
     if (st == DS_OK)
-        st = read_growth(sim, e, now, r, err);
+        st = read_growth(sim, e, now, r, version, legacy, err);
     if (st == DS_OK)
         st = check_records(sim, e, now, err);
     if (st == DS_OK)

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_EVENT_DRIVEN: exact dynamics of hard disks.
+/* DS_INTEGRATOR_EVENT_DRIVEN: exact dynamics of hard disks.
  *
  * Between events every disk flies in a straight line, so the state is
  * advanced from event to event instead of by a fixed step: a pair
@@ -37,7 +37,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/collide.h"
 #include "core/large_alloc.h"
 #include "event/event.h"
@@ -51,25 +51,19 @@ static void schedule(ds_events *e, uint32_t i) { ds_eq_set(e->queue, i, ds_ed_pr
 /* Events                                                               */
 /* ------------------------------------------------------------------ */
 
-/* The separation of two centres along one axis, to the nearest image in
- * a periodic box. */
-static inline double nearest(double r, double box, int periodic)
+static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
 {
-    return periodic ? ds_nearest(r, box) : r;
-}
-
-static void collide(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t)
-{
+    ds_tally *tally = &sim->tally;
     ds_tally_flight_to(tally, t);
-    if (e->growth.rate > 0.0) {
-        ds_ed_collide_growing(tally, e, i, j, t);
+    if (e->law.rate > 0.0) {
+        ds_ed_collide_growing(sim, e, i, j, t);
         return;
     }
     ed_disk *a = &e->disk[i], *b = &e->disk[j];
     ds_ed_advance(a, t);
     ds_ed_advance(b, t);
-    const double rx = nearest(b->x - a->x, e->box_x, e->periodic);
-    const double ry = nearest(b->y - a->y, e->box_y, e->periodic);
+    double rx = b->x - a->x, ry = b->y - a->y;
+    ds_box_nearest(&e->box, &rx, &ry);
     const double dvx = b->vx - a->vx, dvy = b->vy - a->vy;
     const double approach = rx * dvx + ry * dvy;
     /* Rounding can leave a predicted pair a hair from approaching; then
@@ -94,14 +88,13 @@ static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, in
     double *u = axis_y ? &d->y : &d->x, *v = axis_y ? &d->vy : &d->vx;
     /* Snap to the wall line (a mixture's disk: its own): rounding must not
      * let it creep. */
+    const double r = e->radius ? e->radius[i] : e->one_radius;
+    *u = *v < 0.0 ? r : e->box.side[axis_y] - r;
     if (e->radius || e->mass) {
-        const double r = e->radius ? e->radius[i] : e->lo_x, m = e->mass ? e->mass[i] : 1.0;
-        const double perimeter = 2.0 * (e->box_x - 2.0 * r) + 2.0 * (e->box_y - 2.0 * r);
-        *u = *v < 0.0 ? r : (axis_y ? e->box_y : e->box_x) - r;
+        const double m = e->mass ? e->mass[i] : 1.0;
         tally->wall_impulse += 2.0 * m * fabs(*v);
-        tally->wall_reach += 2.0 * m * fabs(*v) / perimeter;
+        tally->wall_reach += 2.0 * m * fabs(*v) / ds_box_wall_reached(&e->box, r);
     } else {
-        *u = *v < 0.0 ? (axis_y ? e->lo_y : e->lo_x) : (axis_y ? e->hi_y : e->hi_x);
         tally->wall_impulse += 2.0 * fabs(*v);
     }
     ++tally->wall_count;
@@ -119,7 +112,7 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
     uint16_t *c = axis_y ? &d->row : &d->column;
     const uint32_t count = axis_y ? cells->ny : cells->nx;
     double *u = axis_y ? &d->y : &d->x;
-    const double box = axis_y ? e->box_y : e->box_x;
+    const double box = e->box.side[axis_y];
     /* A periodic box's crossing counts in the disk's images. */
     int32_t *image = e->image ? &e->image[2 * (size_t)i + (axis_y ? 1 : 0)] : NULL;
     if ((axis_y ? d->vy : d->vx) > 0.0) {
@@ -143,8 +136,9 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
     schedule(e, i);
 }
 
-static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
+static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
 {
+    ds_tally *tally = &sim->tally;
     ed_disk *d = &e->disk[i];
     const uint32_t partner = d->partner;
     switch (partner) {
@@ -158,7 +152,7 @@ static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
         return;
     default:
         if (ds_fetch_note_current(d->partner_changes, e->disk[partner].changes)) {
-            collide(tally, e, i, partner, t);
+            collide(sim, e, i, partner, t);
         } else {
             ds_ed_advance(d, t); /* stale: the partner has changed course */
             schedule(e, i);
@@ -169,29 +163,6 @@ static void handle_event(ds_tally *tally, ds_events *e, uint32_t i, double t)
 /* ------------------------------------------------------------------ */
 /* Showing the disks, moving the epoch                                  */
 /* ------------------------------------------------------------------ */
-
-/* Record k is the disk of slot k (created so, see create). A disk shown
- * a hair past the box edge before its crossing event is wrapped here, and
- * its shown image counts that wrap too. */
-void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
-{
-    for (size_t k = 0; k < disks->n; ++k) {
-        const ed_disk *d = &e->disk[k];
-        const double lag = t - d->t;
-        double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
-        if (e->periodic) {
-            int32_t ix = e->image[2 * k], iy = e->image[2 * k + 1];
-            x = ds_wrap_counting(x, e->box_x, &ix);
-            y = ds_wrap_counting(y, e->box_y, &iy);
-            disks->ix[k] = ix;
-            disks->iy[k] = iy;
-        }
-        disks->x[k] = x;
-        disks->y[k] = y;
-        disks->vx[k] = d->vx;
-        disks->vy[k] = d->vy;
-    }
-}
 
 /* Moves the integrator's origin to its time t (a step boundary): every
  * disk is advanced to t and every scheduled time shifted by -t. */
@@ -204,53 +175,58 @@ static void rebase(ds_events *e, size_t n, double t)
     }
     ds_eq_build(e->queue, 0.0);
     e->epoch += t;
-    e->growth.from -= t;
-    e->growth.stop_time -= t;
-    e->growth.window_start -= t;
+    e->law.from -= t;
 }
 
-static void run(ds_sim *sim, uint64_t steps)
+static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
     ds_events *e = sim->state;
+    ds_status st = DS_OK;
     ds_timer_start(&sim->collision_timer);
     double target = (double)sim->steps * sim->world.dt - e->epoch;
     sim->tally.stress_clock = target;
-    for (uint64_t s = 0; s < steps; ++s) {
+    for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
         for (;;) {
             const uint32_t i = ds_eq_first(e->queue);
             const double t = e->disk[i].next;
-            /* Growing: first the checks that may stop it (and predict
-             * every disk again) before this event, or before the step's
-             * end if no event comes first: the target's time is an event
-             * of its own, which a sparse system's next collision may be
-             * steps after. */
-            if (e->growth.rate > 0.0 && ds_ed_growth_before(sim, e, t, target))
+            /* A protocol's moment first (growth's target, its window's
+             * end), before this event or before the step's end if no
+             * event comes first. */
+            if (ds_protocols_due(&sim->protocols, t, target)) {
+                ds_protocols_fire(sim, t, target);
                 continue;
+            }
             if (!(t < target))
                 break;
             if (e->fetching)
                 ds_fetch_ahead(e);
-            handle_event(&sim->tally, e, i, t);
+            handle_event(sim, e, i, t);
         }
         ++sim->steps;
         ds_tally_flight_to(&sim->tally, target);
         if (target >= e->rebase_time) {
             rebase(e, sim->world.n, target);
+            ds_protocols_rebased(sim, target);
             target = 0.0;
             sim->tally.stress_clock = 0.0;
         }
-        /* Growing: cells wide enough for the next step's contacts, or the
-         * state made again (it then starts at the present time, 0), or
-         * without memory for that the growth stopped and the steps go on. */
-        if (e->growth.rate > 0.0) {
+        /* The protocols' step's end (growth's wider cells may build the
+         * state again: it then starts at the present time, 0; without
+         * memory for that the growth stopped there, and the run stops). */
+        if (sim->protocols.stepping) {
             sim->tally.pairs_tested += e->tested;
             e->tested = 0;
-            (void)ds_ed_growth_step_end(sim, target + sim->world.dt); /* no memory: it stopped */
+            st = ds_protocols_step_end(sim);
+            if (st != DS_OK)
+                ds_refuse(err, st, "steps", (double)sim->steps, NAN,
+                          "steps: no memory for what a protocol needs after step %llu (growth's "
+                          "wider cells): it stopped there, and the run",
+                          (unsigned long long)sim->steps);
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
-            sim->tally.stress_clock = target; /* the state made again has its own clock */
+            sim->tally.stress_clock = target; /* a state made again has its own clock */
         }
     }
     ds_timer_stop(&sim->collision_timer);
@@ -258,170 +234,12 @@ static void run(ds_sim *sim, uint64_t steps)
     e->tested = 0;
     ds_ed_show_at(&sim->disks, e, target);
     ds_ed_show_radii(sim, e, target);
-}
-
-/* ------------------------------------------------------------------ */
-/* Creation, ds_set                                                     */
-/* ------------------------------------------------------------------ */
-
-static ds_broadphase grid_of(ds_broadphase bp) { return bp == DS_BRUTE_FORCE ? bp : DS_CELLS; }
-
-static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp)
-{
-    size_t cells = ds_cells_bytes(n, box_x, box_y, 2.0 * radius,
-                                  grid_of(bp) == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
-    return sizeof(ds_events) + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
-}
-
-/* What events read and write (fetching ahead pays once it outgrows the
- * caches), and all the state holds: that and the times waiting to be
- * filed (ds_ed_schedule_all). */
-static size_t event_bytes(const ds_world *w)
-{
-    return ed_bytes(w->n, w->radius_max, w->box, w->box_y, w->broadphase) +
-           (w->boundary == DS_PERIODIC ? 2 * w->n * sizeof(int32_t) : 0);
-}
-
-static size_t bytes(const ds_world *w) { return event_bytes(w) + w->n * sizeof(double); }
-
-void ds_ed_destroy(ds_sim *sim)
-{
-    ds_events *e = sim->state;
-    if (!e)
-        return;
-    free(e->growth.base);
-    free(e->times);
-    free(e->image);
-    ds_eq_destroy(e->queue);
-    ds_cells_free(&e->cells);
-    free(e->disk);
-    free(e);
-    sim->state = NULL;
-}
-
-/* Orders the slots by cell, row by row: disks that meet in events are
- * then mostly near each other in memory. */
-static ds_status sort_slots_by_cell(ds_disks *disks, const ds_cells *cells)
-{
-    const size_t n = disks->n, count = (size_t)cells->nx * cells->ny;
-    uint32_t *start = calloc(count + 1, sizeof *start);
-    uint32_t *order = malloc(n * sizeof *order);
-    ds_status st = start && order ? DS_OK : DS_ERR_NOMEM;
-    if (st == DS_OK) {
-        for (size_t k = 0; k < n; ++k)
-            ++start[ds_cells_index(cells, ds_cells_column(cells, disks->x[k]),
-                                   ds_cells_row(cells, disks->y[k])) +
-                    1];
-        for (size_t c = 0; c < count; ++c)
-            start[c + 1] += start[c];
-        for (size_t k = 0; k < n; ++k)
-            order[start[ds_cells_index(cells, ds_cells_column(cells, disks->x[k]),
-                                       ds_cells_row(cells, disks->y[k]))]++] = (uint32_t)k;
-        st = ds_disks_permute(disks, order);
-    }
-    free(start);
-    free(order);
     return st;
 }
 
-/* Predicts every disk, then builds the calendar from all the times at once
- * (it sizes its buckets from them). Until then every disk's time is
- * +infinity, so no pair is skipped for its partner's earlier event: the
- * times wait in an array of their own. */
-void ds_ed_schedule_all(ds_events *e, size_t n)
-{
-    for (size_t k = 0; k < n; ++k)
-        e->times[k] = ds_ed_predict(e, (uint32_t)k);
-    for (size_t k = 0; k < n; ++k)
-        e->disk[k].next = e->times[k];
-    e->tested = 0; /* the first predictions are not the run's tests */
-}
-
-ds_status ds_ed_alloc(ds_sim *sim)
-{
-    const ds_world *w = &sim->world;
-    const size_t n = w->n;
-    ds_events *e = calloc(1, sizeof *e);
-    if (!e)
-        return DS_ERR_NOMEM;
-    sim->state = e;
-    e->box_x = w->box;
-    e->box_y = w->box_y;
-    e->periodic = w->boundary == DS_PERIODIC;
-    e->lo_x = e->lo_y = w->radius;
-    e->hi_x = w->box - w->radius;
-    e->hi_y = w->box_y - w->radius;
-    e->sigma2 = 4.0 * w->radius * w->radius;
-    /* The clock starts at the present step boundary (ds_set_all comes
-     * here later in a run). */
-    e->epoch = (double)sim->steps * w->dt;
-    /* Move the epoch about once per time a disk takes to cross the box:
-     * by then every disk has had several events, so the O(n) rebase is
-     * cheap beside them, and times stay below ~10 crossing times. */
-    e->rebase_time = fmax(w->box, w->box_y) / w->speed;
-    e->growth.stop_time = INFINITY;
-    e->growth.scale = 1.0;
-    e->disk = ds_large_alloc(n * sizeof(ed_disk));
-    e->times = malloc((n ? n : 1) * sizeof *e->times);
-    ds_status st = e->disk && e->times ? DS_OK : DS_ERR_NOMEM;
-    if (st == DS_OK && e->periodic && !(e->image = calloc(2 * (n ? n : 1), sizeof *e->image)))
-        st = DS_ERR_NOMEM;
-    if (st == DS_OK)
-        st = ds_cells_init(&e->cells, n, e->box_x, e->box_y, 2.0 * w->radius_max,
-                           w->broadphase == DS_BRUTE_FORCE ? 1u : UINT32_MAX);
-    if (st == DS_OK)
-        st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));
-    /* Fetching ahead pays once the state outgrows the caches; below, it is
-     * work for nothing. Measured at area fraction 0.5 (median of 3, ns per
-     * collision, off / on): 10^4 disks 870 / 995, 3 10^4 992 / 1093,
-     * 10^5 2064 / 1188, 3 10^5 1882 / 1279. */
-    e->fetching = event_bytes(w) > DS_FETCH_AHEAD_BYTES;
-    return st; /* on failure the table's destroy frees what was made */
-}
-
-void ds_ed_start(ds_events *e, double now)
-{
-    ds_eq_build(e->queue, now);
-    if (e->fetching)
-        ds_eq_on_soon(e->queue, ds_fetch_on_soon, e, DS_FETCH_LOOKAHEAD);
-}
-
-/* The records are copied from the disk arrays in slot order, once the
- * slots are sorted by cell: record k is slot k's disk, which show_at
- * copies back. */
-ds_status ds_ed_create(ds_sim *sim)
-{
-    const size_t n = sim->world.n;
-    ds_status st = ds_ed_alloc(sim);
-    ds_events *e = sim->state;
-    if (st == DS_OK)
-        st = sort_slots_by_cell(&sim->disks, &e->cells);
-    if (st != DS_OK)
-        return st;
-    /* After the cell sort (which moved the arrays). */
-    e->radius = sim->disks.r;
-    e->mass = sim->disks.m;
-    const ds_disks *disks = &sim->disks;
-    for (size_t k = n; k-- > 0;) {
-        ed_disk *d = &e->disk[k];
-        memset(d, 0, sizeof *d);
-        d->x = disks->x[k];
-        d->y = disks->y[k];
-        d->vx = disks->vx[k];
-        d->vy = disks->vy[k];
-        d->column = (uint16_t)ds_cells_column(&e->cells, d->x);
-        d->row = (uint16_t)ds_cells_row(&e->cells, d->y);
-        d->next = INFINITY;
-        ds_cells_add(&e->cells, ds_cells_index(&e->cells, d->column, d->row), (uint32_t)k);
-        if (e->image) { /* the arrays' centres are in the box: no wrap to undo */
-            e->image[2 * k] = disks->ix[k];
-            e->image[2 * k + 1] = disks->iy[k];
-        }
-    }
-    ds_ed_schedule_all(e, n);
-    ds_ed_start(e, 0.0);
-    return DS_OK;
-}
+/* ------------------------------------------------------------------ */
+/* ds_sim_set_disk, the services                                                 */
+/* ------------------------------------------------------------------ */
 
 /* Whether disk k (record p) at time now is closer to (x, y) than the
  * contact distance with disk self allows (DS_CONTACT_TOLERANCE). */
@@ -466,7 +284,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     ds_cells *cells = &e->cells;
     const double now = now_of(sim);
     /* Growing: the radii of now, from which the growth goes on. */
-    if (e->growth.rate > 0.0)
+    if (e->law.rate > 0.0)
         ds_ed_growth_go_on(e, sim->world.n, now);
     const uint32_t column = ds_cells_column(cells, nd.x), row = ds_cells_row(cells, nd.y);
     /* Refuse an overlap before changing anything. */
@@ -501,27 +319,73 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     return DS_OK;
 }
 
+/* Every velocity times factor at the present time, the records and the
+ * arrays alike; a growth goes on from the radii of now. */
+static ds_status scale_velocities(ds_sim *sim, double factor)
+{
+    ds_events *e = sim->state;
+    const size_t n = sim->world.n;
+    const double now = now_of(sim);
+    for (size_t k = 0; k < n; ++k) {
+        ds_ed_advance(&e->disk[k], now);
+        e->disk[k].vx *= factor;
+        e->disk[k].vy *= factor;
+        sim->disks.vx[k] = e->disk[k].vx;
+        sim->disks.vy[k] = e->disk[k].vy;
+    }
+    ds_ed_growth_go_on(e, n, now);
+    return DS_OK;
+}
+
+/* The kinetic energy of the records and the centre of mass's share: a
+ * periodic box conserves the momentum, so the centre of mass's energy is
+ * not the temperature's. */
+static void kinetic(const ds_sim *sim, double *kinetic, double *momentum_energy)
+{
+    const ds_events *e = sim->state;
+    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
+    for (size_t i = 0; i < sim->world.n; ++i) {
+        const ed_disk *d = &e->disk[i];
+        const double m = e->mass ? e->mass[i] : 1.0;
+        k += m * (d->vx * d->vx + d->vy * d->vy);
+        px += m * d->vx;
+        py += m * d->vy;
+        mass += m;
+    }
+    *kinetic = 0.5 * k;
+    *momentum_energy = (px * px + py * py) / (2.0 * mass);
+}
+
 /* ------------------------------------------------------------------ */
 /* The table                                                            */
 /* ------------------------------------------------------------------ */
 
 /* The integrator's cell grid, or brute force: one cell for everyone. */
-static int fits(ds_broadphase bp) { return bp == DS_CELLS || bp == DS_BRUTE_FORCE; }
+static int fits(ds_broadphase bp) { return bp == DS_BROADPHASE_CELLS || bp == DS_BROADPHASE_BRUTE; }
 
 static ds_broadphase choose(const ds_world *w)
 {
     (void)w;
-    return DS_CELLS;
+    return DS_BROADPHASE_CELLS;
 }
 
 /* Disk numbers share 32 bits with the EV_* kinds, and the calendar's
  * entries keep them in 30. */
-static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *err)
+static ds_status check(const ds_world *w, unsigned *warnings, ds_error *err)
 {
     (void)warnings;
     if (w->n >= ((size_t)1 << 30))
-        return ds_refuse(err, DS_ERR_NOMEM, "n",
+        return ds_refuse(err, DS_ERR_NOMEM, "n", (double)w->n, (double)((size_t)1 << 30),
                          "n = %zu disks: the event-driven integrator takes fewer than 2^30", w->n);
+    return DS_OK;
+}
+
+static ds_status create(ds_sim *sim, ds_error *err)
+{
+    const ds_status st = ds_ed_create(sim);
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)sim->world.n, NAN,
+                         "n = %zu disks: no memory for the event-driven integrator", sim->world.n);
     return DS_OK;
 }
 
@@ -533,14 +397,17 @@ const ds_integrator_ops ds_event_driven_ops = {
     .fits = fits,
     .choose = choose,
     .check = check,
-    .bytes = bytes,
-    .create = ds_ed_create,
+    .bytes = ds_ed_bytes,
+    .create = create,
     .destroy = ds_ed_destroy,
     .run = run,
     .set = set,
     .save = ds_ed_save,
     .load = ds_ed_load,
-    .set_growth = ds_ed_set_growth,
-    .scale_velocities = ds_ed_scale_velocities,
-    .growth_state = ds_ed_growth_state,
+    .scale_velocities = scale_velocities,
+    .now = now_of,
+    .kinetic = kinetic,
+    .grow = ds_ed_grow,
+    .growth_law = ds_ed_growth_law,
+    .widen = ds_ed_widen,
 };

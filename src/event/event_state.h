@@ -12,7 +12,7 @@
 #include "event/event_queue.h"
 
 /* What a disk's scheduled event is, kept in its partner field above any
- * disk index (the integrator takes n < 2^30, ds_check_params). */
+ * disk index (the integrator takes n < 2^30, ds_params_check). */
 #define EV_WALL_X (UINT32_MAX - 1)
 #define EV_WALL_Y (UINT32_MAX - 2)
 #define EV_CELL_X (UINT32_MAX - 3)
@@ -43,30 +43,26 @@ typedef struct ed_disk {
  * access, and the fetching ahead asks for one line per disk. */
 typedef char ds_ed_disk_is_one_line[sizeof(ed_disk) == 64 ? 1 : -1];
 
-/* Growth (Lubachevsky-Stillinger, event_growth.c): every radius grows in
- * proportion, r_i(t) = base_i (1 + rate (t - from)), so a pair's contact
- * distance is linear in time, (base_i + base_j) (1 + rate (t - from)).
- * Each restart takes base to its time and divides rate by the factor, so
- * the radii stay linear in time across restarts: dr_i/dt = r_i(start)
- * rate scale, r_i(start) the radius when growth was asked for. */
-typedef struct ds_growth {
-    double rate;      /* per unit time, relative to base; 0: not growing */
-    double asked;     /* the rate asked for, relative to the radii it was asked at */
-    double scale;     /* base over the radii at the ask: rate scale is the speed */
-    double from;      /* the integrator time base[] holds at */
-    double stop_time; /* integrator time the area fraction reaches its target, or INFINITY */
-    double until_eta; /* the target area fraction, or 0 */
-    double until_z;   /* growth stops once Z passes this */
-    double *base;     /* radii at `from`, by record; NULL if growth was never asked for */
-    /* The kinetic energy as growth's collisions add to it, the internal
-     * part's degrees of freedom, and a window of collisions over which Z
-     * is watched. */
-    double kinetic, momentum_energy, kinetic_target;
-    uint64_t window;
-    double window_start, window_virial;
-    int stopped;   /* why it stopped: 0 still growing or never, 1 eta, 2 Z */
-    double last_z; /* Z of the last window watched, 0 before the first */
-} ds_growth;
+/* Growing radii (growing.c), the dynamics of growth: every radius grows
+ * in proportion, r_i(t) = base_i (1 + rate (t - from)), so a pair's
+ * contact distance is linear in time, (base_i + base_j) (1 + rate (t -
+ * from)). Each restart takes base to its time and divides rate by the
+ * factor, so the radii stay linear in time across restarts: dr_i/dt =
+ * r_i(start) rate scale, r_i(start) the radius when the growth started.
+ * The growth protocol (protocols/growth.c) decides when and how fast. */
+typedef struct ds_ed_law {
+    double rate;  /* per unit time, relative to base; 0: not growing */
+    double scale; /* base over the radii at the growth's start */
+    double from;  /* the integrator time base[] holds at */
+    double eta;   /* the area fraction at from */
+    double *base; /* radii at `from`, by record; NULL if nothing ever grew */
+} ds_ed_law;
+
+/* The growth factor of the radii at integrator time t. */
+static inline double ds_ed_factor(const ds_ed_law *g, double t)
+{
+    return 1.0 + g->rate * (t - g->from);
+}
 
 struct ds_events {
     ed_disk *disk; /* n, 64-byte aligned */
@@ -77,8 +73,10 @@ struct ds_events {
     uint64_t tested;    /* pair tests not yet added to the tally */
     double epoch;       /* simulated time of the integrator's t = 0 */
     double rebase_time; /* integrator time after which the epoch moves */
-    double box_x, box_y, lo_x, hi_x, lo_y, hi_y, sigma2;
-    int periodic;
+    /* The box (a copy: a state is built again when it changes), the
+     * radius of one kind of disk and its contact distance squared. */
+    ds_box box;
+    double one_radius, sigma2;
     /* A mixture's radii and masses by record (the disk arrays', whose
      * slot k is record k), or NULL for one radius (lo_x, ... and sigma2
      * above) and mass 1. */
@@ -93,7 +91,7 @@ struct ds_events {
      * with the state so that predicting everyone again, which a growth's
      * restart does in the middle of a run, needs no memory. */
     double *times;
-    ds_growth growth;
+    ds_ed_law law;
 };
 typedef struct ds_events ds_events;
 
@@ -122,14 +120,14 @@ static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
 }
 
 /* The integrator's state for sim's world, its records, cells and
- * calendar allocated and empty (event_driven.c); ds_ed_start then builds
+ * calendar allocated and empty (ed_state.c); ds_ed_start then builds
  * the calendar from the records' times, at integrator time now. */
 ds_status ds_ed_alloc(ds_sim *sim);
 void ds_ed_start(ds_events *e, double now);
 
 /* Writes every disk at integrator time t into the simulation's arrays
  * (record k is slot k), wrapped into a periodic box, with its image
- * counts (event_driven.c). */
+ * counts (ed_state.c). */
 void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t);
 
 static inline void ds_ed_advance(ed_disk *d, double t)
@@ -141,35 +139,33 @@ static inline void ds_ed_advance(ed_disk *d, double t)
 }
 
 /* Creating and freeing the state, and predicting every disk afresh
- * (event_driven.c): what a restart at one instant needs. */
+ * (ed_state.c): what a restart at one instant needs. */
 ds_status ds_ed_create(ds_sim *sim);
 void ds_ed_destroy(ds_sim *sim);
+/* Bytes the state allocates for world w (the table's bytes). */
+size_t ds_ed_bytes(const ds_world *w);
 void ds_ed_schedule_all(ds_events *e, size_t n);
 
-/* Growth (event_growth.c). A disk's next event with growing radii; the
- * collision of a growing pair; every disk taken to integrator time t and
- * predicted again there, growth going on at speed (relative to the radii
- * it was asked at; 0: stopped), or as it was going (go_on); the checks
- * before each event at t of a step that ends at end (the target area
- * fraction, which may come before t and stop growth at its own time, and
- * Z), which return whether they restarted it, and at each step's end
- * (cells wide enough for the next step), which may restart it; the table's
- * set_growth and scale_velocities. */
+/* Growing radii (growing.c): a disk's next event with growing radii
+ * (event_predict.c); the collision of a growing pair; every disk taken to
+ * integrator time t and predicted again there, the radii growing from
+ * then at speed (relative to the radii at the growth's start; 0:
+ * stopped), or as they were (go_on); the radii of t into the arrays; the
+ * table's growth services (core.h: grow, growth_law, widen). */
 double ds_ed_predict_growing(ds_events *e, uint32_t i);
-void ds_ed_collide_growing(ds_tally *tally, ds_events *e, uint32_t i, uint32_t j, double t);
+void ds_ed_collide_growing(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t);
 void ds_ed_restart_at(ds_events *e, size_t n, double t, double speed);
 void ds_ed_growth_go_on(ds_events *e, size_t n, double t);
-int ds_ed_growth_before(ds_sim *sim, ds_events *e, double t, double end);
-ds_status ds_ed_growth_step_end(ds_sim *sim, double target_next);
 void ds_ed_show_radii(ds_sim *sim, const ds_events *e, double t);
-ds_status ds_ed_set_growth(ds_sim *sim, double rate, double until_eta, double until_z);
-ds_status ds_ed_scale_velocities(ds_sim *sim, double factor);
-int ds_ed_growth_state(const ds_sim *sim, double *z);
+ds_status ds_ed_grow(ds_sim *sim, double t, double factor, double speed, int fresh);
+void ds_ed_growth_law(const ds_sim *sim, ds_growth_law *law);
+ds_status ds_ed_widen(ds_sim *sim, double until, int *rebuilt);
 
 /* A checkpoint of the integrator's state (event_checkpoint.c): the
  * table's save and load. */
-void ds_ed_save(const ds_sim *sim, ds_writer *w);
-ds_status ds_ed_load(ds_sim *sim, ds_reader *r, ds_state_error *err);
+void ds_ed_save(const ds_sim *sim, ds_state_writer *w);
+ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
+                     ds_error *err);
 
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):
  * records it in the disk and returns its time. */

@@ -19,7 +19,7 @@ ds_status ds_place(ds_disks *d, const ds_world *w);
 ds_status ds_place_random(ds_disks *d, const ds_world *w);
 
 /* Takes the mean velocity out of the disks (more than one) and scales the
- * speeds back to the kinetic energy n speed^2 / 2 (placement.c): in a
+ * speeds back to the kinetic energy n speed^2 / 2 (velocities.c): in a
  * periodic box the total momentum is conserved, so the centre of mass
  * then stands still for ever. */
 void ds_stop_centre_of_mass(ds_disks *d, const ds_world *w);
@@ -28,7 +28,7 @@ ds_status ds_place_lattice(ds_disks *d, const ds_world *w);
 /* Whether the best triangular lattice of n disks has its closest sites at
  * least 2R apart (placement_lattice.c), and how far apart they are (0 if
  * there is no lattice: no sites). */
-int ds_lattice_fits(size_t n, double radius, double box_x, double box_y, int periodic);
-double ds_lattice_closest(size_t n, double radius, double box_x, double box_y, int periodic);
+int ds_lattice_fits(size_t n, double radius, const ds_box *box);
+double ds_lattice_closest(size_t n, double radius, const ds_box *box);
 
 #endif

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/grid.h"
 #include "core/prefetch.h"
 #include "init/init.h"
@@ -65,17 +65,13 @@ static int overlaps_in_cell(const grid *g, size_t cell, double px, double py, do
 static int overlaps_mixed(const ds_world *w, const grid *g, const double *r, double radius,
                           double px, double py)
 {
-    const int periodic = w->boundary == DS_PERIODIC;
     size_t around[9];
     const int count = ds_grid_neighbours(&g->cells, ds_grid_column(&g->cells, px),
                                          ds_grid_row(&g->cells, py), around);
     for (int c = 0; c < count; ++c)
         for (uint32_t k = g->head[around[c]]; k != UINT32_MAX; k = g->node[k].next) {
             double dx = g->node[k].x - px, dy = g->node[k].y - py;
-            if (periodic) {
-                dx = ds_nearest(dx, w->box);
-                dy = ds_nearest(dy, w->box_y);
-            }
+            ds_box_nearest(&w->box, &dx, &dy);
             const double sigma = radius + r[k];
             if (dx * dx + dy * dy < sigma * sigma)
                 return 1;
@@ -101,16 +97,12 @@ static int overlaps_any(const ds_world *w, const grid *g, double px, double py)
                     return 1;
         return 0;
     }
-    const int periodic = w->boundary == DS_PERIODIC;
     size_t around[9];
     const int count = ds_grid_neighbours(&g->cells, cx, cy, around);
     for (int c = 0; c < count; ++c)
         for (uint32_t k = g->head[around[c]]; k != UINT32_MAX; k = g->node[k].next) {
             double dx = g->node[k].x - px, dy = g->node[k].y - py;
-            if (periodic) {
-                dx = ds_nearest(dx, w->box);
-                dy = ds_nearest(dy, w->box_y);
-            }
+            ds_box_nearest(&w->box, &dx, &dy);
             if (dx * dx + dy * dy < d2min)
                 return 1;
         }
@@ -153,17 +145,17 @@ static inline double in_range(double lo, double hi, double u)
     return r < hi ? r : lo;
 }
 
-/* Where a disk of radius r may have its centre along a side: all of it in
- * a periodic box, r from each wall otherwise. */
+/* Where a disk of radius r may have its centre along each side: all of
+ * a periodic one, r from each wall otherwise. */
 typedef struct range {
     double lo, hi, lo_y, hi_y;
 } range;
 
 static range centre_range(const ds_world *w, double r)
 {
-    const int periodic = w->boundary == DS_PERIODIC;
-    const range c = {periodic ? 0.0 : r, periodic ? w->box : w->box - r, periodic ? 0.0 : r,
-                     periodic ? w->box_y : w->box_y - r};
+    range c;
+    ds_box_reach(&w->box, 0, r, &c.lo, &c.hi);
+    ds_box_reach(&w->box, 1, r, &c.lo_y, &c.hi_y);
     return c;
 }
 
@@ -197,101 +189,126 @@ static uint32_t *placement_order(const ds_disks *d)
     return order;
 }
 
-ds_status ds_place_random(ds_disks *d, const ds_world *w)
+/* The grid of the placed disks, empty: cells at least the largest
+ * diameter wide, but no more than ~4 per disk so tiny radii with few
+ * disks do not allocate a huge empty grid. */
+static ds_status grid_make(grid *g, const ds_world *w)
 {
-    const double box = w->box, box_y = w->box_y;
-    const int periodic = w->boundary == DS_PERIODIC;
-    grid g;
-    /* Cells at least the largest diameter wide, but no more than ~4 per
-     * disk so tiny radii with few disks do not allocate a huge empty grid. */
-    ds_grid_init(&g.cells, box, box_y, 2.0 * w->radius_max, 4 * w->n + 16, periodic);
-    const size_t cells = g.cells.nx * g.cells.ny;
-    g.head = malloc(cells * sizeof *g.head);
-    g.node = malloc(w->n * sizeof *g.node);
-    uint32_t *order = placement_order(d);
-    if (!g.head || !g.node || !order) {
-        free(g.head);
-        free(g.node);
-        free(order);
+    ds_grid_init(&g->cells, &w->box, 2.0 * w->radius_max, 4 * w->n + 16);
+    const size_t cells = g->cells.nx * g->cells.ny;
+    g->head = malloc(cells * sizeof *g->head);
+    g->node = malloc((w->n ? w->n : 1) * sizeof *g->node);
+    if (!g->head || !g->node) {
+        free(g->head);
+        free(g->node);
         return DS_ERR_NOMEM;
     }
     for (size_t c = 0; c < cells; ++c)
-        g.head[c] = UINT32_MAX;
+        g->head[c] = UINT32_MAX;
+    return DS_OK;
+}
 
+/* The candidate centres drawn ahead of the one tested, as numbers in
+ * [0, 1) (taken to the range of the disk that tests them), in a ring of
+ * AHEAD. */
+typedef struct candidates {
+    ds_rng rng;
+    double u[AHEAD], v[AHEAD];
+    size_t next; /* ring slot of the next candidate */
+    int prefetch;
+} candidates;
+
+/* The next candidate for a disk whose centre ranges over at, into (*px,
+ * *py); the candidate AHEAD on takes its slot, its heads fetched now, and
+ * NODES_AHEAD candidates before its test its first disks (the heads have
+ * arrived by then). */
+static void draw(candidates *c, const grid *g, const range *at, double *px, double *py)
+{
+    *px = in_range(at->lo, at->hi, c->u[c->next]);
+    *py = in_range(at->lo_y, at->hi_y, c->v[c->next]);
+    c->u[c->next] = ds_rng_uniform(&c->rng, 0.0, 1.0);
+    c->v[c->next] = ds_rng_uniform(&c->rng, 0.0, 1.0);
+    if (c->prefetch) {
+        prefetch_cells(g, in_range(at->lo, at->hi, c->u[c->next]),
+                       in_range(at->lo_y, at->hi_y, c->v[c->next]));
+        const size_t soon = (c->next + NODES_AHEAD) & (AHEAD - 1);
+        prefetch_nodes(g, in_range(at->lo, at->hi, c->u[soon]),
+                       in_range(at->lo_y, at->hi_y, c->v[soon]));
+    }
+    c->next = (c->next + 1) & (AHEAD - 1);
+}
+
+/* Disk i at its first free candidate, added to the grid; DS_ERR_PLACEMENT
+ * after MAX_DRAWS_PER_DISK draws. */
+static ds_status place_one(ds_disks *d, const ds_world *w, grid *g, candidates *c,
+                           const range *at, uint32_t i)
+{
+    const double radius = d->r ? d->r[i] : w->radius;
+    double px, py;
+    unsigned draws = 0;
+    do {
+        if (++draws > MAX_DRAWS_PER_DISK)
+            return DS_ERR_PLACEMENT;
+        draw(c, g, at, &px, &py);
+    } while (d->r ? overlaps_mixed(w, g, d->r, radius, px, py) : overlaps_any(w, g, px, py));
+    d->x[i] = px;
+    d->y[i] = py;
+    const size_t cell = cell_of(g, px, py);
+    g->node[i].x = px;
+    g->node[i].y = py;
+    g->node[i].next = g->head[cell];
+    g->head[cell] = i;
+    return DS_OK;
+}
+
+ds_status ds_place_random(ds_disks *d, const ds_world *w)
+{
+    grid g;
+    if (grid_make(&g, w) != DS_OK)
+        return DS_ERR_NOMEM;
+    uint32_t *order = placement_order(d);
+    if (!order) {
+        free(g.head);
+        free(g.node);
+        return DS_ERR_NOMEM;
+    }
     /* Centres and directions come from two generators, so the sequence of
      * candidate centres does not depend on which of them are accepted: it
-     * can be drawn ahead (as numbers in [0, 1), taken to the range of the
-     * disk that tests them), and the grid cells of candidates still to
-     * come fetched while the current one is tested. */
-    ds_rng centres, directions;
-    ds_rng_seed(&centres, w->seed);
-    ds_rng_seed(&directions, ds_rng_next(&centres));
-
-    /* Below ~1 MB of heads the grid stays in cache and prefetching only
-     * costs instructions. */
-    const int big_grid = cells >= ((size_t)1 << 18);
+     * can be drawn ahead, and the grid cells of candidates still to come
+     * fetched while the current one is tested. Below ~1 MB of heads the
+     * grid stays in cache and prefetching only costs instructions. */
+    candidates c;
+    ds_rng directions;
+    ds_rng_seed(&c.rng, w->seed);
+    ds_rng_seed(&directions, ds_rng_next(&c.rng));
+    c.next = 0;
+    c.prefetch = g.cells.nx * g.cells.ny >= ((size_t)1 << 18);
     range at = centre_range(w, d->r ? d->r[order[0]] : w->radius);
-    double ahead_u[AHEAD], ahead_v[AHEAD];
     for (size_t k = 0; k < AHEAD; ++k) {
-        ahead_u[k] = ds_rng_uniform(&centres, 0.0, 1.0);
-        ahead_v[k] = ds_rng_uniform(&centres, 0.0, 1.0);
-        if (big_grid)
-            prefetch_cells(&g, in_range(at.lo, at.hi, ahead_u[k]),
-                           in_range(at.lo_y, at.hi_y, ahead_v[k]));
+        c.u[k] = ds_rng_uniform(&c.rng, 0.0, 1.0);
+        c.v[k] = ds_rng_uniform(&c.rng, 0.0, 1.0);
+        if (c.prefetch)
+            prefetch_cells(&g, in_range(at.lo, at.hi, c.u[k]), in_range(at.lo_y, at.hi_y, c.v[k]));
     }
-
     ds_status status = DS_OK;
-    size_t next = 0; /* ring slot of the next candidate */
-    for (size_t o = 0; o < w->n; ++o) {
-        const uint32_t i = order[o];
-        const double radius = d->r ? d->r[i] : w->radius;
+    for (size_t o = 0; o < w->n && status == DS_OK; ++o) {
         if (d->r)
-            at = centre_range(w, radius);
-        double px, py;
-        unsigned draws = 0;
-        do {
-            if (++draws > MAX_DRAWS_PER_DISK) {
-                status = DS_ERR_PLACEMENT;
-                goto done;
-            }
-            px = in_range(at.lo, at.hi, ahead_u[next]);
-            py = in_range(at.lo_y, at.hi_y, ahead_v[next]);
-            /* The candidate AHEAD on takes this slot; its heads are fetched
-             * now, and NODES_AHEAD candidates before its test its first
-             * disks (the heads have arrived by then). */
-            ahead_u[next] = ds_rng_uniform(&centres, 0.0, 1.0);
-            ahead_v[next] = ds_rng_uniform(&centres, 0.0, 1.0);
-            if (big_grid) {
-                prefetch_cells(&g, in_range(at.lo, at.hi, ahead_u[next]),
-                               in_range(at.lo_y, at.hi_y, ahead_v[next]));
-                size_t soon = (next + NODES_AHEAD) & (AHEAD - 1);
-                prefetch_nodes(&g, in_range(at.lo, at.hi, ahead_u[soon]),
-                               in_range(at.lo_y, at.hi_y, ahead_v[soon]));
-            }
-            next = (next + 1) & (AHEAD - 1);
-        } while (d->r ? overlaps_mixed(w, &g, d->r, radius, px, py) : overlaps_any(w, &g, px, py));
-
-        d->x[i] = px;
-        d->y[i] = py;
-        const size_t c = cell_of(&g, px, py);
-        g.node[i].x = px;
-        g.node[i].y = py;
-        g.node[i].next = g.head[c];
-        g.head[c] = i;
+            at = centre_range(w, d->r[order[o]]);
+        status = place_one(d, w, &g, &c, &at, order[o]);
     }
-
-    /* Directions uniform in [0, 2 pi), one per disk in generation order. */
-    for (size_t i = 0; i < w->n; ++i) {
-        double angle = ds_rng_uniform(&directions, 0.0, DS_TWO_PI);
-        d->vx[i] = w->speed * cos(angle);
-        d->vy[i] = w->speed * sin(angle);
+    if (status == DS_OK) {
+        /* Directions uniform in [0, 2 pi), one per disk in generation order. */
+        for (size_t i = 0; i < w->n; ++i) {
+            double angle = ds_rng_uniform(&directions, 0.0, DS_TWO_PI);
+            d->vx[i] = w->speed * cos(angle);
+            d->vy[i] = w->speed * sin(angle);
+        }
+        /* With walls the seed's velocities, as they are (the walls take
+         * the momentum); along a periodic axis nothing does: the centre of
+         * mass would drift for ever. */
+        if (ds_box_any_periodic(&w->box))
+            ds_stop_centre_of_mass(d, w);
     }
-    /* With walls the seed's velocities, as they are (the walls take the
-     * momentum); in a periodic box nothing does: the centre of mass would
-     * drift for ever. */
-    if (periodic)
-        ds_stop_centre_of_mass(d, w);
-done:
     free(g.head);
     free(g.node);
     free(order);

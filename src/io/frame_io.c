@@ -35,7 +35,7 @@ const char *ds_radius_at(const ds_sim *sim, size_t k, ds_radius_cache *c, size_t
     return c->text;
 }
 
-size_t ds_frame_size(const ds_sim *sim, int velocities)
+size_t ds_frame_get_size(const ds_sim *sim, int velocities)
 {
     if (!sim)
         return 0;
@@ -45,13 +45,22 @@ size_t ds_frame_size(const ds_sim *sim, int velocities)
     return sim->world.n * line;
 }
 
-ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len)
+ds_status ds_refuse_cap(ds_error *err, size_t cap, size_t need)
 {
+    return ds_refuse(err, DS_ERR_ARG, "cap", (double)cap, (double)need,
+                     "cap = %zu bytes is too small: the text needs %zu", cap, need);
+}
+
+ds_status ds_frame_format(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len,
+                          ds_error *err)
+{
+    ds_error_clear(err);
     if (len)
         *len = 0;
     /* buf NULL with cap 0 asks only for the size: the loop copies nothing. */
     if (!sim || (!buf && cap))
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, sim ? "buf" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "buf" : "sim");
     ds_radius_cache radius;
     ds_radius_cache_init(&radius, sim);
     const ds_disks *d = &sim->disks;
@@ -80,37 +89,52 @@ ds_status ds_format_frame(const ds_sim *sim, int velocities, char *buf, size_t c
     }
     if (len)
         *len = used;
-    return used <= cap ? DS_OK : DS_ERR_ARG;
+    return used <= cap ? DS_OK : ds_refuse_cap(err, cap, used);
 }
 
 ds_status ds_write_formatted(const ds_sim *sim, int velocities, FILE *out, size_t cap,
-                             ds_format_fn format)
+                             ds_format_fn format, ds_error *err)
 {
+    ds_error_clear(err);
     if (!sim || !out)
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, sim ? "out" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "out" : "sim");
     size_t len = 0;
     char *buf = malloc(cap ? cap : 1);
     if (!buf)
-        return DS_ERR_NOMEM;
-    ds_status st = format(sim, velocities, buf, cap, &len);
+        return ds_refuse(err, DS_ERR_NOMEM, "out", NAN, NAN,
+                         "out: no memory for the %zu bytes of the text", cap);
+    ds_status st = format(sim, velocities, buf, cap, &len, err);
     /* fwrite into stdio's buffer succeeds even on a full disk: only the
      * flush reaches the file, so its result (and the sticky error flag, set
      * by any earlier failed write on this stream) decides. */
     if (st == DS_OK && (fwrite(buf, 1, len, out) != len || fflush(out) != 0 || ferror(out)))
-        st = DS_ERR_IO;
+        st = ds_refuse(err, DS_ERR_IO, "out", NAN, NAN, "out: the write of %zu bytes failed", len);
     free(buf);
     return st;
 }
 
-ds_status ds_write_frame(const ds_sim *sim, FILE *out)
+ds_status ds_frame_write(const ds_sim *sim, int velocities, FILE *out, ds_error *err)
 {
-    return ds_write_formatted(sim, 0, out, ds_frame_size(sim, 0), ds_format_frame);
+    return ds_write_formatted(sim, velocities != 0, out, ds_frame_get_size(sim, velocities != 0),
+                              ds_frame_format, err);
 }
 
-ds_status ds_write_frame_velocities(const ds_sim *sim, FILE *out)
+/* The writer of frames: a text frame a write, one after another. */
+static ds_status write_frame(void *self, FILE *out, unsigned flags, const ds_sim *sim,
+                             ds_error *err)
 {
-    return ds_write_formatted(sim, 1, out, ds_frame_size(sim, 1), ds_format_frame);
+    (void)self;
+    return ds_frame_write(sim, (flags & DS_WRITE_VELOCITIES) != 0, out, err);
 }
+
+const ds_writer_ops ds_frame_writer = {
+    .name = "frame",
+    .flags = DS_WRITE_VELOCITIES,
+    .open = NULL,
+    .frame = write_frame,
+    .close = NULL,
+};
 
 /* ------------------------------------------------------------------ */
 /* Reading                                                             */
@@ -120,13 +144,11 @@ ds_status ds_write_frame_velocities(const ds_sim *sim, FILE *out)
  * exponents fit in well under this; anything longer is not a frame line. */
 #define LINE_MAX_BYTES 512
 
-static ds_status fail(ds_frame_error *err, size_t line, const char *message)
+/* A frame refused at a line (0: not about a line), the reason alone. */
+static ds_status fail(ds_error *err, size_t line, const char *message)
 {
-    if (err) {
-        err->line = line;
-        snprintf(err->message, sizeof err->message, "%s", message);
-    }
-    return DS_ERR_FORMAT;
+    ds_error_index(err, line);
+    return ds_refuse(err, DS_ERR_FORMAT, "frame", NAN, NAN, "%s", message);
 }
 
 void ds_frame_free(ds_frame *frame)
@@ -171,12 +193,9 @@ static int parse_numbers(const char *s, double values[5], const char **why)
 
 /* Every error leaves *frame empty, an argument error included, so a caller
  * may always ds_frame_free it. */
-static void clear_frame(ds_frame *frame, ds_frame_error *err)
+static void clear_frame(ds_frame *frame, ds_error *err)
 {
-    if (err) {
-        err->line = 0;
-        err->message[0] = '\0';
-    }
+    ds_error_clear(err);
     if (frame) {
         frame->disks = NULL;
         frame->count = 0;
@@ -184,11 +203,30 @@ static void clear_frame(ds_frame *frame, ds_frame_error *err)
     }
 }
 
-ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame_error *err)
+/* d after the count disks of *disks (room for cap), which grows by
+ * doubling. */
+static ds_status add_disk(ds_frame_disk **disks, size_t *count, size_t *cap, ds_frame_disk d,
+                          ds_error *err)
+{
+    if (*count == *cap) {
+        const size_t ncap = *cap ? 2 * *cap : 256;
+        ds_frame_disk *grown = realloc(*disks, ncap * sizeof *grown);
+        if (!grown)
+            return ds_refuse(err, DS_ERR_NOMEM, "frame", NAN, NAN, "frame: no memory for %zu disks",
+                             ncap);
+        *disks = grown;
+        *cap = ncap;
+    }
+    (*disks)[(*count)++] = d;
+    return DS_OK;
+}
+
+ds_status ds_frame_parse(const char *text, size_t len, ds_frame *frame, ds_error *err)
 {
     clear_frame(frame, err);
     if (!frame || (!text && len))
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, frame ? "text" : "frame", NAN, NAN, "%s: NULL",
+                         frame ? "text" : "frame");
 
     size_t cap = 0, count = 0, line_no = 0;
     int columns = 0;
@@ -241,18 +279,9 @@ ds_status ds_parse_frame(const char *text, size_t len, ds_frame *frame, ds_frame
             st = fail(err, line_no, "radius must be positive");
             goto out;
         }
-        if (count == cap) {
-            size_t ncap = cap ? 2 * cap : 256;
-            ds_frame_disk *grown = realloc(disks, ncap * sizeof *grown);
-            if (!grown) {
-                st = DS_ERR_NOMEM;
-                goto out;
-            }
-            disks = grown;
-            cap = ncap;
-        }
         ds_frame_disk d = {v[0], v[1], v[2], got == 5 ? v[3] : 0.0, got == 5 ? v[4] : 0.0};
-        disks[count++] = d;
+        if ((st = add_disk(&disks, &count, &cap, d, err)) != DS_OK)
+            goto out;
     }
     if (count == 0) {
         st = fail(err, 0, "empty frame: no disks");
@@ -267,25 +296,25 @@ out:
     return st;
 }
 
-ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err)
+ds_status ds_frame_read(const char *path, ds_frame *frame, ds_error *err)
 {
     clear_frame(frame, err);
     if (!path || !frame)
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, path ? "frame" : "path", NAN, NAN, "%s: NULL",
+                         path ? "frame" : "path");
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        if (err)
-            snprintf(err->message, sizeof err->message, "cannot open: %s", strerror(errno));
-        return DS_ERR_IO;
-    }
+    if (!f)
+        return ds_refuse(err, DS_ERR_IO, "path", NAN, NAN, "cannot open: %s", strerror(errno));
     size_t cap = 1 << 16, len = 0;
     char *buf = malloc(cap);
-    ds_status st = buf ? DS_OK : DS_ERR_NOMEM;
+    ds_status st =
+        buf ? DS_OK : ds_refuse(err, DS_ERR_NOMEM, "path", NAN, NAN, "no memory to read it");
     while (st == DS_OK) {
         if (len == cap) {
             char *grown = cap < ((size_t)1 << 40) ? realloc(buf, 2 * cap) : NULL;
             if (!grown) {
-                st = DS_ERR_NOMEM;
+                st = ds_refuse(err, DS_ERR_NOMEM, "path", NAN, NAN,
+                               "no memory to read more than %zu bytes", cap);
                 break;
             }
             buf = grown;
@@ -300,17 +329,14 @@ ds_status ds_read_frame(const char *path, ds_frame *frame, ds_frame_error *err)
         if (binary)
             break;
         if (got == 0) {
-            if (ferror(f)) {
-                if (err)
-                    snprintf(err->message, sizeof err->message, "read error: %s", strerror(errno));
-                st = DS_ERR_IO;
-            }
+            if (ferror(f))
+                st = ds_refuse(err, DS_ERR_IO, "path", NAN, NAN, "read error: %s", strerror(errno));
             break;
         }
     }
     fclose(f);
     if (st == DS_OK)
-        st = ds_parse_frame(buf, len, frame, err);
+        st = ds_frame_parse(buf, len, frame, err);
     free(buf);
     return st;
 }

@@ -4,6 +4,7 @@
  * key=value pairs describing the cell and the columns, then one line per
  * particle. The box is 2D; it is written as a 3D cell of height 2R with
  * every disk at z = 0, so 3D readers see a flat layer of disks. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -14,7 +15,7 @@
  * Particle Type, Position, Radius and Velocity. ASE keeps radius and velo
  * as per-atom arrays of those names. "X" is ASE's dummy element. */
 #define XYZ_PROPERTIES "species:S:1:pos:R:3:radius:R:1:velo:R:3"
-/* A periodic box adds each disk's image counts (ds_get_images): the
+/* A periodic box adds each disk's image counts (ds_sim_get_images): the
  * unwrapped centre is pos + image x the cell's side, as LAMMPS' ix iy and
  * OVITO's Periodic Image; ASE reads it as an (N, 2) integer array. */
 #define XYZ_IMAGE_PROPERTY ":image:I:2"
@@ -24,7 +25,7 @@
 /* Count line, and a comment line of fixed text plus four numbers. */
 #define XYZ_HEADER_MAX (32 + 160 + 4 * DS_FIELD_MAX)
 
-size_t ds_xyz_frame_size(const ds_sim *sim)
+size_t ds_xyz_get_size(const ds_sim *sim)
 {
     if (!sim)
         return 0;
@@ -40,12 +41,16 @@ static size_t format_header(const ds_sim *sim, char *out)
 {
     char box[32], box_y[32], height[32], time[DS_FIELD_MAX];
     const ds_world *w = &sim->world;
-    ds_format_shortest(box, sizeof box, w->box);
-    ds_format_shortest(box_y, sizeof box_y, w->box_y);
+    ds_format_shortest(box, sizeof box, w->box.side[0]);
+    ds_format_shortest(box_y, sizeof box_y, w->box.side[1]);
     ds_format_shortest(height, sizeof height, 2.0 * w->radius_max);
-    time[ds_format_fixed6(time, ds_time(sim))] = '\0';
-    /* Periodic along x and y, never along the flat z of the layer. */
-    const char *pbc = w->boundary == DS_PERIODIC ? "T T F" : "F F F";
+    /* The time as ds_sim_get_time computes it (sim/ is above io/). */
+    time[ds_format_fixed6(time, (double)sim->steps * w->dt)] = '\0';
+    /* Periodic as the box is along x and y, never along the flat z of the
+     * layer. */
+    char pbc[6] = "F F F";
+    pbc[0] = ds_box_periodic(&w->box, 0) ? 'T' : 'F';
+    pbc[2] = ds_box_periodic(&w->box, 1) ? 'T' : 'F';
     int len =
         snprintf(out, XYZ_HEADER_MAX,
                  "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
@@ -54,12 +59,14 @@ static size_t format_header(const ds_sim *sim, char *out)
     return len > 0 && len < XYZ_HEADER_MAX ? (size_t)len : 0;
 }
 
-ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *len)
+ds_status ds_xyz_format(const ds_sim *sim, char *buf, size_t cap, size_t *len, ds_error *err)
 {
+    ds_error_clear(err);
     if (len)
         *len = 0;
     if (!sim || (!buf && cap))
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, sim ? "buf" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "buf" : "sim");
     char line[XYZ_HEADER_MAX];
     size_t used = format_header(sim, line);
     if (used <= cap)
@@ -97,17 +104,35 @@ ds_status ds_format_xyz_frame(const ds_sim *sim, char *buf, size_t cap, size_t *
     }
     if (len)
         *len = used;
-    return used <= cap ? DS_OK : DS_ERR_ARG;
+    return used <= cap ? DS_OK : ds_refuse_cap(err, cap, used);
 }
 
-/* ds_format_xyz_frame as a ds_format_fn: velocities are always written. */
-static ds_status format_xyz(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len)
+/* ds_xyz_format as a ds_format_fn: velocities are always written. */
+static ds_status format_xyz(const ds_sim *sim, int velocities, char *buf, size_t cap, size_t *len,
+                            ds_error *err)
 {
     (void)velocities;
-    return ds_format_xyz_frame(sim, buf, cap, len);
+    return ds_xyz_format(sim, buf, cap, len, err);
 }
 
-ds_status ds_write_xyz_frame(const ds_sim *sim, FILE *out)
+ds_status ds_xyz_write(const ds_sim *sim, FILE *out, ds_error *err)
 {
-    return ds_write_formatted(sim, 1, out, ds_xyz_frame_size(sim), format_xyz);
+    return ds_write_formatted(sim, 1, out, ds_xyz_get_size(sim), format_xyz, err);
 }
+
+/* The writer of extended XYZ: a frame a write, velocities always. */
+static ds_status write_frame(void *self, FILE *out, unsigned flags, const ds_sim *sim,
+                             ds_error *err)
+{
+    (void)self;
+    (void)flags;
+    return ds_xyz_write(sim, out, err);
+}
+
+const ds_writer_ops ds_xyz_writer = {
+    .name = "xyz",
+    .flags = DS_WRITE_VELOCITIES,
+    .open = NULL,
+    .frame = write_frame,
+    .close = NULL,
+};

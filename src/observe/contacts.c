@@ -1,13 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* The contacts of a packing and its rattlers (ds_count_contacts): every
- * pair within the gap through the cell grid, each disk's contacts in a
+/* The contacts of a packing and its rattlers (ds_sim_get_contacts): every
+ * pair within the gap through the neighbour pairs, each disk's contacts in a
  * list, then the disks with fewer than 3 taken away one at a time, each
  * taking its contacts from its neighbours, which may then go too. */
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
-#include "core/grid.h"
+#include "core/pairs.h"
 #include "observe/observe.h"
 
 typedef struct contact_lists {
@@ -17,57 +16,62 @@ typedef struct contact_lists {
     uint8_t *removed; /* n: 1 once taken away, 2 while waiting to be */
 } contact_lists;
 
-/* Calls found(j, k) for each pair j < k (slots) in contact; returns the
- * count, or SIZE_MAX without memory. */
+/* One pass over the pairs in contact: the first counts each disk's
+ * contacts; the second, with start[] made from the counts, writes the
+ * lists. */
+typedef struct contact_pass {
+    const ds_disks *d;
+    double radius, gap;
+    uint32_t *count;
+    size_t *start;
+    uint32_t *other; /* NULL: count only */
+    size_t pairs;
+} contact_pass;
+
+static int in_contact(void *ctx, size_t j, size_t k, double dx, double dy, double r2)
+{
+    contact_pass *c = ctx;
+    (void)dx;
+    (void)dy;
+    const double reach = (c->d->r ? c->d->r[j] + c->d->r[k] : 2.0 * c->radius) * (1.0 + c->gap);
+    if (!(r2 < reach * reach))
+        return 0;
+    if (c->other) {
+        c->other[c->start[j] + c->count[j]++] = (uint32_t)k;
+        c->other[c->start[k] + c->count[k]++] = (uint32_t)j;
+    } else {
+        ++c->count[j];
+        ++c->count[k];
+    }
+    ++c->pairs;
+    return 0;
+}
+
+/* Each pair j < k (slots) in contact, through the neighbour pairs;
+ * returns the count, or SIZE_MAX without memory. */
 static size_t for_each_contact(const ds_sim *sim, double gap, uint32_t *count, size_t *start,
                                uint32_t *other)
 {
     const ds_world *w = &sim->world;
-    const ds_disks *d = &sim->disks;
-    const size_t n = d->n;
-    const int periodic = w->boundary == DS_PERIODIC;
-    ds_grid g;
-    ds_grid_init(&g, w->box, w->box_y, 2.0 * w->radius_max * (1.0 + gap), 4 * n + 16, periodic);
-    ds_grid_bins bins;
-    if (ds_grid_bin(&g, n, d->x, d->y, &bins) != DS_OK)
+    contact_pass c = {&sim->disks, w->radius, gap, count, start, other, 0};
+    ds_pairs p;
+    if (ds_pairs_begin(&p, &w->box, w->n, sim->disks.x, sim->disks.y,
+                       2.0 * w->radius_max * (1.0 + gap), 4 * w->n + 16, 1) != DS_OK)
         return SIZE_MAX;
-    size_t pairs = 0;
-    for (size_t j = 0; j < n; ++j) {
-        size_t around[9];
-        const int cells = ds_grid_neighbours(&g, bins.cell[j] % g.nx, bins.cell[j] / g.nx, around);
-        for (int c = 0; c < cells; ++c)
-            for (size_t s = bins.start[around[c]]; s < bins.start[around[c] + 1]; ++s) {
-                const size_t k = bins.order[s];
-                if (k <= j)
-                    continue;
-                double dx = d->x[k] - d->x[j], dy = d->y[k] - d->y[j];
-                if (periodic) {
-                    dx = ds_nearest(dx, w->box);
-                    dy = ds_nearest(dy, w->box_y);
-                }
-                const double reach = (d->r ? d->r[j] + d->r[k] : 2.0 * w->radius) * (1.0 + gap);
-                if (!(dx * dx + dy * dy < reach * reach))
-                    continue;
-                /* The first pass counts; the second, with start[] made
-                 * from the counts, writes the lists. */
-                if (other) {
-                    other[start[j] + count[j]++] = (uint32_t)k;
-                    other[start[k] + count[k]++] = (uint32_t)j;
-                } else {
-                    ++count[j];
-                    ++count[k];
-                }
-                ++pairs;
-            }
-    }
-    ds_grid_bins_free(&bins);
-    return pairs;
+    ds_pairs_each(&p, 0, in_contact, &c);
+    ds_pairs_end(&p);
+    return c.pairs;
 }
 
-ds_status ds_count_contacts(const ds_sim *sim, double gap, ds_contacts *out)
+ds_status ds_sim_get_contacts(const ds_sim *sim, double gap, ds_contacts *out, ds_error *err)
 {
-    if (!sim || !out || !(gap >= 0.0 && gap < 1.0))
-        return DS_ERR_ARG;
+    ds_error_clear(err);
+    if (!sim || !out)
+        return ds_refuse(err, DS_ERR_ARG, sim ? "out" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "out" : "sim");
+    if (!(gap >= 0.0 && gap < 1.0))
+        return ds_refuse(err, DS_ERR_ARG, "gap", gap, gap < 0.0 ? 0.0 : 1.0,
+                         "gap = %g must be in [0, 1)", gap);
     const size_t n = sim->disks.n;
     contact_lists c;
     c.start = calloc(n + 1, sizeof *c.start);
@@ -131,5 +135,8 @@ ds_status ds_count_contacts(const ds_sim *sim, double gap, ds_contacts *out)
     free(c.count);
     free(c.removed);
     free(c.other);
-    return st;
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)n, NAN,
+                         "n = %zu disks: no memory for their contacts", n);
+    return DS_OK;
 }

@@ -2,10 +2,12 @@
 /* The observables of a simulation: kinetic energy and momentum from the
  * disks, wall pressure and virial pressure from what the integrators
  * tallied since the last reset. */
+#include <math.h>
+
 #include "core/core.h"
 #include "observe/observe.h"
 
-double ds_kinetic_energy(const ds_sim *sim)
+double ds_sim_get_kinetic_energy(const ds_sim *sim)
 {
     if (!sim)
         return 0.0;
@@ -20,7 +22,7 @@ double ds_kinetic_energy(const ds_sim *sim)
     return 0.5 * e;
 }
 
-void ds_momentum(const ds_sim *sim, double *px, double *py)
+void ds_sim_get_momentum(const ds_sim *sim, double *px, double *py)
 {
     double sx = 0.0, sy = 0.0;
     for (size_t k = 0; sim && k < sim->disks.n; ++k) {
@@ -34,8 +36,8 @@ void ds_momentum(const ds_sim *sim, double *px, double *py)
         *py = sy;
 }
 
-uint64_t ds_wall_count(const ds_sim *sim) { return sim ? sim->tally.wall_count : 0; }
-double ds_wall_impulse(const ds_sim *sim) { return sim ? sim->tally.wall_impulse : 0.0; }
+uint64_t ds_sim_get_wall_count(const ds_sim *sim) { return sim ? sim->tally.wall_count : 0; }
+double ds_sim_get_wall_impulse(const ds_sim *sim) { return sim ? sim->tally.wall_impulse : 0.0; }
 
 /* Simulated time since the last reset. */
 static double elapsed(const ds_sim *sim)
@@ -43,43 +45,43 @@ static double elapsed(const ds_sim *sim)
     return (double)(sim->steps - sim->observables_since_step) * sim->world.dt;
 }
 
-double ds_pressure(const ds_sim *sim)
+double ds_sim_get_pressure(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
     const ds_world *w = &sim->world;
-    if (w->boundary == DS_PERIODIC) /* no wall to push on */
-        return ds_virial_pressure(sim);
+    const double perimeter = ds_box_wall_reached(&w->box, w->radius);
+    if (perimeter == 0.0) /* no wall to push on */
+        return ds_sim_get_virial_pressure(sim);
     /* A mixture: the partial pressures of its disks add up, each over the
      * perimeter its own centre reaches (the integrators tally it). */
     if (sim->disks.r || sim->disks.m)
         return sim->tally.wall_reach / elapsed(sim);
-    const double perimeter = 2.0 * (w->box - 2.0 * w->radius) + 2.0 * (w->box_y - 2.0 * w->radius);
     return sim->tally.wall_impulse / (elapsed(sim) * perimeter);
 }
 
-/* The area the centres reach: with walls they stay R from each wall; a
+/* The area the centres reach: along walls they stay R from each; a
  * mixture's disks, each its own R: their mean area. */
 static double centre_area(const ds_sim *sim)
 {
     const ds_world *w = &sim->world;
-    if (w->boundary == DS_PERIODIC)
-        return w->box * w->box_y;
-    if (!sim->disks.r)
-        return (w->box - 2.0 * w->radius) * (w->box_y - 2.0 * w->radius);
+    if (!sim->disks.r || (ds_box_periodic(&w->box, 0) && ds_box_periodic(&w->box, 1)))
+        return ds_box_area_reached(&w->box, w->radius);
     double sum = 0.0;
-    for (size_t k = 0; k < sim->disks.n; ++k) {
-        const double r = sim->disks.r[k];
-        sum += (w->box - 2.0 * r) * (w->box_y - 2.0 * r);
-    }
+    for (size_t k = 0; k < sim->disks.n; ++k)
+        sum += ds_box_area_reached(&w->box, sim->disks.r[k]);
     return sum / (double)sim->disks.n;
 }
 
-double ds_virial_pressure(const ds_sim *sim)
+double ds_sim_get_virial_pressure(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
-    return (ds_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) / centre_area(sim);
+    if (sim->integrator->compressibility) /* P A = Z N kT, as the integrator measures them */
+        return sim->integrator->compressibility(sim) * (double)sim->world.n *
+               ds_sim_get_temperature(sim) / centre_area(sim);
+    return (ds_sim_get_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) /
+           centre_area(sim);
 }
 
 /* The temperature the collisions see. A pair's collision virial is
@@ -93,50 +95,61 @@ double ds_virial_pressure(const ds_sim *sim)
  *   mass carries P^2 / (2 M) that no pair's relative motion sees, and the
  *   internal energy K_int = K - P^2 / (2 M) spreads over 2 (N - 1)
  *   degrees of freedom: <m_i m_j / (m_i + m_j) (v_i - v_j)_x^2> = kT with
- *   kT = K_int / (N - 1). (A single disk: no internal motion, 0.) */
-double ds_temperature(const ds_sim *sim)
+ *   kT = K_int / (N - 1). (A single disk: no internal motion, 0.)
+ * - a channel conserves P_x alone: K - P_x^2 / (2 M) over 2 N - 1
+ *   degrees of freedom, kT = (K - P_x^2 / (2 M)) / (N - 1/2).
+ * An integrator that knows its temperature otherwise (a sampler with no
+ * velocities) says so through its table. */
+double ds_sim_get_temperature(const ds_sim *sim)
 {
     if (!sim || sim->world.n == 0)
         return 0.0;
-    const double n = (double)sim->world.n, kinetic = ds_kinetic_energy(sim);
-    if (sim->world.boundary != DS_PERIODIC)
+    if (sim->integrator->temperature)
+        return sim->integrator->temperature(sim);
+    const double n = (double)sim->world.n, kinetic = ds_sim_get_kinetic_energy(sim);
+    const int px_kept = ds_box_periodic(&sim->world.box, 0);
+    const int py_kept = ds_box_periodic(&sim->world.box, 1);
+    if (!px_kept && !py_kept)
         return kinetic / n;
     if (sim->world.n < 2)
         return 0.0;
     double px = 0.0, py = 0.0, mass = n;
-    ds_momentum(sim, &px, &py);
+    ds_sim_get_momentum(sim, &px, &py);
     if (sim->disks.m) {
         mass = 0.0;
         for (size_t k = 0; k < sim->disks.n; ++k)
             mass += sim->disks.m[k];
     }
-    const double internal = kinetic - (px * px + py * py) / (2.0 * mass);
-    return (internal > 0.0 ? internal : 0.0) / (n - 1.0);
+    const double kept = px_kept && py_kept ? px * px + py * py : px_kept ? px * px : py * py;
+    const double internal = kinetic - kept / (2.0 * mass);
+    return (internal > 0.0 ? internal : 0.0) / (px_kept && py_kept ? n - 1.0 : n - 0.5);
 }
 
 /* The canonical Z. The virial theorem with the collisions' impulses
- * (ds_virial_pressure) gives P A = N kT + W / (2 t), W the sum over the
+ * (ds_sim_get_virial_pressure) gives P A = N kT + W / (2 t), W the sum over the
  * collisions of r_ij . dp_i; in the canonical ensemble at temperature kT
  * the ideal term is N kT (N disks, whatever the boundary: in a periodic
  * box the configurational integral of N disks still has N positions),
- * and W / (2 t) is the canonical one at the kT of ds_temperature (see
+ * and W / (2 t) is the canonical one at the kT of ds_sim_get_temperature (see
  * there). So Z = P A / (N kT) = 1 + W / (2 t N kT), with the area A the
- * centres reach. With walls kT = K / N, and this is ds_virial_pressure A
+ * centres reach. With walls kT = K / N, and this is ds_sim_get_virial_pressure A
  * / K; periodic, it differs from that by the centre of mass's energy and
  * by N / (N - 1) in the collision term: (Z - 1) / N relative at equal
  * momentum zero. Two disks in a periodic box give (1 + A / (A - pi
  * sigma^2)) / 2, the canonical value (tests/test_canonical.c). */
-double ds_compressibility(const ds_sim *sim)
+double ds_sim_get_compressibility_factor(const ds_sim *sim)
 {
     if (!sim || sim->steps == sim->observables_since_step)
         return 0.0;
-    const double kt = ds_temperature(sim);
+    if (sim->integrator->compressibility)
+        return sim->integrator->compressibility(sim);
+    const double kt = ds_sim_get_temperature(sim);
     if (!(kt > 0.0))
         return 1.0; /* no relative motion, no collisions: the ideal gas */
     return 1.0 + sim->tally.virial / (2.0 * elapsed(sim)) / ((double)sim->world.n * kt);
 }
 
-void ds_reset_observables(ds_sim *sim)
+void ds_sim_reset_observables(ds_sim *sim)
 {
     if (!sim)
         return;
@@ -155,10 +168,12 @@ void ds_reset_observables(ds_sim *sim)
  * (zeta the bulk viscosity), so P_xy and (P_xx - P_yy) / 2 both have eta
  * as their Green-Kubo integral, and their time integrals s the Helfand
  * (Einstein) form of it. */
-ds_status ds_stress_integral(const ds_sim *sim, double s[3])
+ds_status ds_sim_get_stress_integral(const ds_sim *sim, double s[3], ds_error *err)
 {
+    ds_error_clear(err);
     if (!sim || !s)
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, sim ? "s" : "sim", NAN, NAN, "%s: NULL",
+                         sim ? "s" : "sim");
     for (int c = 0; c < 3; ++c)
         s[c] = sim->tally.kinetic_integral[c] + sim->tally.stress_virial[c];
     return DS_OK;

@@ -28,20 +28,35 @@ struct ds_transport {
     double *scratch;   /* 4 n: one sample of a sim (xy, then v) */
 };
 
-ds_status ds_transport_create(size_t n, size_t lags, size_t origin_every, ds_transport **out)
+/* The accumulator's memory refused. */
+static ds_status no_memory(ds_error *err, size_t n, size_t lags)
 {
+    return ds_refuse(err, DS_ERR_NOMEM, "n", (double)n, NAN,
+                     "n = %zu disks: no memory for an accumulator of %zu lags", n, lags);
+}
+
+ds_status ds_transport_create(size_t n, size_t lags, size_t origin_every, ds_transport **out,
+                              ds_error *err)
+{
+    ds_error_clear(err);
     if (!out)
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, "out", NAN, NAN, "out: NULL");
     *out = NULL;
-    if (n == 0 || lags < 2 || origin_every == 0)
-        return DS_ERR_ARG;
+    if (n == 0)
+        return ds_refuse(err, DS_ERR_ARG, "n", 0.0, 1.0, "n = 0: there must be a disk");
+    if (lags < 2)
+        return ds_refuse(err, DS_ERR_ARG, "lags", (double)lags, 2.0,
+                         "lags = %zu: there must be 2 at least (lag 0 and one more)", lags);
+    if (origin_every == 0)
+        return ds_refuse(err, DS_ERR_ARG, "origin_every", 0.0, 1.0,
+                         "origin_every = 0: every sample, 1, at most");
     const size_t slots = lags / origin_every + (lags % origin_every != 0);
     /* 4 n doubles per slot and for the scratch sample must fit a size_t. */
     if (n > SIZE_MAX / (4 * sizeof(double)) / (slots + 1) || lags > SIZE_MAX / sizeof(double))
-        return DS_ERR_NOMEM;
+        return no_memory(err, n, lags);
     ds_transport *tr = calloc(1, sizeof *tr);
     if (!tr)
-        return DS_ERR_NOMEM;
+        return no_memory(err, n, lags);
     tr->n = n;
     tr->lags = lags;
     tr->every = origin_every;
@@ -53,7 +68,7 @@ ds_status ds_transport_create(size_t n, size_t lags, size_t origin_every, ds_tra
     tr->origins = calloc(lags, sizeof(uint64_t));
     if (!tr->origin || !tr->scratch || !tr->msd_sum || !tr->vacf_sum || !tr->origins) {
         ds_transport_destroy(tr);
-        return DS_ERR_NOMEM;
+        return no_memory(err, n, lags);
     }
     *out = tr;
     return DS_OK;
@@ -71,7 +86,7 @@ void ds_transport_destroy(ds_transport *tr)
     free(tr);
 }
 
-size_t ds_transport_lags(const ds_transport *tr) { return tr ? tr->lags : 0; }
+size_t ds_transport_get_lags(const ds_transport *tr) { return tr ? tr->lags : 0; }
 
 /* Adds lag `lag` of the origin in block o (x, y, vx, vy of n disks) against
  * the sample (xy, v). */
@@ -91,14 +106,21 @@ static void close_lag(ds_transport *tr, const double *o, size_t lag, const doubl
     ++tr->origins[lag];
 }
 
-ds_status ds_transport_add(ds_transport *tr, const double *xy, const double *v)
+ds_status ds_transport_add(ds_transport *tr, const double *xy, const double *v, ds_error *err)
 {
-    if (!tr || !xy || !v)
-        return DS_ERR_ARG;
+    ds_error_clear(err);
+    if (!tr || !xy || !v) {
+        const char *which = !tr ? "tr" : !xy ? "xy" : "v";
+        return ds_refuse(err, DS_ERR_ARG, which, NAN, NAN, "%s: NULL", which);
+    }
     const size_t n = tr->n;
     for (size_t i = 0; i < 2 * n; ++i)
-        if (!isfinite(xy[i]) || !isfinite(v[i]))
-            return DS_ERR_ARG;
+        if (!isfinite(xy[i]) || !isfinite(v[i])) {
+            ds_error_index(err, i / 2);
+            return ds_refuse(err, DS_ERR_ARG, "disk", isfinite(xy[i]) ? v[i] : xy[i], NAN,
+                             "disk %zu has a %s that is not a finite number", i / 2,
+                             isfinite(xy[i]) ? "velocity" : "position");
+        }
     const uint64_t j = tr->samples, every = tr->every;
     if (j % every == 0) {
         double *o = tr->origin + (size_t)((j / every) % tr->slots) * 4 * n;
@@ -121,25 +143,36 @@ ds_status ds_transport_add(ds_transport *tr, const double *xy, const double *v)
     return DS_OK;
 }
 
-ds_status ds_transport_sample(ds_transport *tr, const ds_sim *sim)
+ds_status ds_transport_sample(ds_transport *tr, const ds_sim *sim, ds_error *err)
 {
-    if (!tr || !sim || ds_count(sim) != tr->n)
-        return DS_ERR_ARG;
+    ds_error_clear(err);
+    if (!tr || !sim)
+        return ds_refuse(err, DS_ERR_ARG, tr ? "sim" : "tr", NAN, NAN, "%s: NULL",
+                         tr ? "sim" : "tr");
+    if (sim->world.n != tr->n)
+        return ds_refuse(err, DS_ERR_ARG, "sim", (double)sim->world.n, (double)tr->n,
+                         "sim has %zu disks, not the accumulator's %zu", sim->world.n, tr->n);
+    /* Unwrapped centres and velocities in generation order, as
+     * ds_sim_get_unwrapped gives them. */
     double *xy = tr->scratch, *v = tr->scratch + 2 * tr->n;
-    ds_get_unwrapped(sim, xy);
     const ds_disks *a = &sim->disks;
+    const double box_x = sim->world.box.side[0], box_y = sim->world.box.side[1];
     for (size_t k = 0; k < a->n; ++k) {
         const size_t i = a->id[k];
+        xy[2 * i] = a->ix ? a->x[k] + (double)a->ix[k] * box_x : a->x[k];
+        xy[2 * i + 1] = a->iy ? a->y[k] + (double)a->iy[k] * box_y : a->y[k];
         v[2 * i] = a->vx[k];
         v[2 * i + 1] = a->vy[k];
     }
-    return ds_transport_add(tr, xy, v);
+    return ds_transport_add(tr, xy, v, err);
 }
 
-ds_status ds_transport_get(const ds_transport *tr, double *msd, double *vacf, uint64_t *origins)
+ds_status ds_transport_get(const ds_transport *tr, double *msd, double *vacf, uint64_t *origins,
+                           ds_error *err)
 {
+    ds_error_clear(err);
     if (!tr)
-        return DS_ERR_ARG;
+        return ds_refuse(err, DS_ERR_ARG, "tr", NAN, NAN, "tr: NULL");
     for (size_t k = 0; k < tr->lags; ++k) {
         const uint64_t c = tr->origins[k];
         if (msd)
@@ -157,12 +190,34 @@ static double mean_at(const double *sum, const uint64_t *count, size_t k)
     return sum[k] / (double)count[k];
 }
 
-ds_status ds_transport_diffusion(const ds_transport *tr, double interval, size_t from, size_t to,
-                                 double *einstein, double *green_kubo)
+/* The window [from, to] of lags refused, or DS_OK. */
+static ds_status check_window(const ds_transport *tr, double interval, size_t from, size_t to,
+                              ds_error *err)
 {
-    if (!tr || !(interval > 0.0 && isfinite(interval)) || from >= to || to >= tr->lags ||
-        tr->origins[to] == 0)
-        return DS_ERR_ARG;
+    if (!tr)
+        return ds_refuse(err, DS_ERR_ARG, "tr", NAN, NAN, "tr: NULL");
+    if (!(interval > 0.0 && isfinite(interval)))
+        return ds_refuse(err, DS_ERR_ARG, "interval", interval, 0.0,
+                         "interval = %g must be finite and > 0", interval);
+    if (from >= to)
+        return ds_refuse(err, DS_ERR_ARG, "from", (double)from, (double)to,
+                         "from = %zu must be below to = %zu", from, to);
+    if (to >= tr->lags)
+        return ds_refuse(err, DS_ERR_ARG, "to", (double)to, (double)tr->lags,
+                         "to = %zu must be below the accumulator's lags, %zu", to, tr->lags);
+    if (tr->origins[to] == 0)
+        return ds_refuse(err, DS_ERR_ARG, "to", (double)to, NAN,
+                         "to = %zu: no origin has reached that lag yet", to);
+    return DS_OK;
+}
+
+ds_status ds_transport_get_diffusion(const ds_transport *tr, double interval, size_t from,
+                                     size_t to, double *einstein, double *green_kubo, ds_error *err)
+{
+    ds_error_clear(err);
+    const ds_status st = check_window(tr, interval, from, to, err);
+    if (st != DS_OK)
+        return st;
     const uint64_t *c = tr->origins; /* origins[k] >= origins[to] > 0 for k <= to */
     const double h = interval;
     if (einstein)

@@ -7,10 +7,10 @@
  * the pairs share no disk and their collisions commute to the bit
  * (docs/library.md, "What the broad phases share"):
  *
- * - DS_SAP (sap.c): the seed's sweep and prune along x, the slots kept in
+ * - DS_BROADPHASE_SAP (sap.c): the seed's sweep and prune along x, the slots kept in
  *   x order by insertion sort (insertion_sort.c);
- * - DS_SAP_STRIPS (strips.c): sweep and prune in horizontal strips;
- * - DS_BRUTE_FORCE (brute_force.c): all pairs, the reference;
+ * - DS_BROADPHASE_STRIPS (strips.c): sweep and prune in horizontal strips;
+ * - DS_BROADPHASE_BRUTE (brute_force.c): all pairs, the reference;
  * - in a periodic box the sweeps are followed by the seam pass (seam.c),
  *   which finds the pairs that touch across the box's edges.
  *
@@ -20,7 +20,7 @@
 
 #include "core/core.h"
 
-/* The vector instructions DS_SAP's block scan and the insertion sort's
+/* The vector instructions DS_BROADPHASE_SAP's block scan and the insertion sort's
  * search for out-of-order disks use. All give the same result; the time
  * step picks the widest this CPU runs (ds_bp_widest_scan), and the tests
  * force each one the CPU has. */
@@ -37,12 +37,11 @@ typedef struct ds_seam ds_seam;
 
 /* A broad phase and its state. */
 typedef struct ds_bp {
-    ds_broadphase kind; /* DS_SAP, DS_SAP_STRIPS or DS_BRUTE_FORCE */
+    ds_broadphase kind; /* DS_BROADPHASE_SAP, DS_BROADPHASE_STRIPS or DS_BROADPHASE_BRUTE */
     ds_scan scan;
     double diameter; /* centres closer than this overlap */
-    double box, box_y;
-    int periodic;
-    ds_strips *strips; /* DS_SAP_STRIPS only */
+    ds_box box;
+    ds_strips *strips; /* DS_BROADPHASE_STRIPS only */
     ds_seam *seam;     /* a sweep in a periodic box only */
 } ds_bp;
 
@@ -57,8 +56,8 @@ void ds_bp_destroy(ds_bp *bp);
 /* A checkpoint's part of the broad phase (the strips' slots), and the
  * broad phase of a loaded state: the slots are as they were saved, so
  * nothing is sorted or laid out again. */
-void ds_bp_save(const ds_bp *bp, ds_writer *w);
-ds_status ds_bp_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_state_error *err);
+void ds_bp_save(const ds_bp *bp, ds_state_writer *w);
+ds_status ds_bp_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_error *err);
 /* Bytes broad phase w->broadphase allocates for world w. */
 size_t ds_bp_bytes(const ds_world *w);
 
@@ -79,14 +78,13 @@ ds_status ds_bp_sort(ds_disks *d, ds_scan scan);
 uint64_t ds_sap_find_pairs(const ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);
 uint64_t ds_brute_force_find_pairs(const ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);
 
-/* DS_SAP_STRIPS memory, at most, per disk: a second x, y, vx, vy, id (swapped
+/* DS_BROADPHASE_STRIPS memory, at most, per disk: a second x, y, vx, vy, id (swapped
  * with the first after each merge), three lists of strip crossers, three
  * per-strip offset arrays (never more strips than disks). */
 #define DS_STRIPS_BYTES_PER_DISK (DS_DISKS_MOVING_BYTES + 6 * sizeof(uint32_t))
 ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d);
-void ds_strips_save(const ds_bp *bp, ds_writer *w);
-ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r,
-                         ds_state_error *err);
+void ds_strips_save(const ds_bp *bp, ds_state_writer *w);
+ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_error *err);
 void ds_strips_destroy(ds_bp *bp);
 uint64_t ds_strips_find_pairs(ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx);
 

@@ -3,7 +3,7 @@
  * a wall turns, or in a periodic box wraps to the opposite edge. */
 #include <math.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/collide.h"
 #include "timestep/timestep.h"
 
@@ -18,18 +18,18 @@ static void move_and_reflect_mixture(ds_disks *d, const ds_world *w, ds_tally *t
     double impulse = 0.0, reach = 0.0;
     for (size_t k = 0; k < n; ++k) {
         const double r = d->r ? d->r[k] : w->radius, m = d->m ? d->m[k] : 1.0;
-        const double perimeter = 2.0 * (w->box - 2.0 * r) + 2.0 * (w->box_y - 2.0 * r);
+        const double perimeter = ds_box_wall_reached(&w->box, r);
         const double px = d->x[k] + d->vx[k] * dt, py = d->y[k] + d->vy[k] * dt;
         d->x[k] = px;
         d->y[k] = py;
-        if ((px < r && d->vx[k] < 0.0) || (px > w->box - r && d->vx[k] > 0.0)) {
+        if ((px < r && d->vx[k] < 0.0) || (px > w->box.side[0] - r && d->vx[k] > 0.0)) {
             ds_tally_wall_turn(t, m, d->vx[k], d->vy[k]);
             impulse += 2.0 * m * fabs(d->vx[k]);
             reach += 2.0 * m * fabs(d->vx[k]) / perimeter;
             d->vx[k] = -d->vx[k];
             ++hits;
         }
-        if ((py < r && d->vy[k] < 0.0) || (py > w->box_y - r && d->vy[k] > 0.0)) {
+        if ((py < r && d->vy[k] < 0.0) || (py > w->box.side[1] - r && d->vy[k] > 0.0)) {
             ds_tally_wall_turn(t, m, d->vx[k], d->vy[k]);
             impulse += 2.0 * m * fabs(d->vy[k]);
             reach += 2.0 * m * fabs(d->vy[k]) / perimeter;
@@ -42,7 +42,7 @@ static void move_and_reflect_mixture(ds_disks *d, const ds_world *w, ds_tally *t
     t->wall_reach += reach;
 }
 
-void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
+static void move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
 {
     if (d->r || d->m) {
         move_and_reflect_mixture(d, w, t);
@@ -50,7 +50,7 @@ void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
     }
     const size_t n = d->n;
     const double dt = w->dt, lo = w->radius;
-    const double hi_x = w->box - w->radius, hi_y = w->box_y - w->radius;
+    const double hi_x = w->box.side[0] - w->radius, hi_y = w->box.side[1] - w->radius;
     double *restrict x = d->x, *restrict y = d->y;
     double *restrict vx = d->vx, *restrict vy = d->vy;
     uint64_t hits = 0;
@@ -80,10 +80,10 @@ void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t)
     t->wall_impulse += impulse;
 }
 
-void ds_move_and_wrap(ds_disks *d, const ds_world *w)
+static void move_and_wrap(ds_disks *d, const ds_world *w)
 {
     const size_t n = d->n;
-    const double dt = w->dt, box_x = w->box, box_y = w->box_y;
+    const double dt = w->dt, box_x = w->box.side[0], box_y = w->box.side[1];
     double *restrict x = d->x, *restrict y = d->y;
     const double *restrict vx = d->vx, *restrict vy = d->vy;
     if (!d->ix) {
@@ -98,4 +98,49 @@ void ds_move_and_wrap(ds_disks *d, const ds_world *w)
         x[k] = ds_wrap_counting(x[k] + vx[k] * dt, box_x, &ix[k]);
         y[k] = ds_wrap_counting(y[k] + vy[k] * dt, box_y, &iy[k]);
     }
+}
+
+/* A box with walls along one axis and periodic along the other (a
+ * channel): each axis as its edge says, a disk's own radius at the walls,
+ * its crossings counted. */
+static void move_mixed(ds_disks *d, const ds_world *w, ds_tally *t)
+{
+    const ds_box *box = &w->box;
+    const double dt = w->dt;
+    uint64_t hits = 0;
+    double impulse = 0.0, reach = 0.0;
+    for (size_t k = 0; k < d->n; ++k) {
+        const double r = d->r ? d->r[k] : w->radius, m = d->m ? d->m[k] : 1.0;
+        double p[2] = {d->x[k] + d->vx[k] * dt, d->y[k] + d->vy[k] * dt};
+        double *v[2] = {&d->vx[k], &d->vy[k]};
+        int32_t *image[2] = {d->ix ? &d->ix[k] : NULL, d->iy ? &d->iy[k] : NULL};
+        for (int a = 0; a < 2; ++a) {
+            if (ds_box_periodic(box, a)) {
+                p[a] = image[a] ? ds_wrap_counting(p[a], box->side[a], image[a])
+                                : ds_wrap(p[a], box->side[a]);
+            } else if ((p[a] < r && *v[a] < 0.0) || (p[a] > box->side[a] - r && *v[a] > 0.0)) {
+                ds_tally_wall_turn(t, m, d->vx[k], d->vy[k]);
+                impulse += 2.0 * m * fabs(*v[a]);
+                reach += 2.0 * m * fabs(*v[a]) / ds_box_wall_reached(box, r);
+                *v[a] = -*v[a];
+                ++hits;
+            }
+        }
+        d->x[k] = p[0];
+        d->y[k] = p[1];
+    }
+    t->wall_count += hits;
+    t->wall_impulse += impulse;
+    t->wall_reach += reach;
+}
+
+void ds_move(ds_disks *d, const ds_world *w, ds_tally *t)
+{
+    const int px = ds_box_periodic(&w->box, 0), py = ds_box_periodic(&w->box, 1);
+    if (px && py)
+        move_and_wrap(d, w);
+    else if (!px && !py)
+        move_and_reflect(d, w, t);
+    else
+        move_mixed(d, w, t);
 }

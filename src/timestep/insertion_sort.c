@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The insertion sort that keeps the slots in x order between steps, for
- * DS_SAP (the whole range) and DS_SAP_STRIPS (one strip at a time). The
+ * DS_BROADPHASE_SAP (the whole range) and DS_BROADPHASE_STRIPS (one strip at a time). The
  * order barely changes from one step to the next, so the sort is nearly
  * linear: it spends its time looking for the few disks out of order. */
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_SAP, the seed's sweep and prune: the slots are kept sorted by x with
+/* DS_BROADPHASE_SAP, the seed's sweep and prune: the slots are kept sorted by x with
  * insertion sort (nearly linear, since the order barely changes between
  * steps) and a pair is tested only while their x distance is below 2R.
  * In a periodic box the seam pass (seam.c) follows, for the pairs that

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The pairs across the seams of a periodic box, for the sweeps.
  *
- * DS_SAP and DS_SAP_STRIPS sweep the box as if it had walls: they find
+ * DS_BROADPHASE_SAP and DS_BROADPHASE_STRIPS sweep the box as if it had walls: they find
  * every pair closer than 2R as the coordinates stand. In a periodic box
  * the pairs they miss are those that touch through the boundary, whose
  * nearest image lies one box away along x, along y, or both. Such a pair
@@ -14,14 +14,15 @@
  * - the y seam: disks near y = 0 against those near y = box_y, bucketed by
  *   x, for the pairs that do not cross the x seam (those the x seam has
  *   reported).
- * A pair crosses a seam exactly when ds_nearest shifts its separation
+ * A channel (periodic along x only) has the x seam alone, with no image
+ * along y. A pair crosses a seam exactly when ds_nearest shifts its separation
  * along that axis, and since the box is more than 4R wide a pair within
  * 2R as the coordinates stand crosses none; so every pair is reported
  * once, by the sweep or by exactly one of the two seams. */
 #include <math.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/grid.h"
 #include "timestep/broad_phase.h"
 
@@ -63,13 +64,19 @@ void ds_seam_destroy(ds_bp *bp)
 
 size_t ds_seam_bytes(size_t n) { return sizeof(ds_seam) + (4 * n + 1) * sizeof(uint32_t); }
 
+/* How a seam treats the axis along it: periodic, its pairs that also
+ * cross the other seam its own (the x seam of a periodic box: the
+ * search wraps) or the other seam's (the y seam: they are skipped); or
+ * walls (a channel's x seam: no image along it). */
+enum along { ALONG_WRAP, ALONG_SKIP, ALONG_WALLS };
+
 /* One seam. u is the coordinate across it (side: its period), w the one
- * along it (period w_side): pairs of a disk within 2R of u = 0 and one
+ * along it (length w_side): pairs of a disk within 2R of u = 0 and one
  * within 2R of u = side, nearer through the seam, with the high disks
- * bucketed by w. Along w the search wraps only for the x seam
- * (wrap_along); the y seam skips pairs that cross the x seam. */
+ * bucketed by w. */
 static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const double *w,
-                         double side, double w_side, int wrap_along, ds_pair_fn on_pair, void *ctx)
+                         double side, double w_side, enum along along, ds_pair_fn on_pair,
+                         void *ctx)
 {
     ds_seam *s = bp->seam;
     const size_t n = d->n;
@@ -87,7 +94,7 @@ static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const do
     /* Cells at least 2R long along the seam, no more than disks; w is in
      * [0, w_side), so the column needs no wrap. */
     ds_grid g;
-    ds_grid_init_line(&g, w_side, diameter, n, wrap_along);
+    ds_grid_init_line(&g, w_side, diameter, n, along == ALONG_WRAP);
     const size_t cells = g.nx;
     for (size_t c = 0; c <= cells; ++c)
         s->start[c] = 0;
@@ -115,9 +122,9 @@ static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const do
                 const uint32_t b = s->sorted[m];
                 const double du = u[b] - u[a], dw = w[b] - w[a];
                 ++tested;
-                if (!(du > 0.5 * side) || (!wrap_along && fabs(dw) > 0.5 * w_side))
+                if (!(du > 0.5 * side) || (along == ALONG_SKIP && fabs(dw) > 0.5 * w_side))
                     continue;
-                const double ru = du - side, rw = ds_nearest(dw, w_side);
+                const double ru = du - side, rw = along == ALONG_WALLS ? dw : ds_nearest(dw, w_side);
                 if (ru * ru + rw * rw < d2max)
                     on_pair(d, a, b, ctx);
             }
@@ -128,6 +135,14 @@ static uint64_t one_seam(const ds_bp *bp, ds_disks *d, const double *u, const do
 
 uint64_t ds_seam_find_pairs(const ds_bp *bp, ds_disks *d, ds_pair_fn on_pair, void *ctx)
 {
-    return one_seam(bp, d, d->x, d->y, bp->box, bp->box_y, 1, on_pair, ctx) +
-           one_seam(bp, d, d->y, d->x, bp->box_y, bp->box, 0, on_pair, ctx);
+    const ds_box *b = &bp->box;
+    const int px = ds_box_periodic(b, 0), py = ds_box_periodic(b, 1);
+    uint64_t tested = 0;
+    if (px)
+        tested += one_seam(bp, d, d->x, d->y, b->side[0], b->side[1],
+                           py ? ALONG_WRAP : ALONG_WALLS, on_pair, ctx);
+    if (py)
+        tested += one_seam(bp, d, d->y, d->x, b->side[1], b->side[0],
+                           px ? ALONG_SKIP : ALONG_WALLS, on_pair, ctx);
+    return tested;
 }

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_SAP_STRIPS: sweep and prune in horizontal strips.
+/* DS_BROADPHASE_STRIPS: sweep and prune in horizontal strips.
  *
  * Plain SAP tests every pair closer than 2R in x, wherever they are in y:
  * at fixed area fraction that is ~ n 2R / box candidates per disk, which
@@ -32,14 +32,6 @@
 #include "timestep/broad_phase.h"
 #include "timestep/sweep_block.h"
 
-/* The per-disk helpers of the hot loops must inline; gcc's size heuristic
- * otherwise keeps them out of line at their two call sites. */
-#if defined(__GNUC__)
-#define ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define ALWAYS_INLINE inline
-#endif
-
 /* Strip height as a multiple of 2R. Taller strips mean fewer crossings
  * (each step with any crossing costs a merge pass over all disks) but
  * more candidates per disk (~6 n R h / box^2, cheap to reject). Measured
@@ -67,7 +59,7 @@ struct ds_strips {
  * box * DBL_EPSILON; the slack keeps h - 2m above 2R despite it. */
 static void strips_geometry(const ds_world *w, size_t *count, double *height, double *margin)
 {
-    const double diameter = 2.0 * w->radius_max, box = w->box_y; /* strips cut the height */
+    const double diameter = 2.0 * w->radius_max, box = w->box.side[1]; /* strips cut the height */
     double s = floor(box / (STRIP_HEIGHT_DIAMETERS * diameter));
     /* No more strips than disks: empty strips cost a loop iteration each. */
     if (s > (double)w->n)
@@ -157,8 +149,8 @@ static void bucket_movers(const ds_disks *d, struct ds_strips *st, size_t nm)
  * mover[], which is in slot order. Returns the end of the strip. Compiled
  * twice (mixture constant): with one kind of disk the copy has no branch
  * on a mixture's arrays (3.5% of a step at 10^5 disks with it). */
-static ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
-                                       size_t nm, size_t *mp, int mixture)
+static DS_ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t t, size_t w,
+                                          size_t nm, size_t *mp, int mixture)
 {
     const ds_disks *prev = &st->spare;
     const double *restrict x0 = prev->x;
@@ -192,8 +184,8 @@ static ALWAYS_INLINE size_t merge_into(ds_disks *d, struct ds_strips *st, size_t
 static size_t merge_strip(ds_disks *d, struct ds_strips *st, size_t t, size_t w, size_t nm,
                           size_t *mp)
 {
-    return d->r || d->m || d->ix ? merge_into(d, st, t, w, nm, mp, 1)
-                                 : merge_into(d, st, t, w, nm, mp, 0);
+    return ds_disks_columns(d) != DS_DISKS_EVERY_COLUMN ? merge_into(d, st, t, w, nm, mp, 1)
+                                                        : merge_into(d, st, t, w, nm, mp, 0);
 }
 
 /* Lists the disks outside their strip's band, with the strip their
@@ -248,7 +240,7 @@ static void initial_layout(ds_disks *d, const ds_world *world, struct ds_strips 
         if (len == 0)
             continue;
         uint32_t *cell_start = count + lo;
-        const double cells_per_unit = (double)len / world->box;
+        const double cells_per_unit = (double)len / world->box.side[0];
         memset(cell_start, 0, (len + 1) * sizeof *cell_start);
         for (size_t m = lo; m < lo + len; ++m) {
             double c = floor(x[st->incoming[m]] * cells_per_unit);
@@ -288,7 +280,7 @@ static ds_status strips_alloc(ds_bp *bp, const ds_world *w, const ds_disks *d)
     st->mover_strip = malloc(n * sizeof *st->mover_strip);
     st->incoming = malloc(n * sizeof *st->incoming);
     if (!st->start || !st->next_start || !st->bucket_start || !st->mover || !st->mover_strip ||
-        !st->incoming || ds_disks_alloc_spare(&st->spare, d) != DS_OK) {
+        !st->incoming || ds_disks_alloc_like(&st->spare, d) != DS_OK) {
         ds_strips_destroy(bp);
         return DS_ERR_NOMEM;
     }
@@ -309,7 +301,7 @@ ds_status ds_strips_create(ds_bp *bp, const ds_world *w, ds_disks *d)
 
 /* Which slots each strip holds is history (a disk changes strip only past
  * a margin): a checkpoint keeps it. */
-void ds_strips_save(const ds_bp *bp, ds_writer *w)
+void ds_strips_save(const ds_bp *bp, ds_state_writer *w)
 {
     const struct ds_strips *st = bp->strips;
     ds_put_u64(w, st->count);
@@ -317,8 +309,7 @@ void ds_strips_save(const ds_bp *bp, ds_writer *w)
         ds_put_u32(w, st->start[t]);
 }
 
-ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r,
-                         ds_state_error *err)
+ds_status ds_strips_load(ds_bp *bp, const ds_world *w, ds_disks *d, ds_reader *r, ds_error *err)
 {
     ds_status status = strips_alloc(bp, w, d);
     if (status != DS_OK)
@@ -358,9 +349,9 @@ void ds_strips_destroy(ds_bp *bp)
  * x < xlim (a prefix: the range is sorted by x); returns where that prefix
  * ends. A block of four first, branch-free (see sweep_block.h); the loop
  * only for longer windows, or near the end of the arrays. */
-static ALWAYS_INLINE size_t sweep_block(ds_disks *d, double diameter, size_t i, size_t j,
-                                        size_t end, double xlim, double d2max, ds_pair_fn on_pair,
-                                        void *ctx)
+static DS_ALWAYS_INLINE size_t sweep_block(ds_disks *d, double diameter, size_t i, size_t j,
+                                           size_t end, double xlim, double d2max,
+                                           ds_pair_fn on_pair, void *ctx)
 {
     const double *x = d->x, *y = d->y;
     if (j + 3 > d->n) /* the block would read past the sentinel */

@@ -9,7 +9,8 @@
  * a whole block, each result masked by x < xlim, needs a branch only when
  * the block is entirely inside the window or a pair overlaps (both rare).
  * Same arithmetic as the scalar test dx*dx + dy*dy < d2max (separate
- * multiply and add, no fused multiply-add), so the same pairs to the bit. */
+ * multiply and add, no fused multiply-add), so the same pairs to the bit;
+ * two lanes at a time (core/lanes.h). */
 #ifndef DS_SWEEP_BLOCK_H
 #define DS_SWEEP_BLOCK_H
 
@@ -17,9 +18,7 @@
 
 #include "timestep/broad_phase.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+#include "core/lanes.h"
 
 /* Tests candidates j .. j+3 (which must be readable) against the disk at
  * (xi, yi): bit k of *inside says x[j+k] < xlim, bit k of the result says
@@ -27,51 +26,23 @@
 static inline unsigned ds_test_four(const double *x, const double *y, size_t j, double xi,
                                     double yi, double xlim, double d2max, unsigned *inside)
 {
-#if defined(__SSE2__)
-    const __m128d vxi = _mm_set1_pd(xi), vyi = _mm_set1_pd(yi);
-    const __m128d lim = _mm_set1_pd(xlim), d2 = _mm_set1_pd(d2max);
-    const __m128d xa = _mm_loadu_pd(x + j), xb = _mm_loadu_pd(x + j + 2);
-    const __m128d dxa = _mm_sub_pd(xa, vxi), dxb = _mm_sub_pd(xb, vxi);
-    const __m128d dya = _mm_sub_pd(_mm_loadu_pd(y + j), vyi);
-    const __m128d dyb = _mm_sub_pd(_mm_loadu_pd(y + j + 2), vyi);
-    const __m128d closea = _mm_cmplt_pd(_mm_add_pd(_mm_mul_pd(dxa, dxa), _mm_mul_pd(dya, dya)), d2);
-    const __m128d closeb = _mm_cmplt_pd(_mm_add_pd(_mm_mul_pd(dxb, dxb), _mm_mul_pd(dyb, dyb)), d2);
-    /* Each 64-bit mask lane is all ones or all zeros: one 32-bit half of
-     * each packs four lanes into one movemask. */
-    const __m128 in4 =
-        _mm_shuffle_ps(_mm_castpd_ps(_mm_cmplt_pd(xa, lim)), _mm_castpd_ps(_mm_cmplt_pd(xb, lim)),
-                       _MM_SHUFFLE(2, 0, 2, 0));
-    const __m128 close4 =
-        _mm_shuffle_ps(_mm_castpd_ps(closea), _mm_castpd_ps(closeb), _MM_SHUFFLE(2, 0, 2, 0));
-    *inside = (unsigned)_mm_movemask_ps(in4);
-    return (unsigned)_mm_movemask_ps(close4);
-#else
-    unsigned in = 0, close = 0;
-    for (unsigned k = 0; k < 4; ++k) {
-        const double dx = x[j + k] - xi, dy = y[j + k] - yi;
-        in |= (unsigned)(x[j + k] < xlim) << k;
-        close |= (unsigned)(dx * dx + dy * dy < d2max) << k;
-    }
-    *inside = in;
-    return close;
-#endif
+    const ds_x2 vxi = ds_x2_set1(xi), vyi = ds_x2_set1(yi);
+    const ds_x2 lim = ds_x2_set1(xlim), d2 = ds_x2_set1(d2max);
+    const ds_x2 xa = ds_x2_load(x + j), xb = ds_x2_load(x + j + 2);
+    const ds_x2 dxa = ds_x2_sub(xa, vxi), dxb = ds_x2_sub(xb, vxi);
+    const ds_x2 dya = ds_x2_sub(ds_x2_load(y + j), vyi);
+    const ds_x2 dyb = ds_x2_sub(ds_x2_load(y + j + 2), vyi);
+    const ds_x2 closea = ds_x2_lt(ds_x2_add(ds_x2_mul(dxa, dxa), ds_x2_mul(dya, dya)), d2);
+    const ds_x2 closeb = ds_x2_lt(ds_x2_add(ds_x2_mul(dxb, dxb), ds_x2_mul(dyb, dyb)), d2);
+    *inside = ds_x2_bits_pair(ds_x2_lt(xa, lim), ds_x2_lt(xb, lim));
+    return ds_x2_bits_pair(closea, closeb);
 }
 
 /* Bit k says x[j+k] <= v, for k < 4 (x[j .. j+3] must be readable). */
 static inline unsigned ds_at_most_four(const double *x, size_t j, double v)
 {
-#if defined(__SSE2__)
-    const __m128d vv = _mm_set1_pd(v);
-    const __m128 le = _mm_shuffle_ps(_mm_castpd_ps(_mm_cmple_pd(_mm_loadu_pd(x + j), vv)),
-                                     _mm_castpd_ps(_mm_cmple_pd(_mm_loadu_pd(x + j + 2), vv)),
-                                     _MM_SHUFFLE(2, 0, 2, 0));
-    return (unsigned)_mm_movemask_ps(le);
-#else
-    unsigned m = 0;
-    for (unsigned k = 0; k < 4; ++k)
-        m |= (unsigned)(x[j + k] <= v) << k;
-    return m;
-#endif
+    const ds_x2 vv = ds_x2_set1(v);
+    return ds_x2_bits_pair(ds_x2_le(ds_x2_load(x + j), vv), ds_x2_le(ds_x2_load(x + j + 2), vv));
 }
 
 /* The bits of a block of four that lie before `end`, for a block starting

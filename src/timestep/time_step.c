@@ -1,13 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* DS_TIME_STEP: the seed's fixed time step. Each step moves every disk by
+/* DS_INTEGRATOR_TIME_STEP: the seed's fixed time step. Each step moves every disk by
  * v dt and turns those past a wall, or wraps them in a periodic box
  * (free_flight.c), then the broad phase (broad_phase.c) finds the
  * overlapping pairs and the approaching ones exchange their normal
  * velocities. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "core/boundary.h"
+#include "core/box.h"
 #include "core/collide.h"
 #include "timestep/broad_phase.h"
 #include "timestep/timestep.h"
@@ -16,7 +17,7 @@
  * sides for the nearest image. */
 typedef struct pair_context {
     ds_tally *tally;
-    double box, box_y;
+    const ds_box *box;
 } pair_context;
 
 /* The response to a pair whose separation from a to b is (dx, dy). A
@@ -52,36 +53,35 @@ static void resolve_pair(ds_disks *d, size_t a, size_t b, void *ctx)
 static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
 {
     const pair_context *c = ctx;
-    resolve(d, a, b, ds_nearest(d->x[b] - d->x[a], c->box), ds_nearest(d->y[b] - d->y[a], c->box_y),
-            c->tally);
+    double dx = d->x[b] - d->x[a], dy = d->y[b] - d->y[a];
+    ds_box_nearest(c->box, &dx, &dy);
+    resolve(d, a, b, dx, dy, c->tally);
 }
 
-static void run(ds_sim *sim, uint64_t steps)
+static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
+    (void)err; /* a step needs no memory */
     ds_bp *bp = sim->state;
     const ds_world *w = &sim->world;
-    const int periodic = w->boundary == DS_PERIODIC;
-    const ds_pair_fn on_pair = periodic ? resolve_pair_periodic : resolve_pair;
-    pair_context ctx = {&sim->tally, w->box, w->box_y};
+    const ds_pair_fn on_pair = ds_box_any_periodic(&w->box) ? resolve_pair_periodic : resolve_pair;
+    pair_context ctx = {&sim->tally, &w->box};
     for (uint64_t s = 0; s < steps; ++s) {
         /* The step's flight is at the velocities its start has. */
         ds_tally_flight(&sim->tally, w->dt);
-        if (periodic)
-            ds_move_and_wrap(&sim->disks, w);
-        else
-            ds_move_and_reflect(&sim->disks, w, &sim->tally);
+        ds_move(&sim->disks, w, &sim->tally);
         ds_timer_start(&sim->collision_timer);
         sim->tally.pairs_tested += ds_bp_find_pairs(bp, &sim->disks, on_pair, &ctx);
         ds_timer_stop(&sim->collision_timer);
         ++sim->steps;
     }
     ds_disks_rebuild_slots(&sim->disks);
+    return DS_OK;
 }
 
 /* The time step has the sweeps and brute force. */
 static int fits(ds_broadphase bp)
 {
-    return bp == DS_SAP || bp == DS_SAP_STRIPS || bp == DS_BRUTE_FORCE;
+    return bp == DS_BROADPHASE_SAP || bp == DS_BROADPHASE_STRIPS || bp == DS_BROADPHASE_BRUTE;
 }
 
 static ds_broadphase choose(const ds_world *w)
@@ -92,14 +92,14 @@ static ds_broadphase choose(const ds_world *w)
      * 4 to 11, best of 5): SAP is 3.6x faster at 4 (the seed case) and
      * 1.1-1.2x faster at 8 at N <= 2000; they break even between 8 and 9;
      * strips are 1.15-1.35x faster at 10. */
-    const double per_disk = (double)w->n * 2.0 * w->radius / w->box;
-    return per_disk > 8.5 ? DS_SAP_STRIPS : DS_SAP;
+    const double per_disk = (double)w->n * 2.0 * w->radius / w->box.side[0];
+    return per_disk > 8.5 ? DS_BROADPHASE_STRIPS : DS_BROADPHASE_SAP;
 }
 
 /* A head-on pair at 3x the initial speed (which the Rayleigh tail exceeds
  * with probability e^-9) can pass through each other between two steps
  * when 2 * speed_max * dt > 4 R (the smallest R of a mixture). */
-static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *err)
+static ds_status check(const ds_world *w, unsigned *warnings, ds_error *err)
 {
     if (2.0 * 3.0 * w->speed * w->dt > 4.0 * w->radius_min) {
         if (warnings)
@@ -115,13 +115,17 @@ static ds_status check(const ds_world *w, unsigned *warnings, ds_params_error *e
 
 static size_t bytes(const ds_world *w) { return sizeof(ds_bp) + ds_bp_bytes(w); }
 
-static ds_status create(ds_sim *sim)
+static ds_status create(ds_sim *sim, ds_error *err)
 {
     ds_bp *bp = calloc(1, sizeof *bp);
-    if (!bp)
-        return DS_ERR_NOMEM;
     sim->state = bp;
-    return ds_bp_create(bp, sim->world.broadphase, &sim->world, &sim->disks);
+    const ds_status st =
+        bp ? ds_bp_create(bp, sim->world.broadphase, &sim->world, &sim->disks) : DS_ERR_NOMEM;
+    if (st != DS_OK)
+        return ds_refuse(err, st, "n", (double)sim->world.n, NAN,
+                         "n = %zu disks: no memory for the %s broad phase", sim->world.n,
+                         ds_broadphase_name(sim->world.broadphase));
+    return DS_OK;
 }
 
 static void destroy(ds_sim *sim)
@@ -144,10 +148,13 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     return DS_OK;
 }
 
-static void save(const ds_sim *sim, ds_writer *w) { ds_bp_save(sim->state, w); }
+static void save(const ds_sim *sim, ds_state_writer *w) { ds_bp_save(sim->state, w); }
 
-static ds_status load(ds_sim *sim, ds_reader *r, ds_state_error *err)
+static ds_status load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
+                      ds_error *err)
 {
+    (void)version; /* the same part in every version */
+    (void)legacy;
     ds_bp *bp = calloc(1, sizeof *bp);
     if (!bp)
         return ds_state_refuse(err, DS_ERR_NOMEM, "no memory for the broad phase");
@@ -181,7 +188,7 @@ const ds_integrator_ops ds_time_step_ops = {
     .set = set,
     .save = save,
     .load = load,
-    .set_growth = NULL, /* radii grow only with exact contact times */
     .scale_velocities = scale_velocities,
-    .growth_state = NULL,
+    /* No services to protocols yet: radii grow only with exact contact
+     * times, so growth refuses the time step. */
 };

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The time step integrator (DS_TIME_STEP), the seed's: each step moves
+/* The time step integrator (DS_INTEGRATOR_TIME_STEP), the seed's: each step moves
  * every disk by v dt, turns those past a wall or wraps them in a periodic
  * box (free_flight.c), then the broad phase (broad_phase.h) finds the
  * overlapping pairs and the approaching ones exchange their normal
@@ -11,10 +11,10 @@
 
 extern const ds_integrator_ops ds_time_step_ops;
 
-/* Free flight for one step of dt (free_flight.c): walls reflect a disk
- * outside its band and moving further out, tallying the impulse; a
- * periodic box wraps it. */
-void ds_move_and_reflect(ds_disks *d, const ds_world *w, ds_tally *t);
-void ds_move_and_wrap(ds_disks *d, const ds_world *w);
+/* Free flight for one step of dt (free_flight.c): along an axis with
+ * walls a disk outside its band and moving further out turns, its
+ * impulse tallied; along a periodic axis it wraps, its crossings
+ * counted. */
+void ds_move(ds_disks *d, const ds_world *w, ds_tally *t);
 
 #endif

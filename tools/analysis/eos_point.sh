@@ -94,7 +94,7 @@ case ${1:-} in
     exit 0
     ;;
 --memory)
-    # What the point's simulation allocates (ds_memory_needed, through
+    # What the point's simulation allocates (ds_params_memory, through
     # tools/pressure --memory) and a quarter more, plus 64 MB for the
     # program itself, the shell and awk: the peak resident size measured
     # was the estimate plus 2 to 6 MB (docs/sweeps.md).

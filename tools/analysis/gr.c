@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* gr: the radial distribution function g(r) of one frame file. Public API
- * only (the frame is read with ds_read_frame).
+ * only (the frame is read with ds_frame_read).
  *
  *   gr [--box L] [--box-y H] [--periodic] [--dr X] [--rmax X] FRAME.txt
  *
@@ -106,13 +106,12 @@ int main(int argc, char **argv)
             rmax);
 
     ds_frame f;
-    ds_frame_error fe;
-    ds_status st = ds_read_frame(path, &f, &fe);
+    ds_error fe;
+    ds_status st = ds_frame_read(path, &f, &fe);
     if (st != DS_OK) {
         char where[160];
-        snprintf(where, sizeof where, "%s:%zu", path, fe.line);
-        die(EXIT_RUN, "%s: %s", fe.line ? where : path,
-            fe.message[0] ? fe.message : ds_status_str(st));
+        snprintf(where, sizeof where, "%s:%zu", path, fe.index);
+        die(EXIT_RUN, "%s: %s", fe.index ? where : path, fe.message);
     }
     if (f.count < 2)
         die(EXIT_RUN, "%s: g(r) needs at least two disks", path);
@@ -149,11 +148,12 @@ int main(int argc, char **argv)
         xy[j] = f.disks[j].x;
         xy[f.count + j] = f.disks[j].y;
     }
-    st = ds_pair_histogram(f.count, xy, xy + f.count, box, box_y, periodic ? DS_PERIODIC : DS_WALLS,
-                           dr, nbins, hist);
+    st = ds_pair_histogram(f.count, xy, xy + f.count, box, box_y,
+                           periodic ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_WALLS, dr, nbins, hist,
+                           &fe);
     if (st != DS_OK)
         die(st == DS_ERR_NOMEM ? EXIT_RUN : EXIT_USAGE, "cannot count the pairs of %s: %s", path,
-            ds_status_str(st));
+            fe.message);
     free(xy);
 
     const double n = (double)f.count;

@@ -11,9 +11,9 @@
  * unless --box-y): R = sqrt(ETA 1000 H / (N pi)). After T time units of relaxation (default
  * 5) it runs B blocks (default 20) of T time units each (default 1),
  * taking Z in each block from the collision virial, the canonical Z of
- * ds_compressibility (kT = K / N with walls, K_int / (N - 1) in a
+ * ds_sim_get_compressibility_factor (kT = K / N with walls, K_int / (N - 1) in a
  * periodic box, where the momentum is conserved: the Z of Monte Carlo at
- * the same N), and with walls also from the walls (ds_pressure A / K),
+ * the same N), and with walls also from the walls (ds_sim_get_pressure A / K),
  * both with A the area the centres reach. Z is the mean over the blocks; its error is the
  * standard error of that mean, sqrt(var / (B - 1)), which is honest when
  * a block is much longer than the time over which the pressure stays
@@ -77,19 +77,19 @@ int main(int argc, char **argv)
         usage();
     const size_t n = (size_t)number(argv[1], 1, 1e8, "N");
     const double eta = number(argv[2], 1e-9, 0.9069, "ETA");
-    ds_params p = ds_default_params(n, 1.0);
-    p.integrator = DS_EVENT_DRIVEN;
+    ds_params p = ds_params_default(n, 1.0);
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     p.box_y = 1000.0;
     double relax = 5.0, block = 1.0;
     int blocks = 20, memory = 0;
     for (int i = 3; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--periodic") == 0) {
-            p.boundary = DS_PERIODIC;
+            p.boundary = DS_BOUNDARY_PERIODIC;
             continue;
         }
         if (strcmp(a, "--lattice") == 0) {
-            p.placement = DS_LATTICE;
+            p.placement = DS_PLACEMENT_LATTICE;
             continue;
         }
         if (strcmp(a, "--memory") == 0) {
@@ -99,11 +99,11 @@ int main(int argc, char **argv)
         if (!v)
             usage();
         ++i;
-        if (strcmp(a, "--integrator") == 0 && strcmp(v, "step") == 0)
-            p.integrator = DS_TIME_STEP;
-        else if (strcmp(a, "--integrator") == 0 && strcmp(v, "event") == 0)
-            p.integrator = DS_EVENT_DRIVEN;
-        else if (strcmp(a, "--dt") == 0)
+        /* The integrators by the library's names for them. */
+        if (strcmp(a, "--integrator") == 0) {
+            if (ds_integrator_parse(v, &p.integrator, NULL) != DS_OK)
+                usage();
+        } else if (strcmp(a, "--dt") == 0)
             p.dt = number(v, 1e-9, 1.0, "--dt");
         else if (strcmp(a, "--relax") == 0)
             relax = number(v, 0.0, 1e6, "--relax");
@@ -120,48 +120,47 @@ int main(int argc, char **argv)
     }
     p.radius = sqrt(eta * 1000.0 * p.box_y / ((double)n * PI));
     ds_sim *sim = NULL;
-    ds_params_error why;
-    ds_status st = ds_diagnose_params(&p, NULL, &why);
+    ds_error why;
+    ds_status st = ds_params_check(&p, NULL, NULL, &why);
     if (memory && st == DS_OK) {
         size_t bytes = 0;
-        st = ds_memory_needed(&p, &bytes);
+        st = ds_params_memory(&p, NULL, &bytes, &why);
         if (st == DS_OK) {
             printf("%zu\n", bytes);
             return 0;
         }
     }
     if (st == DS_OK)
-        st = ds_create(&p, &sim);
+        st = ds_sim_create(&p, NULL, &sim, &why);
     if (st != DS_OK) {
         /* The library's sentence when it refuses the parameters. */
-        fprintf(stderr, "pressure: N = %zu at area fraction %g: %s\n", n, eta,
-                why.message[0] ? why.message : ds_status_str(st));
+        fprintf(stderr, "pressure: N = %zu at area fraction %g: %s\n", n, eta, why.message);
         return 1;
     }
-    const double dt = ds_dt(sim), t0 = ds_now();
+    const double dt = ds_sim_get_dt(sim), t0 = ds_timer_now();
     const uint64_t per_block = (uint64_t)llround(block / dt);
-    ds_run(sim, (uint64_t)llround(relax / dt));
-    const int walls = p.boundary == DS_WALLS;
+    ds_sim_run(sim, (uint64_t)llround(relax / dt), NULL);
+    const int walls = p.boundary == DS_BOUNDARY_WALLS;
     const double inset = walls ? 2.0 * p.radius : 0.0;
-    const double area = (ds_box(sim) - inset) * (ds_box_y(sim) - inset);
+    const double area = (ds_sim_get_box_width(sim) - inset) * (ds_sim_get_box_height(sim) - inset);
     stats virial = {0, 0, 0}, wall = {0, 0, 0};
-    const uint64_t collisions = ds_collision_count(sim);
+    const uint64_t collisions = ds_sim_get_collision_count(sim);
     for (int b = 0; b < blocks; ++b) {
-        ds_reset_observables(sim);
-        ds_run(sim, per_block);
-        const double energy = ds_kinetic_energy(sim);
-        add(&virial, ds_compressibility(sim));
+        ds_sim_reset_observables(sim);
+        ds_sim_run(sim, per_block, NULL);
+        const double energy = ds_sim_get_kinetic_energy(sim);
+        add(&virial, ds_sim_get_compressibility_factor(sim));
         if (walls)
-            add(&wall, ds_pressure(sim) * area / energy);
+            add(&wall, ds_sim_get_pressure(sim) * area / energy);
     }
-    printf("%.6g %zu %s %g %s %.6f %.6f ", eta, n, ds_integrator_name(ds_integrator_used(sim)), dt,
-           walls ? "walls" : "periodic", mean(&virial), error(&virial));
+    printf("%.6g %zu %s %g %s %.6f %.6f ", eta, n, ds_integrator_name(ds_sim_get_integrator(sim)),
+           dt, ds_boundary_name(ds_sim_get_boundary(sim)), mean(&virial), error(&virial));
     if (walls)
         printf("%.6f %.6f", mean(&wall), error(&wall));
     else
         printf("- -");
-    printf(" %llu %.1f\n", (unsigned long long)(ds_collision_count(sim) - collisions),
-           ds_now() - t0);
-    ds_destroy(sim);
+    printf(" %llu %.1f\n", (unsigned long long)(ds_sim_get_collision_count(sim) - collisions),
+           ds_timer_now() - t0);
+    ds_sim_destroy(sim);
     return 0;
 }

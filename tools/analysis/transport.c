@@ -3,7 +3,7 @@
  * periodic box, with the mean-squared displacement, the velocity
  * autocorrelation and the Helfand moment of the stress against time, and
  * the Enskog values to compare with. Public API only (ds_transport,
- * ds_stress_integral).
+ * ds_sim_get_stress_integral).
  *
  *   transport N ETA [--lattice] [--relax T] [--interval H] [--lags L]
  *             [--every E] [--blocks B] [--block T] [--window A:B] [--seed S]
@@ -21,11 +21,11 @@
  * Prints '#' lines with the system and its Enskog values,
  *   D_0 = (1 / (2 n sigma)) sqrt(kT / (pi m))   (Gass 1971),
  *   D_E = D_0 / g(sigma),  g(sigma) = (Z - 1) / (2 eta),
- * with Z measured (ds_compressibility) and kT = ds_temperature, the
+ * with Z measured (ds_sim_get_compressibility_factor) and kT = ds_sim_get_temperature, the
  * diffusion coefficient over the window of lags A:B (default 200:399)
- * from the Einstein slope and from Green-Kubo (ds_transport_diffusion),
+ * from the Einstein slope and from Green-Kubo (ds_transport_get_diffusion),
  * the shear viscosity over the same window from the Helfand moments of
- * s_xy and (s_xx - s_yy) / 2 (ds_stress_integral), slope / (2 A kT),
+ * s_xy and (s_xx - s_yy) / 2 (ds_sim_get_stress_integral), slope / (2 A kT),
  * against Enskog's (Gass 1971, with his Sonine factor 1.022)
  *   eta_E = 1.022 eta_0 (1 / g + 2 eta + (1 + 8 / pi) eta^2 g),
  *   eta_0 = (1 / (2 sigma)) sqrt(m kT / pi),
@@ -106,9 +106,9 @@ int main(int argc, char **argv)
         usage();
     const size_t n = (size_t)number(argv[1], 2, 1e8, "N");
     const double eta = number(argv[2], 1e-6, 0.9, "ETA");
-    ds_params p = ds_default_params(n, 1.0);
-    p.integrator = DS_EVENT_DRIVEN;
-    p.boundary = DS_PERIODIC;
+    ds_params p = ds_params_default(n, 1.0);
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
+    p.boundary = DS_BOUNDARY_PERIODIC;
     p.box = 1000.0;
     p.radius = sqrt(eta * p.box * p.box / ((double)n * PI));
     /* The defaults' clock: the Enskog collision rate at Henderson's Z,
@@ -123,7 +123,7 @@ int main(int argc, char **argv)
     for (int i = 3; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--lattice") == 0) {
-            p.placement = DS_LATTICE;
+            p.placement = DS_PLACEMENT_LATTICE;
             relax_given = relax_given ? relax_given : -1;
             continue;
         }
@@ -173,20 +173,16 @@ int main(int argc, char **argv)
     }
     p.dt = interval;
     ds_sim *sim = NULL;
-    ds_params_error why;
-    ds_status st = ds_diagnose_params(&p, NULL, &why);
-    if (st == DS_OK)
-        st = ds_create(&p, &sim);
-    if (st != DS_OK) {
-        fprintf(stderr, "transport: N = %zu at area fraction %g: %s\n", n, eta,
-                why.message[0] ? why.message : ds_status_str(st));
+    ds_error why;
+    if (ds_sim_create(&p, NULL, &sim, &why) != DS_OK) {
+        fprintf(stderr, "transport: N = %zu at area fraction %g: %s\n", n, eta, why.message);
         return 1;
     }
-    const double t0 = ds_now();
-    ds_run(sim, (uint64_t)llround(relax / interval));
-    ds_reset_observables(sim);
-    const uint64_t collisions0 = ds_collision_count(sim);
-    const double time0 = ds_time(sim);
+    const double t0 = ds_timer_now();
+    ds_sim_run(sim, (uint64_t)llround(relax / interval), NULL);
+    ds_sim_reset_observables(sim);
+    const uint64_t collisions0 = ds_sim_get_collision_count(sim);
+    const double time0 = ds_sim_get_time(sim);
 
     stats *msd = checked_calloc(lags, sizeof *msd), *vacf = checked_calloc(lags, sizeof *vacf);
     stats *dt_gk = checked_calloc(lags, sizeof *dt_gk),
@@ -202,30 +198,30 @@ int main(int argc, char **argv)
         /* The stress is one collective quantity, cheap to correlate: an
          * origin at every sample. */
         ds_transport *tr = NULL, *stress = NULL;
-        if (ds_transport_create(n, lags, every, &tr) != DS_OK ||
-            ds_transport_create(1, lags, 1, &stress) != DS_OK) {
+        if (ds_transport_create(n, lags, every, &tr, NULL) != DS_OK ||
+            ds_transport_create(1, lags, 1, &stress, NULL) != DS_OK) {
             fputs("transport: out of memory for the correlations\n", stderr);
             return 1;
         }
-        ds_reset_observables(sim);
+        ds_sim_reset_observables(sim);
         for (uint64_t s = 0; s < per_block; ++s) {
             if (s)
-                ds_step(sim);
-            ds_transport_sample(tr, sim);
+                ds_sim_step(sim, NULL);
+            ds_transport_sample(tr, sim, NULL);
             double si[3];
-            ds_stress_integral(sim, si);
+            ds_sim_get_stress_integral(sim, si, NULL);
             const double shear[2] = {si[2], 0.5 * (si[0] - si[1])}, unused[2] = {0.0, 0.0};
-            ds_transport_add(stress, shear, unused);
+            ds_transport_add(stress, shear, unused, NULL);
         }
-        ds_transport_get(tr, m, c, NULL);
-        ds_transport_get(stress, h, NULL, NULL);
+        ds_transport_get(tr, m, c, NULL, NULL);
+        ds_transport_get(stress, h, NULL, NULL, NULL);
         double e, g, helfand;
-        ds_transport_diffusion(tr, interval, from, to, &e, &g);
-        ds_transport_diffusion(stress, interval, from, to, &helfand, NULL);
+        ds_transport_get_diffusion(tr, interval, from, to, &e, &g, NULL);
+        ds_transport_get_diffusion(stress, interval, from, to, &helfand, NULL, NULL);
         ds_transport_destroy(tr);
         ds_transport_destroy(stress);
-        kt = ds_temperature(sim); /* the same in every block: energy is conserved */
-        const double zb = ds_compressibility(sim);
+        kt = ds_sim_get_temperature(sim); /* the same in every block: energy is conserved */
+        const double zb = ds_sim_get_compressibility_factor(sim);
         const double d_enskog = sqrt(kt / PI) / (2.0 * density * sigma) * (2.0 * eta) / (zb - 1.0);
         add(&z, zb);
         add(&einstein, e);
@@ -246,8 +242,8 @@ int main(int argc, char **argv)
             add(&eta_t[k], k ? h[k] / (4.0 * area * kt * (double)k * interval) : 0.0);
         }
     }
-    const double nu = 2.0 * (double)(ds_collision_count(sim) - collisions0) /
-                      ((double)n * (ds_time(sim) - time0));
+    const double nu = 2.0 * (double)(ds_sim_get_collision_count(sim) - collisions0) /
+                      ((double)n * (ds_sim_get_time(sim) - time0));
     const double zm = mean(&z), g_contact = (zm - 1.0) / (2.0 * eta);
     const double d0 = sqrt(kt / PI) / (2.0 * density * sigma), de = d0 / g_contact;
     printf("# transport: N %zu eta %.6g periodic event seed %llu, %d blocks of %llu samples\n", n,
@@ -268,7 +264,8 @@ int main(int argc, char **argv)
            enskog_viscosity(kt, sigma, eta, g_contact), mean(&viscosity_ratio),
            error(&viscosity_ratio));
     printf("# %llu collisions, %.1f s\n",
-           (unsigned long long)(ds_collision_count(sim) - collisions0), ds_now() - t0);
+           (unsigned long long)(ds_sim_get_collision_count(sim) - collisions0),
+           ds_timer_now() - t0);
     printf("# t t/t_c msd error C/C0 error D(t) error eta(t) error\n");
     for (size_t k = 0; k < lags; ++k)
         printf("%.9g %.6g %.9g %.3g %.9g %.3g %.9g %.3g %.9g %.3g\n", (double)k * interval,
@@ -282,6 +279,6 @@ int main(int argc, char **argv)
     free(dt_gk);
     free(m);
     free(c);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     return 0;
 }

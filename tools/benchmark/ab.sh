@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# Compares two builds of the event-driven integrator in one process:
+# Compares two builds of the library in one process (2.x or 3.x each):
 #
 #   tools/benchmark/ab.sh REV_A REV_B [N [ROUNDS [event|step|seed]]]
 #
@@ -19,14 +19,18 @@ top=$(git rev-parse --show-toplevel)
 work=$(mktemp -d)
 trap 'rm -rf "$work"; git -C "$top" worktree prune' EXIT INT TERM
 
+# Each side's library and its own headers (2.x's or 3.0's: ab_events.c
+# speaks both), so that a release can be timed against the last one.
 lib() { # side revision
     if [ "$2" = "." ]; then
         make -s -C "$top" libdisksim.a
         cp "$top/libdisksim.a" "$work/$1.a"
+        cp -r "$top/include" "$work/include$1"
     else
         git -C "$top" worktree add --detach -q "$work/tree$1" "$2"
         make -s -C "$work/tree$1" libdisksim.a
         cp "$work/tree$1/libdisksim.a" "$work/$1.a"
+        cp -r "$work/tree$1/include" "$work/include$1"
     fi
 }
 lib A "$1"
@@ -35,7 +39,7 @@ nm -g --defined-only "$work/A.a" "$work/B.a" | awk 'NF == 3 { print $3 }' | sort
 for side in A B; do
     awk -v p="${side}_" '{ print $1, p $1 }' "$work/symbols" >"$work/$side.map"
     objcopy --redefine-syms="$work/$side.map" "$work/$side.a" "$work/${side}_renamed.a"
-    cc -std=c99 -O2 -I"$top/include" -DAB_SIDE="${side}_" -c "$top/tools/benchmark/ab_events.c" \
+    cc -std=c99 -O2 -I"$work/include$side" -DAB_SIDE="${side}_" -c "$top/tools/benchmark/ab_events.c" \
         -o "$work/$side.o"
 done
 cc -std=c99 -O2 -DAB_MAIN "$top/tools/benchmark/ab_events.c" "$work/A.o" "$work/B.o" \

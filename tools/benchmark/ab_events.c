@@ -8,7 +8,7 @@
  * state of a shared, noisy machine:
  * - event (the default): area fraction 0.5, walls, event-driven, relaxed
  *   ~1 collision per disk, rounds of ~10^6 collisions, ns per collision;
- * - step: the time step at area fraction 0.1 (the broad phase DS_AUTO
+ * - step: the time step at area fraction 0.1 (the broad phase DS_BROADPHASE_AUTO
  *   picks: SAP up to ~4000 disks, strips beyond), rounds of ~2 x 10^7
  *   disk-steps, ns of collision processing per disk-step;
  * - seed: the seed case, 400 disks of R = 5, rounds of 5000 steps.
@@ -26,13 +26,42 @@
 #define AB_CAT(a, b) AB_CAT2(a, b)
 #define AB(x) AB_CAT(AB_SIDE, x)
 
-/* The public calls, under this build's prefix. */
+/* The public calls, under this build's prefix, as this build's own
+ * headers (ab.sh compiles each side against its revision's include/)
+ * spell them: 2.x's names and 3.0's, so that 2.1 and 3.0 can be timed
+ * against each other. The side's functions below use the 3.0 forms. */
+#if DS_VERSION_MAJOR >= 3
+ds_params AB(ds_params_default)(size_t n, double radius);
+ds_status AB(ds_sim_create)(const ds_params *params, const ds_mixture *mixture, ds_sim **out,
+                            ds_error *err);
+ds_status AB(ds_sim_run)(ds_sim *sim, uint64_t steps, ds_error *err);
+uint64_t AB(ds_sim_get_collision_count)(const ds_sim *sim);
+double AB(ds_sim_get_collision_seconds)(const ds_sim *sim);
+void AB(ds_sim_destroy)(ds_sim *sim);
+#define params_default AB(ds_params_default)
+#define sim_create(p, out) AB(ds_sim_create)(p, NULL, out, NULL)
+#define sim_run(sim, k) ((void)AB(ds_sim_run)(sim, k, NULL))
+#define collision_count AB(ds_sim_get_collision_count)
+#define collision_seconds AB(ds_sim_get_collision_seconds)
+#define sim_destroy AB(ds_sim_destroy)
+#define EVENT_DRIVEN DS_INTEGRATOR_EVENT_DRIVEN
+#define TIME_STEP DS_INTEGRATOR_TIME_STEP
+#else
 ds_params AB(ds_default_params)(size_t n, double radius);
 ds_status AB(ds_create)(const ds_params *params, ds_sim **out);
-void AB(ds_run)(ds_sim *sim, unsigned long steps);
+void AB(ds_run)(ds_sim *sim, uint64_t steps);
 uint64_t AB(ds_collision_count)(const ds_sim *sim);
 double AB(ds_collision_seconds)(const ds_sim *sim);
 void AB(ds_destroy)(ds_sim *sim);
+#define params_default AB(ds_default_params)
+#define sim_create(p, out) AB(ds_create)(p, out)
+#define sim_run(sim, k) AB(ds_run)(sim, k)
+#define collision_count AB(ds_collision_count)
+#define collision_seconds AB(ds_collision_seconds)
+#define sim_destroy AB(ds_destroy)
+#define EVENT_DRIVEN DS_EVENT_DRIVEN
+#define TIME_STEP DS_TIME_STEP
+#endif
 
 void *AB(ab_make)(size_t n, int kind);
 double AB(ab_round)(void *sim, size_t n, int kind);
@@ -48,14 +77,14 @@ static double radius_at(size_t n, double fraction)
 
 void *AB(ab_make)(size_t n, int kind)
 {
-    ds_params p = AB(ds_default_params)(n, radius_at(n, kind == 0 ? 0.5 : 0.1));
+    ds_params p = params_default(n, radius_at(n, kind == 0 ? 0.5 : 0.1));
     if (kind == 2)
-        p = AB(ds_default_params)(400, 5.0);
-    p.integrator = kind == 0 ? DS_EVENT_DRIVEN : DS_TIME_STEP;
+        p = params_default(400, 5.0);
+    p.integrator = kind == 0 ? EVENT_DRIVEN : TIME_STEP;
     ds_sim *sim = NULL;
-    if (AB(ds_create)(&p, &sim) != DS_OK)
+    if (sim_create(&p, &sim) != DS_OK)
         return NULL;
-    AB(ds_run)(sim, kind ? 100 : (unsigned long)(0.5 * (double)n / per_step(n)) + 2);
+    sim_run(sim, kind ? 100 : (unsigned long)(0.5 * (double)n / per_step(n)) + 2);
     return sim;
 }
 
@@ -64,20 +93,20 @@ double AB(ab_round)(void *s, size_t n, int kind)
     ds_sim *sim = s;
     if (kind) {
         const unsigned long steps = kind == 2 ? 5000 : (unsigned long)(2e7 / (double)n) + 1;
-        const double s0 = AB(ds_collision_seconds)(sim);
-        AB(ds_run)(sim, steps);
+        const double s0 = collision_seconds(sim);
+        sim_run(sim, steps);
         const double disks = kind == 2 ? 400.0 : (double)n;
-        return 1e9 * (AB(ds_collision_seconds)(sim) - s0) / (disks * (double)steps);
+        return 1e9 * (collision_seconds(sim) - s0) / (disks * (double)steps);
     }
     unsigned long steps = (unsigned long)(1e6 / per_step(n));
     steps = steps < 4 ? 4 : steps;
-    const uint64_t c0 = AB(ds_collision_count)(sim);
-    const double s0 = AB(ds_collision_seconds)(sim);
-    AB(ds_run)(sim, steps);
-    return 1e9 * (AB(ds_collision_seconds)(sim) - s0) / (double)(AB(ds_collision_count)(sim) - c0);
+    const uint64_t c0 = collision_count(sim);
+    const double s0 = collision_seconds(sim);
+    sim_run(sim, steps);
+    return 1e9 * (collision_seconds(sim) - s0) / (double)(collision_count(sim) - c0);
 }
 
-void AB(ab_done)(void *sim) { AB(ds_destroy)(sim); }
+void AB(ab_done)(void *sim) { sim_destroy(sim); }
 
 #elif defined(AB_MAIN)
 void *A_ab_make(size_t n, int kind);

@@ -49,25 +49,26 @@ static double ns_per_disk_step(const result *r)
 
 static int run_case(size_t n, double radius, ds_broadphase bp, unsigned long steps, result *out)
 {
-    ds_params p = ds_default_params(n, radius);
+    ds_params p = ds_params_default(n, radius);
     p.broadphase = bp;
     ds_sim *sim;
-    double t0 = ds_now();
-    ds_status st = ds_create(&p, &sim);
-    double t1 = ds_now();
+    double t0 = ds_timer_now();
+    ds_status st = ds_sim_create(&p, NULL, &sim, NULL);
+    double t1 = ds_timer_now();
     if (st != DS_OK) {
-        fprintf(stderr, "bench: ds_create(N = %zu, R = %g): %s\n", n, radius, ds_status_str(st));
+        fprintf(stderr, "bench: ds_sim_create(N = %zu, NULL, R = %g, NULL): %s\n", n, radius,
+                ds_status_name(st));
         return 0;
     }
-    ds_run(sim, steps);
+    ds_sim_run(sim, steps, NULL);
     out->n = n;
     out->radius = radius;
-    out->bp = ds_broadphase_used(sim);
+    out->bp = ds_sim_get_broadphase(sim);
     out->steps = steps;
-    out->collision_seconds = ds_collision_seconds(sim);
+    out->collision_seconds = ds_sim_get_collision_seconds(sim);
     out->create_seconds = t1 - t0;
-    out->pairs_per_step = (double)ds_pairs_tested(sim) / (double)steps;
-    ds_destroy(sim);
+    out->pairs_per_step = (double)ds_sim_get_pairs_tested(sim) / (double)steps;
+    ds_sim_destroy(sim);
     return 1;
 }
 
@@ -98,7 +99,7 @@ static int run_rounds(const bench_case *cases, int count, double ns[][ROUNDS], r
     return 1;
 }
 
-/* Seconds of one ds_create, the median of `repeats` (odd, at most 64):
+/* Seconds of one ds_sim_create, the median of `repeats` (odd, at most 64):
  * placement alone at small N takes well under a millisecond, too short
  * for one measurement. */
 static double create_seconds(size_t n, double radius, ds_broadphase bp, int repeats)
@@ -107,14 +108,14 @@ static double create_seconds(size_t n, double radius, ds_broadphase bp, int repe
     if (repeats < 1 || repeats > 64)
         return NAN;
     for (int k = 0; k < repeats; ++k) {
-        ds_params p = ds_default_params(n, radius);
+        ds_params p = ds_params_default(n, radius);
         p.broadphase = bp;
         ds_sim *sim;
-        double t0 = ds_now();
-        if (ds_create(&p, &sim) != DS_OK)
+        double t0 = ds_timer_now();
+        if (ds_sim_create(&p, NULL, &sim, NULL) != DS_OK)
             return NAN;
-        t[k] = ds_now() - t0;
-        ds_destroy(sim);
+        t[k] = ds_timer_now() - t0;
+        ds_sim_destroy(sim);
     }
     return median(t, repeats);
 }
@@ -145,8 +146,8 @@ static unsigned long scaling_steps(size_t n)
 
 /* Seconds of the parts of one `disks 400 5` run. */
 typedef struct disks_times {
-    double simulation; /* ds_create and ds_run */
-    double formatting; /* ds_format_frame */
+    double simulation; /* ds_sim_create and ds_sim_run */
+    double formatting; /* ds_frame_format */
     double writing;    /* fwrite and fclose: handing the bytes to the kernel */
     double files;      /* fopen and rename: creating and naming 500 files */
 } disks_times;
@@ -165,38 +166,38 @@ static int disks_run(const char *parent, disks_times *t)
         fprintf(stderr, "bench: cannot create a directory in %s: %s\n", parent, strerror(errno));
         return 0;
     }
-    ds_params p = ds_default_params(400, 5.0);
+    ds_params p = ds_params_default(400, 5.0);
     ds_sim *sim;
     *t = (disks_times){0.0, 0.0, 0.0, 0.0};
-    double t0 = ds_now();
-    if (ds_create(&p, &sim) != DS_OK)
+    double t0 = ds_timer_now();
+    if (ds_sim_create(&p, NULL, &sim, NULL) != DS_OK)
         return 0;
-    t->simulation = ds_now() - t0;
-    size_t cap = ds_frame_size(sim, 0);
+    t->simulation = ds_timer_now() - t0;
+    size_t cap = ds_frame_get_size(sim, 0);
     char *buf = malloc(cap);
     char path[4096 + 32], tmp[4096 + 32]; /* dir, then at most "/.frame_0499.tmp" */
     int ok = buf != NULL;
     for (int frame = 0; ok && frame < 500; ++frame) {
         if (frame > 0) {
-            t0 = ds_now();
-            ds_run(sim, 100);
-            t->simulation += ds_now() - t0;
+            t0 = ds_timer_now();
+            ds_sim_run(sim, 100, NULL);
+            t->simulation += ds_timer_now() - t0;
         }
-        t0 = ds_now();
+        t0 = ds_timer_now();
         size_t len = 0;
-        ok = ds_format_frame(sim, 0, buf, cap, &len) == DS_OK;
-        double t1 = ds_now();
+        ok = ds_frame_format(sim, 0, buf, cap, &len, NULL) == DS_OK;
+        double t1 = ds_timer_now();
         t->formatting += t1 - t0;
         snprintf(path, sizeof path, "%s/frame_%04d.txt", dir, frame);
         snprintf(tmp, sizeof tmp, "%s/.frame_%04d.tmp", dir, frame);
         FILE *f = fopen(tmp, "wb");
-        double t2 = ds_now();
+        double t2 = ds_timer_now();
         ok = ok && f && fwrite(buf, 1, len, f) == len;
         ok = f && fclose(f) == 0 && ok;
-        double t3 = ds_now();
+        double t3 = ds_timer_now();
         ok = ok && rename(tmp, path) == 0;
         t->writing += t3 - t2;
-        t->files += (t2 - t1) + (ds_now() - t3);
+        t->files += (t2 - t1) + (ds_timer_now() - t3);
     }
     for (int frame = 0; frame < 500; ++frame) {
         snprintf(path, sizeof path, "%s/frame_%04d.txt", dir, frame);
@@ -204,7 +205,7 @@ static int disks_run(const char *parent, disks_times *t)
     }
     rmdir(dir);
     free(buf);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     return ok;
 }
 
@@ -224,15 +225,16 @@ static void print_machine(void)
     printf("online cpus: %ld; disksim %s\n", cores, ds_version());
 }
 
-/* The broad phase DS_AUTO resolves to for (n, r). */
+/* The broad phase DS_BROADPHASE_AUTO resolves to for (n, r). */
 static const char *auto_choice(size_t n, double r)
 {
-    ds_params p = ds_default_params(n, r);
+    ds_params p = ds_params_default(n, r);
     ds_sim *sim = NULL;
     /* Creating places the disks; only done for small n. */
-    const char *name =
-        ds_create(&p, &sim) == DS_OK ? ds_broadphase_name(ds_broadphase_used(sim)) : "?";
-    ds_destroy(sim);
+    const char *name = ds_sim_create(&p, NULL, &sim, NULL) == DS_OK
+                           ? ds_broadphase_name(ds_sim_get_broadphase(sim))
+                           : "?";
+    ds_sim_destroy(sim);
     return name;
 }
 
@@ -241,8 +243,8 @@ int main(int argc, char **argv)
     if (argc == 3 && strcmp(argv[1], "scale") == 0) {
         size_t n = (size_t)strtoul(argv[2], NULL, 10);
         result r;
-        if (n < 1 ||
-            !run_case(n, radius_for_fraction(n, AREA_FRACTION), DS_AUTO, scaling_steps(n), &r))
+        if (n < 1 || !run_case(n, radius_for_fraction(n, AREA_FRACTION), DS_BROADPHASE_AUTO,
+                               scaling_steps(n), &r))
             return 1;
         print_header();
         print_row("scale", &r);
@@ -257,7 +259,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: bench [scale N | events N [collisions per disk]]\n");
         return 2;
     }
-    double started = ds_now();
+    double started = ds_timer_now();
     print_machine();
 
     /* 1. The seed case. Brute force runs fewer steps (it tests all 79,800
@@ -269,9 +271,9 @@ int main(int argc, char **argv)
            "   compare per disk-step.\n");
     print_header();
     enum { SAP, BRUTE, STRIPS };
-    const bench_case seed[] = {{400, 5.0, DS_SAP, 50000},
-                               {400, 5.0, DS_BRUTE_FORCE, 5000},
-                               {400, 5.0, DS_SAP_STRIPS, 50000}};
+    const bench_case seed[] = {{400, 5.0, DS_BROADPHASE_SAP, 50000},
+                               {400, 5.0, DS_BROADPHASE_BRUTE, 5000},
+                               {400, 5.0, DS_BROADPHASE_STRIPS, 50000}};
     double seed_ns[3][ROUNDS];
     result seed_rows[3];
     if (!run_rounds(seed, 3, seed_ns, seed_rows))
@@ -295,10 +297,10 @@ int main(int argc, char **argv)
         const unsigned long steps = scaling_steps(sizes[k]);
         if (k < 2) {
             sap_case[k] = count;
-            scale[count++] = (bench_case){sizes[k], r, DS_SAP, steps / (k ? 4 : 1)};
+            scale[count++] = (bench_case){sizes[k], r, DS_BROADPHASE_SAP, steps / (k ? 4 : 1)};
         }
         strips_case[k] = count;
-        scale[count++] = (bench_case){sizes[k], r, DS_SAP_STRIPS, steps};
+        scale[count++] = (bench_case){sizes[k], r, DS_BROADPHASE_STRIPS, steps};
     }
     double scale_ns[SCALE_CASES][ROUNDS];
     result scale_rows[SCALE_CASES];
@@ -320,8 +322,8 @@ int main(int argc, char **argv)
            auto_choice(1000, radius_for_fraction(1000, AREA_FRACTION)),
            auto_choice(10000, radius_for_fraction(10000, AREA_FRACTION)));
 
-    /* 3. Placement. ds_create with brute force is placement alone (that
-     * broad phase keeps generation order); with DS_AUTO it adds the broad
+    /* 3. Placement. ds_sim_create with brute force is placement alone (that
+     * broad phase keeps generation order); with DS_BROADPHASE_AUTO it adds the broad
      * phase's first ordering. In each round, small N take the median of
      * several creations: one takes well under a millisecond. */
     static const int create_repeats[SIZES] = {21, 9, 1, 1};
@@ -331,11 +333,12 @@ int main(int argc, char **argv)
             const double r = radius_for_fraction(sizes[c], AREA_FRACTION);
             const double per_disk = 1e9 / (double)sizes[c];
             place_ns[c][k] =
-                per_disk * create_seconds(sizes[c], r, DS_BRUTE_FORCE, create_repeats[c]);
+                per_disk * create_seconds(sizes[c], r, DS_BROADPHASE_BRUTE, create_repeats[c]);
             order_ns[c][k] =
-                per_disk * create_seconds(sizes[c], r, DS_AUTO, create_repeats[c]) - place_ns[c][k];
+                per_disk * create_seconds(sizes[c], r, DS_BROADPHASE_AUTO, create_repeats[c]) -
+                place_ns[c][k];
         }
-    printf("\n3. Placement per disk: ds_create with brute force (placement alone), and what\n"
+    printf("\n3. Placement per disk: ds_sim_create with brute force (placement alone), and what\n"
            "   auto adds (the first strip/x ordering); small N: median of 21 and 9 per round\n");
     printf("%8s %12s %-7s %14s\n", "N", "placement ns", "auto", "+ ordering ns");
     const double place_ratio = median_ratio(place_ns[3], place_ns[1]);
@@ -385,6 +388,6 @@ int main(int argc, char **argv)
         return 1;
 
     printf("\npeak RSS of this process %ld KB (the N = 10^6 cases); bench took %.0f s\n",
-           peak_rss_kb(), ds_now() - started);
+           peak_rss_kb(), ds_timer_now() - started);
     return 0;
 }

@@ -3,7 +3,7 @@
  *
  * 5a. Disk-disk collisions per second at area fraction 0.5 with walls, for
  *     N = 10^3 to 10^6: each system is created and relaxed for about one
- *     collision per disk, then timed in every round (ds_collision_seconds:
+ *     collision per disk, then timed in every round (ds_sim_get_collision_seconds:
  *     predicting and processing events) over about 10^6 collisions.
  * 5c. A mixture: 50:50 of radius ratio 1.4 against one size, both at
  *     area fraction 0.5 and N = 10^5 with walls, in the same rounds.
@@ -29,13 +29,13 @@ static double radius_at(size_t n, double fraction)
 
 static ds_sim *create(size_t n, double fraction, ds_integrator integrator, double dt)
 {
-    ds_params p = ds_default_params(n, radius_at(n, fraction));
+    ds_params p = ds_params_default(n, radius_at(n, fraction));
     p.integrator = integrator;
     p.dt = dt;
     ds_sim *sim = NULL;
-    ds_status st = ds_create(&p, &sim);
+    ds_status st = ds_sim_create(&p, NULL, &sim, NULL);
     if (st != DS_OK)
-        fprintf(stderr, "bench: ds_create(N = %zu): %s\n", n, ds_status_str(st));
+        fprintf(stderr, "bench: ds_sim_create(N = %zu): %s\n", n, ds_status_name(st));
     return sim;
 }
 
@@ -50,27 +50,28 @@ static unsigned long at_least(double steps, unsigned long least)
 
 /* A system at area fraction 0.5 relaxed for about `per_disk` collisions
  * per disk (each collision counts for two); NULL on failure. *created gets
- * the seconds of ds_create: random placement this close to its jamming
+ * the seconds of ds_sim_create: random placement this close to its jamming
  * limit (0.547) takes seconds at 10^6 disks, so each system is created
  * once and timed in every round. */
 static ds_sim *relaxed(size_t n, double per_disk, double *created)
 {
-    const double t0 = ds_now();
-    ds_sim *sim = create(n, 0.5, DS_EVENT_DRIVEN, 0.0);
-    *created = ds_now() - t0;
+    const double t0 = ds_timer_now();
+    ds_sim *sim = create(n, 0.5, DS_INTEGRATOR_EVENT_DRIVEN, 0.0);
+    *created = ds_timer_now() - t0;
     if (sim)
-        ds_run(sim, at_least(0.5 * per_disk * (double)n / collisions_per_step(n), 2));
+        ds_sim_run(sim, at_least(0.5 * per_disk * (double)n / collisions_per_step(n), 2), NULL);
     return sim;
 }
 
 /* ns per collision over about 10^6 more collisions. */
 static double ns_per_collision(ds_sim *sim)
 {
-    const size_t n = ds_count(sim);
-    const uint64_t c0 = ds_collision_count(sim);
-    const double s0 = ds_collision_seconds(sim);
-    ds_run(sim, at_least(1e6 / collisions_per_step(n), 4));
-    return 1e9 * (ds_collision_seconds(sim) - s0) / (double)(ds_collision_count(sim) - c0);
+    const size_t n = ds_sim_get_count(sim);
+    const uint64_t c0 = ds_sim_get_collision_count(sim);
+    const double s0 = ds_sim_get_collision_seconds(sim);
+    ds_sim_run(sim, at_least(1e6 / collisions_per_step(n), 4), NULL);
+    return 1e9 * (ds_sim_get_collision_seconds(sim) - s0) /
+           (double)(ds_sim_get_collision_count(sim) - c0);
 }
 
 int bench_events_one(unsigned long n, double per_disk)
@@ -80,7 +81,7 @@ int bench_events_one(unsigned long n, double per_disk)
     if (!sim)
         return 0;
     const double ns = ns_per_collision(sim);
-    ds_destroy(sim);
+    ds_sim_destroy(sim);
     printf("N = %lu, area fraction 0.5, event-driven, after %g collisions per disk: %.0f ns per "
            "collision, %.3g collisions/s; create %.2f s; peak RSS %ld KB\n",
            n, per_disk, ns, 1e9 / ns, created, peak_rss_kb());
@@ -92,17 +93,17 @@ int bench_events_one(unsigned long n, double per_disk)
 static ds_sim *relaxed_mixture(size_t n, double per_disk)
 {
     const double r = sqrt(0.5 * 1000.0 * 1000.0 / (PI * (double)n * 1.48));
-    ds_params p = ds_default_params(n, r);
-    p.integrator = DS_EVENT_DRIVEN;
-    const ds_species kinds[2] = {{n / 2, r, 0.0}, {n - n / 2, 1.4 * r, 0.0}};
+    ds_params p = ds_params_default(n, r);
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
+    const ds_species kinds[2] = {{n / 2, r, 0.0, NULL}, {n - n / 2, 1.4 * r, 0.0, NULL}};
     const ds_mixture mix = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
     ds_sim *sim = NULL;
-    ds_status st = ds_create_mixture(&p, &mix, &sim);
+    ds_status st = ds_sim_create(&p, &mix, &sim, NULL);
     if (st != DS_OK) {
-        fprintf(stderr, "bench: ds_create_mixture(N = %zu): %s\n", n, ds_status_str(st));
+        fprintf(stderr, "bench: ds_sim_create(N = %zu, a mixture): %s\n", n, ds_status_name(st));
         return NULL;
     }
-    ds_run(sim, at_least(0.5 * per_disk * (double)n / collisions_per_step(n), 2));
+    ds_sim_run(sim, at_least(0.5 * per_disk * (double)n / collisions_per_step(n), 2), NULL);
     return sim;
 }
 
@@ -117,21 +118,22 @@ static int bench_mixture(void)
         ns[1][k] = ns_per_collision(mix);
     }
     const int ok = mix != NULL;
-    ds_destroy(one);
-    ds_destroy(mix);
+    ds_sim_destroy(one);
+    ds_sim_destroy(mix);
     if (!ok)
         return 0;
     const double ratio = median_ratio(ns[1], ns[0]);
     printf("\n   A mixture, 50:50 of radius ratio 1.4, against one size (N = 10^5, area fraction\n"
            "   0.5, walls; cells sized by the largest pair, 2.3 r, not 2 r, r the one size's):\n");
-    printf("   one size %.0f ns/collision, mixture %.0f: mixture / one size = %.2f (target <= 1.3)\n",
-           median(ns[0], ROUNDS), median(ns[1], ROUNDS), ratio);
+    printf(
+        "   one size %.0f ns/collision, mixture %.0f: mixture / one size = %.2f (target <= 1.3)\n",
+        median(ns[0], ROUNDS), median(ns[1], ROUNDS), ratio);
     fflush(stdout);
     return 1;
 }
 
 /* Z = P A / E from the collision virial (A = (box - 2R)^2) over `units`
- * time units after 2 of relaxation, and the wall-clock seconds of ds_run
+ * time units after 2 of relaxation, and the wall-clock seconds of ds_sim_run
  * per time unit. */
 static int virial_z(ds_integrator integrator, double dt, int units, double *z, double *seconds)
 {
@@ -140,14 +142,14 @@ static int virial_z(ds_integrator integrator, double dt, int units, double *z, d
     if (!sim)
         return 0;
     const unsigned long per_unit = (unsigned long)llround(1.0 / dt);
-    ds_run(sim, 2 * per_unit);
-    ds_reset_observables(sim);
-    const double t0 = ds_now();
-    ds_run(sim, (unsigned long)units * per_unit);
-    *seconds = (ds_now() - t0) / units;
-    const double span = 1000.0 - 2.0 * ds_radius(sim);
-    *z = ds_virial_pressure(sim) * span * span / ds_kinetic_energy(sim);
-    ds_destroy(sim);
+    ds_sim_run(sim, 2 * per_unit, NULL);
+    ds_sim_reset_observables(sim);
+    const double t0 = ds_timer_now();
+    ds_sim_run(sim, (unsigned long)units * per_unit, NULL);
+    *seconds = (ds_timer_now() - t0) / units;
+    const double span = 1000.0 - 2.0 * ds_sim_get_radius(sim);
+    *z = ds_sim_get_virial_pressure(sim) * span * span / ds_sim_get_kinetic_energy(sim);
+    ds_sim_destroy(sim);
     return 1;
 }
 
@@ -164,11 +166,12 @@ int bench_events(void)
         for (int c = 0; c < SIZES; ++c)
             ns[c][k] = ns_per_collision(sims[c]);
     for (int c = 0; c < SIZES; ++c)
-        ds_destroy(sims[c]);
+        ds_sim_destroy(sims[c]);
     if (!ok)
         return 0;
-    printf("\n5. Event-driven integrator, area fraction 0.5, walls: ~10^6 collisions per case\n"
-           "   after ~1 per disk of relaxation; ns per collision from ds_collision_seconds\n");
+    printf(
+        "\n5. Event-driven integrator, area fraction 0.5, walls: ~10^6 collisions per case\n"
+        "   after ~1 per disk of relaxation; ns per collision from ds_sim_get_collision_seconds\n");
     /* median() sorts its input: the ratio first, while the rounds pair up. */
     const double scaling = median_ratio(ns[3], ns[0]);
     printf("%8s %8s %14s %14s %10s\n", "N", "R", "ns/collision", "collisions/s", "create s");
@@ -185,9 +188,9 @@ int bench_events(void)
         return 0;
 
     double z_exact, s_exact, z2, s2, z1, s1;
-    if (!virial_z(DS_EVENT_DRIVEN, 0.001, 10, &z_exact, &s_exact) ||
-        !virial_z(DS_TIME_STEP, 0.002, 10, &z2, &s2) ||
-        !virial_z(DS_TIME_STEP, 0.001, 10, &z1, &s1))
+    if (!virial_z(DS_INTEGRATOR_EVENT_DRIVEN, 0.001, 10, &z_exact, &s_exact) ||
+        !virial_z(DS_INTEGRATOR_TIME_STEP, 0.002, 10, &z2, &s2) ||
+        !virial_z(DS_INTEGRATOR_TIME_STEP, 0.001, 10, &z1, &s1))
         return 0;
     /* The bias is a dt (fitted through the exact value, weighting the two
      * points equally); 0.1% of Z needs dt = 0.001 Z / |a|, and costs the

@@ -8,7 +8,7 @@
  * Each worker thread owns one GL context (render_backend.h) and one set of
  * shaders and buffers (render_draw.h), made once and reused for all the
  * frames it takes from a shared counter; a frame is read with the
- * library's ds_read_frame, drawn, read back and written by render_png.c,
+ * library's ds_frame_read, drawn, read back and written by render_png.c,
  * or, for a movie, handed to ffmpeg by render_movie.c in frame order. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
@@ -125,12 +125,12 @@ static void *worker(void *arg)
     }
     for (size_t i; r && (i = take(j)) < j->count;) {
         ds_frame frame;
-        ds_frame_error fe;
-        ds_status st = ds_read_frame(j->inputs[i], &frame, &fe);
+        ds_error fe;
+        ds_status st = ds_frame_read(j->inputs[i], &frame, &fe);
         if (st != DS_OK) {
-            const char *text = fe.message[0] ? fe.message : ds_status_str(st);
-            if (fe.line)
-                snprintf(msg, sizeof msg, "%s:%zu: %s", j->inputs[i], fe.line, text);
+            const char *text = fe.message;
+            if (fe.index)
+                snprintf(msg, sizeof msg, "%s:%zu: %s", j->inputs[i], fe.index, text);
             else
                 snprintf(msg, sizeof msg, "%s: %s", j->inputs[i], text);
             report(j, msg);
@@ -312,7 +312,7 @@ static int render_all(job *j, size_t workers, int quiet)
         fprintf(stderr, "render: %s: %s\n", rb_name(), why);
         return 1;
     }
-    const double start = ds_now();
+    const double start = ds_timer_now();
     pthread_t threads[MAX_WORKERS];
     size_t started = 0;
     /* Worker 0 is this thread; the others get a thread each. */
@@ -334,7 +334,7 @@ static int render_all(job *j, size_t workers, int quiet)
     if (!quiet)
         printf("render: %zu frame%s, %dx%d px, %s backend, %zu worker%s, %.2f s%s\n", j->count,
                j->count == 1 ? "" : "s", j->draw.size, j->draw.size, rb_name(), started + 1,
-               started ? "s" : "", ds_now() - start, j->movie ? ", one H.264 movie" : "");
+               started ? "s" : "", ds_timer_now() - start, j->movie ? ", one H.264 movie" : "");
     return 0;
 }
 

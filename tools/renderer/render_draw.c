@@ -152,21 +152,24 @@ static int size_legend(rd_renderer *r, const rl_layout *l, double rmin, double r
 }
 
 /* psi6 of every disk of the frame (cutoff 1.4 diameters of the largest
- * disk, as ds_psi6) into re, im. */
+ * disk, as ds_sim_get_psi6) into re, im. */
 static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y, double *re,
                       double *im, char *err, size_t errlen)
 {
     const size_t n = frame->count;
     double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), radius = 0.0;
     ds_status st = DS_ERR_NOMEM;
+    ds_error why;
+    snprintf(why.message, sizeof why.message, "out of memory");
     if (x && y) {
         for (size_t i = 0; i < n; ++i) {
             x[i] = frame->disks[i].x;
             y[i] = frame->disks[i].y;
             radius = fmax(radius, frame->disks[i].r);
         }
-        st = ds_local_psi6(n, x, y, r->opt.box, box_y, r->opt.periodic ? DS_PERIODIC : DS_WALLS,
-                           2.8 * radius, re, im);
+        st = ds_psi6_local(n, x, y, r->opt.box, box_y,
+                           r->opt.periodic ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_WALLS, 2.8 * radius,
+                           re, im, &why);
     }
     free(x);
     free(y);
@@ -174,7 +177,7 @@ static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y,
         snprintf(err, errlen, "psi6: the periodic box is narrower than 2.8 diameters (%g)",
                  2.8 * 2.0 * radius);
     else if (st != DS_OK)
-        snprintf(err, errlen, "psi6: %s", ds_status_str(st));
+        snprintf(err, errlen, "psi6: %s", why.message);
     return st == DS_OK ? 0 : -1;
 }
 

@@ -1,0 +1,194 @@
+/* SPDX-License-Identifier: MIT */
+/* The event-driven integrator's state (event_state.h): making it from the
+ * disk arrays (the slots sorted by cell, the records copied, every disk
+ * predicted, the calendar built), freeing it, and showing the disks at a
+ * time in the arrays. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/box.h"
+#include "core/large_alloc.h"
+#include "event/event_state.h"
+
+/* Record k is the disk of slot k (created so, see create). A disk shown
+ * a hair past the box edge before its crossing event is wrapped here, and
+ * its shown image counts that wrap too. */
+void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
+{
+    for (size_t k = 0; k < disks->n; ++k) {
+        const ed_disk *d = &e->disk[k];
+        const double lag = t - d->t;
+        double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
+        if (e->image) { /* a periodic axis */
+            int32_t ix = e->image[2 * k], iy = e->image[2 * k + 1];
+            ds_box_wrap(&e->box, &x, &y, &ix, &iy);
+            disks->ix[k] = ix;
+            disks->iy[k] = iy;
+        }
+        disks->x[k] = x;
+        disks->y[k] = y;
+        disks->vx[k] = d->vx;
+        disks->vy[k] = d->vy;
+    }
+}
+
+
+static ds_broadphase grid_of(ds_broadphase bp)
+{
+    return bp == DS_BROADPHASE_BRUTE ? bp : DS_BROADPHASE_CELLS;
+}
+
+static size_t ed_bytes(size_t n, double radius, double box_x, double box_y, ds_broadphase bp)
+{
+    size_t cells = ds_cells_bytes(n, box_x, box_y, 2.0 * radius,
+                                  grid_of(bp) == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
+    return sizeof(ds_events) + n * sizeof(ed_disk) + cells + ds_eq_bytes(n, DS_EQ_CALENDAR);
+}
+
+/* What events read and write (fetching ahead pays once it outgrows the
+ * caches), and all the state holds: that and the times waiting to be
+ * filed (ds_ed_schedule_all). */
+static size_t event_bytes(const ds_world *w)
+{
+    return ed_bytes(w->n, w->radius_max, w->box.side[0], w->box.side[1], w->broadphase) +
+           (ds_box_any_periodic(&w->box) ? 2 * w->n * sizeof(int32_t) : 0);
+}
+
+size_t ds_ed_bytes(const ds_world *w) { return event_bytes(w) + w->n * sizeof(double); }
+
+void ds_ed_destroy(ds_sim *sim)
+{
+    ds_events *e = sim->state;
+    if (!e)
+        return;
+    free(e->law.base);
+    free(e->times);
+    free(e->image);
+    ds_eq_destroy(e->queue);
+    ds_cells_free(&e->cells);
+    free(e->disk);
+    free(e);
+    sim->state = NULL;
+}
+
+/* Orders the slots by cell, row by row: disks that meet in events are
+ * then mostly near each other in memory. */
+static ds_status sort_slots_by_cell(ds_disks *disks, const ds_cells *cells)
+{
+    const size_t n = disks->n, count = (size_t)cells->nx * cells->ny;
+    uint32_t *start = calloc(count + 1, sizeof *start);
+    uint32_t *order = malloc(n * sizeof *order);
+    ds_status st = start && order ? DS_OK : DS_ERR_NOMEM;
+    if (st == DS_OK) {
+        for (size_t k = 0; k < n; ++k)
+            ++start[ds_cells_index(cells, ds_cells_column(cells, disks->x[k]),
+                                   ds_cells_row(cells, disks->y[k])) +
+                    1];
+        for (size_t c = 0; c < count; ++c)
+            start[c + 1] += start[c];
+        for (size_t k = 0; k < n; ++k)
+            order[start[ds_cells_index(cells, ds_cells_column(cells, disks->x[k]),
+                                       ds_cells_row(cells, disks->y[k]))]++] = (uint32_t)k;
+        st = ds_disks_permute(disks, order);
+    }
+    free(start);
+    free(order);
+    return st;
+}
+
+/* Predicts every disk, then builds the calendar from all the times at once
+ * (it sizes its buckets from them). Until then every disk's time is
+ * +infinity, so no pair is skipped for its partner's earlier event: the
+ * times wait in an array of their own. */
+void ds_ed_schedule_all(ds_events *e, size_t n)
+{
+    for (size_t k = 0; k < n; ++k)
+        e->times[k] = ds_ed_predict(e, (uint32_t)k);
+    for (size_t k = 0; k < n; ++k)
+        e->disk[k].next = e->times[k];
+    e->tested = 0; /* the first predictions are not the run's tests */
+}
+
+ds_status ds_ed_alloc(ds_sim *sim)
+{
+    const ds_world *w = &sim->world;
+    const size_t n = w->n;
+    ds_events *e = calloc(1, sizeof *e);
+    if (!e)
+        return DS_ERR_NOMEM;
+    sim->state = e;
+    e->box = w->box;
+    e->one_radius = w->radius;
+    e->sigma2 = 4.0 * w->radius * w->radius;
+    /* The clock starts at the present step boundary (ds_sim_set_disks comes
+     * here later in a run). */
+    e->epoch = (double)sim->steps * w->dt;
+    /* Move the epoch about once per time a disk takes to cross the box:
+     * by then every disk has had several events, so the O(n) rebase is
+     * cheap beside them, and times stay below ~10 crossing times. */
+    e->rebase_time = fmax(w->box.side[0], w->box.side[1]) / w->speed;
+    e->law.scale = 1.0;
+    e->disk = ds_large_alloc(n * sizeof(ed_disk));
+    e->times = malloc((n ? n : 1) * sizeof *e->times);
+    ds_status st = e->disk && e->times ? DS_OK : DS_ERR_NOMEM;
+    if (st == DS_OK && ds_box_any_periodic(&e->box) &&
+        !(e->image = calloc(2 * (n ? n : 1), sizeof *e->image)))
+        st = DS_ERR_NOMEM;
+    if (st == DS_OK)
+        st = ds_cells_init(&e->cells, n, e->box.side[0], e->box.side[1], 2.0 * w->radius_max,
+                           w->broadphase == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
+    if (st == DS_OK)
+        st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));
+    /* Fetching ahead pays once the state outgrows the caches; below, it is
+     * work for nothing. Measured at area fraction 0.5 (median of 3, ns per
+     * collision, off / on): 10^4 disks 870 / 995, 3 10^4 992 / 1093,
+     * 10^5 2064 / 1188, 3 10^5 1882 / 1279. */
+    e->fetching = event_bytes(w) > DS_FETCH_AHEAD_BYTES;
+    return st; /* on failure the table's destroy frees what was made */
+}
+
+void ds_ed_start(ds_events *e, double now)
+{
+    ds_eq_build(e->queue, now);
+    if (e->fetching)
+        ds_eq_on_soon(e->queue, ds_fetch_on_soon, e, DS_FETCH_LOOKAHEAD);
+}
+
+/* The records are copied from the disk arrays in slot order, once the
+ * slots are sorted by cell: record k is slot k's disk, which show_at
+ * copies back. */
+ds_status ds_ed_create(ds_sim *sim)
+{
+    const size_t n = sim->world.n;
+    ds_status st = ds_ed_alloc(sim);
+    ds_events *e = sim->state;
+    if (st == DS_OK)
+        st = sort_slots_by_cell(&sim->disks, &e->cells);
+    if (st != DS_OK)
+        return st;
+    /* After the cell sort (which moved the arrays). */
+    e->radius = sim->disks.r;
+    e->mass = sim->disks.m;
+    const ds_disks *disks = &sim->disks;
+    for (size_t k = n; k-- > 0;) {
+        ed_disk *d = &e->disk[k];
+        memset(d, 0, sizeof *d);
+        d->x = disks->x[k];
+        d->y = disks->y[k];
+        d->vx = disks->vx[k];
+        d->vy = disks->vy[k];
+        d->column = (uint16_t)ds_cells_column(&e->cells, d->x);
+        d->row = (uint16_t)ds_cells_row(&e->cells, d->y);
+        d->next = INFINITY;
+        ds_cells_add(&e->cells, ds_cells_index(&e->cells, d->column, d->row), (uint32_t)k);
+        if (e->image) { /* the arrays' centres are in the box: no wrap to undo */
+            e->image[2 * k] = disks->ix[k];
+            e->image[2 * k + 1] = disks->iy[k];
+        }
+    }
+    ds_ed_schedule_all(e, n);
+    ds_ed_start(e, 0.0);
+    return DS_OK;
+}
+
