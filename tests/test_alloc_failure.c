@@ -6,8 +6,8 @@
  * than k calls. The operations are creation (ds_sim_create: both
  * integrators, every boundary, both placements, every broad phase, one
  * kind and mixtures), growth (ds_sim_set_growth, and a run in which growth
- * builds its state again), checkpoints (ds_checkpoint_parse, ds_checkpoint_load)
- * and ds_sim_set_disks. Each time the operation either refuses with
+ * builds its state again), checkpoints (ds_checkpoint_parse, ds_checkpoint_load),
+ * ds_sim_set_disks and the granular setters. Each time the operation either refuses with
  * DS_ERR_NOMEM, leaving no simulation or one that steps on exactly as if
  * it had never been called, or does what it does without the failure
  * (a fallback), to the bit; a growing run that cannot widen its cells
@@ -589,6 +589,65 @@ static void test_starting_growth_survives_every_failed_allocation(void **state)
     }
 }
 
+/* The granular setters with the k-th allocation failing (the
+ * event-driven integrator's time of last collision, a disk column, and a
+ * drive's kicks): DS_ERR_NOMEM and the simulation unchanged to the bit,
+ * or the rules set as without the failure; and a granular run (restitution,
+ * a field, a drive) allocates nothing, with every configuration whose
+ * box has walls along y. */
+static ds_status make_granular(ds_sim *sim)
+{
+    ds_status st = ds_sim_set_restitution(sim, 0.8, 0.9, NULL);
+    if (st == DS_OK && ds_sim_get_boundary(sim) != DS_BOUNDARY_PERIODIC)
+        st = ds_sim_set_gravity(sim, 0.0, -50.0, NULL);
+    return st == DS_OK ? ds_sim_set_drive(sim, 100.0, NULL) : st;
+}
+
+static void test_granular_rules_survive_every_failed_allocation(void **state)
+{
+    (void)state;
+    for (size_t c = 0; c < CONFIGS; ++c) {
+        ds_sim *sim = created(&configs[c]);
+        ds_sim_run(sim, 5, NULL);
+        bytes b = saved(sim);
+        const shown unchanged = shown_after(sim, GO_ON);
+        assert_int_equal(make_granular(sim), DS_OK);
+        const shown granular = shown_after(sim, GO_ON);
+        arm(0, 0);
+        ds_sim_run(sim, GO_ON, NULL);
+        assert_int_equal(calls_counted(), 0);
+        ds_sim_destroy(sim);
+        sim = loaded(b);
+        arm(0, 0);
+        assert_int_equal(make_granular(sim), DS_OK);
+        const unsigned long calls = calls_counted();
+        ds_sim_destroy(sim);
+        for (int persistent = 0; persistent <= 1; ++persistent)
+            for (unsigned long k = 1; k <= calls; ++k) {
+                sim = loaded(b);
+                arm(k, persistent);
+                const ds_status st = ds_sim_set_restitution(sim, 0.8, 0.9, NULL);
+                assert_true(disarm() || st == DS_OK);
+                if (st == DS_ERR_NOMEM) {
+                    assert_unchanged(sim, b, configs[c].name, k);
+                    assert_goes_on_as(sim, GO_ON, &unchanged, configs[c].name, k);
+                } else {
+                    assert_int_equal(st, DS_OK);
+                    arm(k, persistent);
+                    const ds_status rest = make_granular(sim);
+                    (void)disarm();
+                    if (rest == DS_OK)
+                        assert_goes_on_as(sim, GO_ON, &granular, configs[c].name, k);
+                    else
+                        assert_int_equal(rest, DS_ERR_NOMEM);
+                }
+                ds_sim_destroy(sim);
+            }
+        free(b.p);
+        print_message("%-32s granular rules: %lu allocations\n", configs[c].name, calls);
+    }
+}
+
 /* A growing run makes its state again with wider cells as the radii
  * grow; with the k-th allocation of the run failing, growth stops at that
  * step's end (the cells could not hold the contacts of the next), and so
@@ -674,6 +733,7 @@ int main(void)
         cmocka_unit_test(test_set_all_survives_every_failed_allocation),
         cmocka_unit_test(test_starting_growth_survives_every_failed_allocation),
         cmocka_unit_test(test_a_growing_run_survives_every_failed_allocation),
+        cmocka_unit_test(test_granular_rules_survive_every_failed_allocation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -141,15 +141,17 @@ ds_status ds_writer_close(ds_writer *writer, ds_error *err);
  * text), the length of the payload (64 bits), the payload, and an FNV-1a
  * 64-bit checksum of all that precedes it. Every integer and double (by
  * its IEEE 754 bits) is little-endian whatever the machine, so a file
- * moves between machines. This library writes version 3 and reads every
+ * moves between machines. This library writes version 4 and reads every
  * earlier one: 2.x wrote 2 and 1. Version 3 names a bit per disk column
  * written, adds the kinds of disk and their names after the disks, and a
  * list of protocols after the integrator's part (2.x kept a growth inside
  * the event-driven integrator's, which loads as the growth protocol; a
- * 2.x file loads as disks of one kind); version 1 lacks the
- * stress integral's parts (a run loaded from it starts
- * ds_sim_get_stress_integral at 0). */
-#define DS_CHECKPOINT_FORMAT_VERSION 3
+ * 2.x file loads as disks of one kind); version 4 adds the granular
+ * rules (restitution, contact time, field) and the energy books after
+ * the stress integral's parts (an older file's run is elastic, without
+ * a field); version 1 lacks the stress integral's parts (a run loaded
+ * from it starts ds_sim_get_stress_integral at 0). */
+#define DS_CHECKPOINT_FORMAT_VERSION 4
 
 /* Bytes ds_checkpoint_format writes for sim (0 for NULL). */
 size_t ds_checkpoint_get_size(const ds_sim *sim);

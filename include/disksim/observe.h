@@ -61,9 +61,27 @@ double ds_sim_get_temperature(const ds_sim *sim);
  * about (Z - 1) / N). Monte Carlo at the same N, A and kT gives the same
  * Z. */
 double ds_sim_get_compressibility_factor(const ds_sim *sim);
-/* Zeroes the wall impulse, wall count, collision virial and pressure
- * clock (not the collision count, the time or the stress integral), so a
- * relaxation period can be discarded. */
+/* The energy books of a granular gas (ds_sim_set_restitution,
+ * ds_sim_set_drive), since the last reset: the kinetic energy the
+ * collisions and wall turns took out (their restitution below 1; a TC
+ * model's elastic collision takes none), and the energy a drive's kicks
+ * put in; the same per unit time over the time since the reset (0 before
+ * any step). In a steady state the two powers agree within their
+ * fluctuations; at every step boundary the kinetic energy plus the
+ * potential one is what it was at the reset less the lost and plus the
+ * input energy, to rounding. (A field's floor, which sends a disk
+ * resting on a wall off at the least speed of a contact time's flight,
+ * puts in what it adds as negative loss.) */
+double ds_sim_get_energy_lost(const ds_sim *sim);
+double ds_sim_get_energy_input(const ds_sim *sim);
+double ds_sim_get_power_lost(const ds_sim *sim);
+double ds_sim_get_power_input(const ds_sim *sim);
+/* The potential energy of the field (ds_sim_set_gravity): -sum m_i (gx
+ * x_i + gy y_i), zero at the origin of the box (0 without a field). */
+double ds_sim_get_potential_energy(const ds_sim *sim);
+/* Zeroes the wall impulse, wall count, collision virial, energy books
+ * and pressure clock (not the collision count, the time or the stress
+ * integral), so a relaxation period can be discarded. */
 void ds_sim_reset_observables(ds_sim *sim);
 /* The time integral of the pressure tensor times the area since
  * ds_sim_create (ds_sim_reset_observables leaves it; a checkpoint carries

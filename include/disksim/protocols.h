@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * disksim: protocols, what acts on a running simulation from outside its
- * dynamics: growth (Lubachevsky-Stillinger compression). Each is set on a
+ * dynamics: growth (Lubachevsky-Stillinger compression) and driving
+ * (white-noise kicks). Each is set on a
  * simulation, acts as ds_sim_run goes, and is carried by checkpoints.
  * Included by disk_sim.h.
  */
@@ -66,6 +67,35 @@ ds_growth_state ds_sim_get_growth_state(const ds_sim *sim);
  * collisions (when it jammed, the window that stopped it); 0 before its
  * first window, and for a simulation that never grew. */
 double ds_sim_get_growth_z(const ds_sim *sim);
+
+/* ------------------------------------------------------------------ */
+/* Driving                                                             */
+/* ------------------------------------------------------------------ */
+
+/* White-noise driving (random kicks; van Noije and Ernst 1998), which
+ * holds a granular gas (ds_sim_set_restitution) in a steady state: from
+ * now on, at the end of every step, each velocity component of every
+ * disk changes by a Gaussian number of variance strength dt, the kicks'
+ * mass-weighted mean taken out so that the total momentum stays. The
+ * velocities diffuse at S = strength (box units^2 per time^3), and energy
+ * goes in at sum over the disks of m_i S (1 - m_i / M) per unit time, (N
+ * - 1) m S for N equal masses (ds_sim_get_power_input). The kicks are the
+ * noise integrated over a step (Euler-Maruyama): dt must be short beside
+ * the mean free time for them to be white noise (docs/physics.md). Both
+ * integrators. The numbers come from a stream of the simulation's seed
+ * of the drive's own (no number of the placement's), drawn in generation
+ * order; checkpoints carry the stream, so a loaded run kicks as the saved
+ * one would have; set again, the strength changes and the stream goes
+ * on. 0 stops the drive.
+ *
+ * DS_ERR_ARG (field "strength", value and limit) for a strength < 0, not
+ * finite or above DS_DRIVE_MAX, or while a growth grows (err naming
+ * "growth": growth takes out the heat its collisions add, and would take
+ * the drive's); DS_ERR_NOMEM, nothing changed, without memory for the
+ * kicks (16 bytes a disk twice). */
+#define DS_DRIVE_MAX 1e24
+ds_status ds_sim_set_drive(ds_sim *sim, double strength, ds_error *err);
+double ds_sim_get_drive(const ds_sim *sim); /* the strength; 0 without a drive or for NULL */
 
 #ifdef __cplusplus
 }

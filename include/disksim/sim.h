@@ -168,6 +168,70 @@ ds_status ds_sim_set_disks(ds_sim *sim, const ds_disk *disks, ds_error *err);
  * past DS_VELOCITY_MAX (err gives the factor and the largest it may be). */
 ds_status ds_sim_scale_velocities(ds_sim *sim, double factor, ds_error *err);
 
+/* ------------------------------------------------------------------ */
+/* Granular rules: restitution, the TC model, a field                  */
+/* ------------------------------------------------------------------ */
+
+/* The coefficients of normal restitution of disk-disk collisions (disks)
+ * and of wall turns (walls), each in (0, 1], from ds_sim_get_time on;
+ * both 1 (elastic) when a simulation is created. A pair of masses m_i,
+ * m_j colliding with relative normal velocity u = (v_j - v_i) . n < 0 (n
+ * from i to j) leaves with -e u: v_i changes by (1 + e) m_j / (m_i + m_j)
+ * u n and v_j by the opposite momentum, and the kinetic energy falls by
+ * (1 - e^2) m_i m_j / (m_i + m_j) u^2 / 2. A wall turns a disk's normal
+ * velocity v_n into -e v_n, taking (1 - e^2) m v_n^2 / 2 and receiving
+ * (1 + e) m |v_n| of momentum (ds_sim_get_wall_impulse). e = 1 is the
+ * elastic collision to the bit. The energy taken is in
+ * ds_sim_get_energy_lost.
+ *
+ * With e < 1 the event-driven integrator follows the TC model (Luding
+ * and McNamara 1998): a collision of a disk with a disk or a wall within
+ * the contact time (ds_sim_set_contact_time) after that disk's previous
+ * collision is elastic, so a run can never take infinitely many
+ * collisions in a finite time (the inelastic collapse) and every step
+ * ends (docs/physics.md says what the model changes). The time step
+ * applies e to every collision: it resolves a pair once a step at most
+ * and cannot collapse. A growth's collisions are its own (elastic in
+ * the frame of the receding surfaces).
+ *
+ * DS_ERR_ARG (err naming "restitution" or "wall_restitution", the value
+ * and the limit) for a coefficient not in (0, 1], or for e < 1 while a
+ * growth grows (ds_sim_set_growth); DS_ERR_NOMEM, nothing changed,
+ * without memory for each disk's time of last collision (the
+ * event-driven integrator's, 8 bytes a disk). */
+ds_status ds_sim_set_restitution(ds_sim *sim, double disks, double walls, ds_error *err);
+double ds_sim_get_restitution(const ds_sim *sim);      /* disk-disk; 1 for NULL */
+double ds_sim_get_wall_restitution(const ds_sim *sim); /* disk-wall; 1 for NULL */
+
+/* The TC model's contact time t_c, in simulated time (> 0 and finite, or
+ * 0 for the default): DS_CONTACT_TIME_DEFAULT times 2 R / speed, the time
+ * a disk of ds_params.radius takes to cross its diameter at the initial
+ * speed. A disk resting on a wall under a field (ds_sim_set_gravity)
+ * bounces about once per t_c, so a bed of such disks costs about n / t_c
+ * events per unit time. DS_ERR_ARG (field "contact_time") for another
+ * value. */
+#define DS_CONTACT_TIME_DEFAULT 1e-4
+ds_status ds_sim_set_contact_time(ds_sim *sim, double contact_time, ds_error *err);
+double ds_sim_get_contact_time(const ds_sim *sim); /* as resolved; 0 for NULL */
+
+/* A uniform field: from ds_sim_get_time on every disk accelerates by (gx,
+ * gy) (box units per time squared; gravity of magnitude g is (0, -g)),
+ * and has the potential energy -m (gx x + gy y) (ds_sim_get_potential_energy).
+ * The event-driven integrator flies parabolas: pairs collide at the times
+ * of their straight relative motion (both fall alike), walls and its
+ * cells' edges are met at the roots of quadratics; the kinetic plus the
+ * potential energy of an elastic run is conserved to rounding. The time
+ * step adds g dt to every velocity at the start of each step. A disk
+ * that a field presses against a wall is sent off no slower than g_n t_c
+ * / 2 (the speed of a flight lasting the contact time: a disk resting on
+ * the floor, which hard disks cannot hold still, hops once per t_c at
+ * most). DS_ERR_ARG (field "gx" or "gy") for a component not finite, of
+ * magnitude beyond DS_GRAVITY_MAX, or other than 0 along a periodic axis
+ * (the disks would fall for ever); (0, 0) turns the field off. */
+#define DS_GRAVITY_MAX 1e12
+ds_status ds_sim_set_gravity(ds_sim *sim, double gx, double gy, ds_error *err);
+void ds_sim_get_gravity(const ds_sim *sim, double *gx, double *gy); /* (0, 0) for NULL */
+
 #ifdef __cplusplus
 }
 #endif

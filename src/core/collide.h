@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* The collision rule, in one place for every integrator: an elastic
- * collision of two disks along their line of centres, and what it adds to
- * the virial. Not installed. */
+/* The collision rule, in one place for every integrator: a collision of
+ * two disks along their line of centres, elastic or with a coefficient of
+ * restitution, a wall turn, the TC model's choice between them, and what
+ * each adds to the virial, the pressure tensor's parts and the energy
+ * books. Not installed. */
 #ifndef DS_COLLIDE_H
 #define DS_COLLIDE_H
 
@@ -36,11 +38,33 @@ static inline void ds_tally_flight(ds_tally *t, double span)
     t->kinetic_integral[2] += t->kinetic[2] * span;
 }
 
+/* The kinetic tensor's integral over span of falling disks: every
+ * velocity is v + g tau after tau, so the tensor sum m v_a v_b is K_ab +
+ * tau (g_a P_b + P_a g_b) + tau^2 M g_a g_b (P the momentum, M the total
+ * mass), whose integral is taken exactly; K and P are left at the end. */
+static inline void ds_tally_fall(ds_tally *t, double span)
+{
+    const double gx = t->field[0], gy = t->field[1], px = t->momentum[0], py = t->momentum[1];
+    const double lin[3] = {2.0 * gx * px, 2.0 * gy * py, gx * py + gy * px};
+    const double quad[3] = {t->mass * gx * gx, t->mass * gy * gy, t->mass * gx * gy};
+    for (int c = 0; c < 3; ++c) {
+        t->kinetic_integral[c] +=
+            span * (t->kinetic[c] + span * (0.5 * lin[c] + span * quad[c] / 3.0));
+        t->kinetic[c] += span * (lin[c] + span * quad[c]);
+    }
+    t->momentum[0] += t->mass * gx * span;
+    t->momentum[1] += t->mass * gy * span;
+}
+
 /* The same from the integrator time tally->stress_clock to t, which it
- * then is: before a velocity changes at t. */
+ * then is: before a velocity changes at t. Straight flights keep their
+ * bits; falling ones (tally->falling) change the tensor as they go. */
 static inline void ds_tally_flight_to(ds_tally *t, double to)
 {
-    ds_tally_flight(t, to - t->stress_clock);
+    if (t->falling)
+        ds_tally_fall(t, to - t->stress_clock);
+    else
+        ds_tally_flight(t, to - t->stress_clock);
     t->stress_clock = to;
 }
 
@@ -49,6 +73,36 @@ static inline void ds_tally_flight_to(ds_tally *t, double to)
 static inline void ds_tally_wall_turn(ds_tally *t, double m, double vx, double vy)
 {
     t->kinetic[2] -= 2.0 * m * vx * vy;
+}
+
+/* A wall turn in general: the normal component along axis (0: x, 1: y) of
+ * a disk of mass m and velocity (vx, vy) becomes `after` (-e v_n, or what
+ * a field's floor gives it, time_step.c and event/falling.c): the kinetic
+ * tensor's changes, the momentum's, and the kinetic energy lost. */
+static inline void ds_tally_wall_bounce(ds_tally *t, double m, double vx, double vy, int axis,
+                                        double after)
+{
+    const double normal = axis ? vy : vx, other = axis ? vx : vy;
+    t->kinetic[axis] += m * (after * after - normal * normal);
+    t->kinetic[2] += m * other * (after - normal);
+    t->momentum[axis] += m * (after - normal);
+    t->dissipated += 0.5 * m * (normal * normal - after * after);
+}
+
+/* The TC model (Luding and McNamara 1998, Granular Matter 1, 113): a
+ * collision at time t of disks whose previous collisions were at *last_a
+ * and *last_b (-infinity: none; one disk and a wall: both the same) is
+ * elastic if either came within contact_time before it, else restitution
+ * applies; both times become t. A cluster's collisions can then come no
+ * closer than contact_time apart and still dissipate, so their number in
+ * a finite time stays finite: the inelastic collapse (McNamara and Young
+ * 1994), infinitely many collisions in finite time, cannot happen. */
+static inline double ds_tc_restitution(double restitution, double contact_time, double t,
+                                       double *last_a, double *last_b)
+{
+    const int elastic = t - *last_a < contact_time || t - *last_b < contact_time;
+    *last_a = *last_b = t;
+    return elastic ? 1.0 : restitution;
 }
 
 /* Disks a and b with velocities (*avx, *avy) and (*bvx, *bvy), b seen
@@ -88,6 +142,53 @@ static inline void ds_collide_masses(double rx, double ry, double approach, doub
     *bvy -= kb * s * ry;
     t->virial -= 2.0 * ma * mb / total * approach;
     ++t->collisions;
+}
+
+/* A collision with coefficient of restitution e in (0, 1) (at e = 1 the
+ * rules take ds_collide and ds_collide_masses, which keep their bits;
+ * this form agrees with them to rounding): the relative normal velocity
+ * u = approach / |r| becomes -e u. Disk a's velocity changes by (1 + e)
+ * mb / M s r and b's by -(1 + e) ma / M s r (M = ma + mb, momentum
+ * conserved), the impulse on a is J s r with J = (1 + e) ma mb / M, the
+ * virial r_ab . dp_a = -J approach, and the kinetic energy falls by
+ * (1 - e^2) (ma mb / M) u^2 / 2 = (1 - e) J s approach / 2. The kinetic
+ * tensor changes by J ((1 + e) s^2 r_a r_b - s (r_a dv_b + r_b dv_a)),
+ * whose trace is minus twice that loss (ds_collide_stress's at e = 1). */
+static inline void ds_collide_inelastic(double rx, double ry, double approach, double ma, double mb,
+                                        double e, double *avx, double *avy, double *bvx,
+                                        double *bvy, ds_tally *t)
+{
+    const double s = approach / (rx * rx + ry * ry), total = ma + mb;
+    const double ka = (1.0 + e) * mb / total, kb = (1.0 + e) * ma / total, j = ma * ka;
+    const double dvx = *bvx - *avx, dvy = *bvy - *avy, sx = s * rx, sy = s * ry;
+    t->stress_virial[0] -= j * sx * rx;
+    t->stress_virial[1] -= j * sy * ry;
+    t->stress_virial[2] -= j * sx * ry;
+    t->kinetic[0] += j * ((1.0 + e) * sx * sx - 2.0 * sx * dvx);
+    t->kinetic[1] += j * ((1.0 + e) * sy * sy - 2.0 * sy * dvy);
+    t->kinetic[2] += j * ((1.0 + e) * sx * sy - sx * dvy - sy * dvx);
+    *avx += ka * sx;
+    *avy += ka * sy;
+    *bvx -= kb * sx;
+    *bvy -= kb * sy;
+    t->virial -= j * approach;
+    t->dissipated += 0.5 * (1.0 - e) * j * s * approach;
+    ++t->collisions;
+}
+
+/* A collision with restitution e (1: elastic, with the bits of
+ * ds_collide or ds_collide_masses; masses NULL-free: ma = mb = 1 and
+ * `masses` 0 for disks of one mass). */
+static inline void ds_collide_with(double rx, double ry, double approach, int masses, double ma,
+                                   double mb, double e, double *avx, double *avy, double *bvx,
+                                   double *bvy, ds_tally *t)
+{
+    if (e < 1.0)
+        ds_collide_inelastic(rx, ry, approach, ma, mb, e, avx, avy, bvx, bvy, t);
+    else if (masses)
+        ds_collide_masses(rx, ry, approach, ma, mb, avx, avy, bvx, bvy, t);
+    else
+        ds_collide(rx, ry, approach, avx, avy, bvx, bvy, t);
 }
 
 #endif

@@ -28,11 +28,43 @@
 #define DS_ALWAYS_INLINE inline
 #endif
 
+/* How disks meet each other and the walls, and how they fly between
+ * (ds_sim_set_restitution, ds_sim_set_contact_time, ds_sim_set_gravity:
+ * sim/rules.c writes them, the integrators read them). Elastic and
+ * straight when a simulation is created. */
+typedef struct ds_rules {
+    /* Coefficients of normal restitution, in (0, 1]: the relative normal
+     * velocity of a colliding pair, and a disk's normal velocity at a
+     * wall, come out -e times what they went in (1: elastic). */
+    double restitution, wall_restitution;
+    /* The TC model's contact time t_c (> 0): a collision within t_c of
+     * either disk's previous one is elastic (the event-driven
+     * integrator's; core/collide.h). */
+    double contact_time;
+    /* The field: every disk's acceleration along x and y (0 along a
+     * periodic axis), box units per time squared. */
+    double field[2];
+} ds_rules;
+
+/* Whether disks lose energy at all (and the event-driven integrator
+ * keeps each disk's time of last collision), and whether they fall. */
+static inline int ds_rules_inelastic(const ds_rules *r)
+{
+    return r->restitution < 1.0 || r->wall_restitution < 1.0;
+}
+
+static inline int ds_rules_fall(const ds_rules *r)
+{
+    return r->field[0] != 0.0 || r->field[1] != 0.0;
+}
+
 /* What the parts read: the parameters with the defaults resolved, fixed
- * at creation, and two things that may change as the run goes, each with
- * one writer: the box (its sides change only through a state built again
- * for them; sheared images' shift moves with time) and the disks' sizes
- * (ds_world_take_radii, whenever radii change: growth). */
+ * at creation, and three things that may change as the run goes, each
+ * with one writer: the box (its sides change only through a state built
+ * again for them; sheared images' shift moves with time), the disks'
+ * sizes (ds_world_take_radii, whenever radii change: growth) and the
+ * rules of collisions and flights (sim/rules.c, through the integrator's
+ * take_rules). */
 typedef struct ds_world {
     size_t n;
     double radius, speed, dt;
@@ -49,6 +81,7 @@ typedef struct ds_world {
     ds_broadphase broadphase; /* resolved, never DS_BROADPHASE_AUTO */
     ds_placement placement;
     uint64_t seed;
+    ds_rules rules;
 } ds_world;
 
 /* The box a request names: its sides and, along each axis, walls or
@@ -91,6 +124,16 @@ typedef struct ds_tally {
      * integral, which has reached the integrator's time stress_clock. */
     double stress_virial[3], kinetic[3], kinetic_integral[3];
     double stress_clock;
+    /* With a field the kinetic tensor changes between collisions too: an
+     * integrator whose disks fall continuously (the event-driven one) sets
+     * falling and the field, and the momentum and total mass (ds_sim_run
+     * sums them with the kinetic tensor) carry it (collide.h). */
+    int falling;
+    double field[2], momentum[2], mass;
+    /* The energy books since the reset: kinetic energy the collisions and
+     * wall turns took out (a TC model's elastic ones none), and what a
+     * drive put in. */
+    double dissipated, injected;
 } ds_tally;
 
 typedef struct ds_integrator_ops ds_integrator_ops;
@@ -209,6 +252,17 @@ struct ds_integrator_ops {
      * (*rebuilt then set; the state's origin is then the present).
      * DS_ERR_NOMEM, nothing changed, without memory for that. */
     ds_status (*widen)(ds_sim *sim, double until, int *rebuilt);
+    /* At the present step boundary, slot k's velocity plus (dv[2 k],
+     * dv[2 k + 1]) for every k (a drive's kicks): the tally's injected
+     * energy, kinetic tensor and momentum follow. */
+    void (*kick)(ds_sim *sim, const double *dv);
+
+    /* The rules (collide.h, core.h) from the present step boundary on,
+     * sim->world.rules still the old ones: what the integrator keeps of
+     * them made ready (a field's flights predicted again, each disk's
+     * time of last collision). DS_ERR_NOMEM, nothing changed, without
+     * memory for that. NULL: it reads sim->world.rules as it goes. */
+    ds_status (*take_rules)(ds_sim *sim, const ds_rules *rules);
 };
 
 #if defined(__GNUC__)

@@ -210,3 +210,17 @@ void ds_disks_kinetic_tensor(const ds_disks *d, double k[3])
     k[1] = yy;
     k[2] = xy;
 }
+
+void ds_disks_momentum(const ds_disks *d, double p[2], double *mass)
+{
+    double px = 0.0, py = 0.0, total = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0;
+        px += m * d->vx[i];
+        py += m * d->vy[i];
+        total += m;
+    }
+    p[0] = px;
+    p[1] = py;
+    *mass = total;
+}

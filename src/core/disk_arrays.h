@@ -43,7 +43,9 @@
     X(m, double, 0, 1.0, 1.0, f64)          /* a mixture's mass (else 1) */                      \
     X(ix, int32_t, 0, 0, 0, i32)            /* periodic images crossed along x */                \
     X(iy, int32_t, 0, 0, 0, i32)            /* ... and along y (both or neither) */              \
-    X(kind, uint32_t, 0, 0u, 0u, u32)       /* a mixture's species index */
+    X(kind, uint32_t, 0, 0u, 0u, u32)       /* a mixture's species index */                      \
+    X(last_hit, double, 0, -INFINITY, -INFINITY, f64) /* its last collision's time (the TC   */   \
+                                                      /* model's, event-driven time)         */
 
 typedef enum ds_column {
 #define DS_COLUMN_ENUM(name, type, every, fresh, sentinel, codec) DS_COLUMN_##name,
@@ -124,6 +126,8 @@ int ds_disks_load_all(ds_disks *d, ds_reader *r);
 /* The kinetic tensor sum m v_a v_b over the disks: k[0] xx, k[1] yy,
  * k[2] xy (m = 1 without masses). */
 void ds_disks_kinetic_tensor(const ds_disks *d, double k[3]);
+/* The momentum sum m v and the total mass (m = 1 without masses). */
+void ds_disks_momentum(const ds_disks *d, double p[2], double *mass);
 
 /* An optional column's presence does not change during a run, so the
  * branches on it are always predicted. */

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Protocols: what acts on a running simulation from outside its dynamics
- * (growth today; a thermostat, a barostat, driving next). Each fills one
+ * (growth and driving today; a thermostat, a barostat next). Each fills one
  * table of hooks; the integrators call the hooks through the inline
  * helpers below and hold no protocol's code. A protocol works in the
  * integrator's time (the time the integrator hands it), and changes the
@@ -20,7 +20,11 @@
 
 /* The kinds, one slot each; a new protocol is one enumerator here and
  * one line in sim/tables.c. */
-typedef enum ds_protocol_kind { DS_PROTOCOL_GROWTH = 0, DS_PROTOCOL_KIND_COUNT } ds_protocol_kind;
+typedef enum ds_protocol_kind {
+    DS_PROTOCOL_GROWTH = 0,
+    DS_PROTOCOL_DRIVE,
+    DS_PROTOCOL_KIND_COUNT
+} ds_protocol_kind;
 
 /* A collision as a protocol that watches them sees it: the pair (their
  * integrator records), its time, and the kinetic energy it added (0 for

@@ -18,8 +18,8 @@ void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
 {
     for (size_t k = 0; k < disks->n; ++k) {
         const ed_disk *d = &e->disk[k];
-        const double lag = t - d->t;
-        double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
+        double x, y, vx, vy;
+        ds_ed_lab_at(e, d, t, &x, &y, &vx, &vy);
         if (e->image) { /* a periodic axis */
             int32_t ix = e->image[2 * k], iy = e->image[2 * k + 1];
             ds_box_wrap(&e->box, &x, &y, &ix, &iy);
@@ -28,11 +28,61 @@ void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
         }
         disks->x[k] = x;
         disks->y[k] = y;
-        disks->vx[k] = d->vx;
-        disks->vy[k] = d->vy;
+        disks->vx[k] = vx;
+        disks->vy[k] = vy;
     }
 }
 
+void ds_ed_rebase(ds_events *e, size_t n, double t)
+{
+    for (size_t k = 0; k < n; ++k) {
+        ds_ed_advance(&e->disk[k], t);
+        e->disk[k].t = 0.0;
+        e->disk[k].next -= t;
+    }
+    if (e->falls) { /* out of the frame that fell from the old origin */
+        const double h = 0.5 * t * t;
+        for (size_t k = 0; k < n; ++k) {
+            ed_disk *d = &e->disk[k];
+            d->x += e->field[0] * h;
+            d->y += e->field[1] * h;
+            d->vx += e->field[0] * t;
+            d->vy += e->field[1] * t;
+        }
+    }
+    if (e->last_hit)
+        for (size_t k = 0; k < n; ++k)
+            e->last_hit[k] -= t;
+    ds_eq_build(e->queue, 0.0);
+    e->epoch += t;
+    e->law.from -= t;
+}
+
+/* The time a disk takes to cross the box at the initial speed: by then
+ * every disk has had several events, so the O(n) rebase is cheap beside
+ * them, and times stay below ~10 crossing times. A field's frame moves
+ * g t^2 / 2 from the origin: no further than the box's longer side
+ * before the origin moves, so a centre in the frame keeps the digits of
+ * one in the box. */
+double ds_ed_rebase_time(const ds_world *w, const ds_rules *rules)
+{
+    const double side = fmax(w->box.side[0], w->box.side[1]);
+    const double g = hypot(rules->field[0], rules->field[1]);
+    const double crossing = side / w->speed;
+    return g > 0.0 ? fmin(crossing, sqrt(2.0 * side / g)) : crossing;
+}
+
+void ds_ed_adopt_rules(ds_events *e, const ds_rules *rules, double *last_hit)
+{
+    e->inelastic = ds_rules_inelastic(rules);
+    e->falls = ds_rules_fall(rules);
+    e->restitution = rules->restitution;
+    e->wall_restitution = rules->wall_restitution;
+    e->contact_time = rules->contact_time;
+    e->field[0] = rules->field[0];
+    e->field[1] = rules->field[1];
+    e->last_hit = last_hit;
+}
 
 static ds_broadphase grid_of(ds_broadphase bp)
 {
@@ -124,10 +174,8 @@ ds_status ds_ed_alloc(ds_sim *sim)
     /* The clock starts at the present step boundary (ds_sim_set_disks comes
      * here later in a run). */
     e->epoch = (double)sim->steps * w->dt;
-    /* Move the epoch about once per time a disk takes to cross the box:
-     * by then every disk has had several events, so the O(n) rebase is
-     * cheap beside them, and times stay below ~10 crossing times. */
-    e->rebase_time = fmax(w->box.side[0], w->box.side[1]) / w->speed;
+    e->rebase_time = ds_ed_rebase_time(w, &w->rules);
+    ds_ed_adopt_rules(e, &w->rules, sim->disks.last_hit);
     e->law.scale = 1.0;
     e->disk = ds_large_alloc(n * sizeof(ed_disk));
     e->times = malloc((n ? n : 1) * sizeof *e->times);
@@ -167,9 +215,13 @@ ds_status ds_ed_create(ds_sim *sim)
         st = sort_slots_by_cell(&sim->disks, &e->cells);
     if (st != DS_OK)
         return st;
-    /* After the cell sort (which moved the arrays). */
+    /* After the cell sort (which moved the arrays). A new state forgets
+     * the disks' last collisions (their times were the old clock's). */
     e->radius = sim->disks.r;
     e->mass = sim->disks.m;
+    e->last_hit = sim->disks.last_hit;
+    for (size_t k = 0; e->last_hit && k < n; ++k)
+        e->last_hit[k] = -INFINITY;
     const ds_disks *disks = &sim->disks;
     for (size_t k = n; k-- > 0;) {
         ed_disk *d = &e->disk[k];

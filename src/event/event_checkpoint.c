@@ -244,8 +244,8 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_e
     const double slack = 1e-9 * fmax(e->box.side[0], e->box.side[1]);
     for (size_t k = 0; k < a->n; ++k) {
         const ed_disk *d = &e->disk[k];
-        const double lag = now - d->t;
-        double x = d->x + d->vx * lag, y = d->y + d->vy * lag;
+        double x, y, vx, vy;
+        ds_ed_lab_at(e, d, now, &x, &y, &vx, &vy);
         if (e->image) {
             /* The records' image counts: the arrays' less the wrap of
              * showing (ds_ed_show_at). */
@@ -254,12 +254,16 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_e
             e->image[2 * k] = (int32_t)((uint32_t)a->ix[k] - (uint32_t)ix);
             e->image[2 * k + 1] = (int32_t)((uint32_t)a->iy[k] - (uint32_t)iy);
         }
-        const int in_cell = d->x >= (double)d->column * c->wx - slack &&
-                            d->x <= (double)(d->column + 1u) * c->wx + slack &&
-                            d->y >= (double)d->row * c->wy - slack &&
-                            d->y <= (double)(d->row + 1u) * c->wy + slack;
-        if (!(d->t >= 0.0 && d->t <= now) || !in_cell || x != a->x[k] || y != a->y[k] ||
-            d->vx != a->vx[k] || d->vy != a->vy[k])
+        /* Where the record's centre is in the box at its own time. */
+        const double cx = ds_ed_lab_coordinate(e, d, 0), cy = ds_ed_lab_coordinate(e, d, 1);
+        const int in_cell = cx >= (double)d->column * c->wx - slack &&
+                            cx <= (double)(d->column + 1u) * c->wx + slack &&
+                            cy >= (double)d->row * c->wy - slack &&
+                            cy <= (double)(d->row + 1u) * c->wy + slack;
+        /* A time of last collision is a past time, or none. */
+        const int last_ok = !e->last_hit || e->last_hit[k] <= now;
+        if (!(d->t >= 0.0 && d->t <= now) || !in_cell || !last_ok || x != a->x[k] || y != a->y[k] ||
+            vx != a->vx[k] || vy != a->vy[k])
             return ds_state_refuse(err, DS_ERR_FORMAT,
                                    "disk %zu's record is not the disk of its slot", k);
     }
@@ -279,6 +283,10 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *leg
     ds_events *e = sim->state;
     e->radius = sim->disks.r;
     e->mass = sim->disks.m;
+    /* Rules that lose energy go by each disk's time of last collision. */
+    if (e->inelastic && !e->last_hit)
+        return ds_state_refuse(err, DS_ERR_FORMAT,
+                               "its collisions lose energy but it has no times of last collision");
     e->epoch = ds_get_f64(r);
     const double rebase_time = ds_get_f64(r);
     e->tested = ds_get_u64(r);

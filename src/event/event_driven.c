@@ -67,8 +67,16 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
     const double dvx = b->vx - a->vx, dvy = b->vy - a->vy;
     const double approach = rx * dvx + ry * dvy;
     /* Rounding can leave a predicted pair a hair from approaching; then
-     * there is nothing to exchange, and both are simply predicted again. */
-    if (approach < 0.0 && e->mass)
+     * there is nothing to exchange, and both are simply predicted again.
+     * Restitution below 1 goes by the TC model (core/collide.h); the
+     * relative motion is the same in the falling frame as in the box. */
+    if (approach < 0.0 && e->inelastic)
+        ds_collide_with(
+            rx, ry, approach, e->mass != NULL, e->mass ? e->mass[i] : 1.0,
+            e->mass ? e->mass[j] : 1.0,
+            ds_tc_restitution(e->restitution, e->contact_time, t, &e->last_hit[i], &e->last_hit[j]),
+            &a->vx, &a->vy, &b->vx, &b->vy, tally);
+    else if (approach < 0.0 && e->mass)
         ds_collide_masses(rx, ry, approach, e->mass[i], e->mass[j], &a->vx, &a->vy, &b->vx, &b->vy,
                           tally);
     else if (approach < 0.0)
@@ -79,8 +87,14 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
     schedule(e, j);
 }
 
-static void turn_at_wall(ds_tally *tally, ds_events *e, uint32_t i, double t, int axis_y)
+static void turn_at_wall(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis_y)
 {
+    if (e->inelastic || e->falls) { /* restitution, the TC model, the field's floor */
+        ds_ed_turn_granular(sim, e, i, t, axis_y);
+        schedule(e, i);
+        return;
+    }
+    ds_tally *tally = &sim->tally;
     ed_disk *d = &e->disk[i];
     ds_ed_advance(d, t);
     ds_tally_flight_to(tally, t);
@@ -115,7 +129,7 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
     const double box = e->box.side[axis_y];
     /* A periodic box's crossing counts in the disk's images. */
     int32_t *image = e->image ? &e->image[2 * (size_t)i + (axis_y ? 1 : 0)] : NULL;
-    if ((axis_y ? d->vy : d->vx) > 0.0) {
+    if (ds_ed_leaves_up(e, d, axis_y)) {
         if (++*c == count) { /* periodic: out at the far edge, in at 0 */
             *c = 0;
             *u -= box;
@@ -138,13 +152,12 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
 
 static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
 {
-    ds_tally *tally = &sim->tally;
     ed_disk *d = &e->disk[i];
     const uint32_t partner = d->partner;
     switch (partner) {
     case EV_WALL_X:
     case EV_WALL_Y:
-        turn_at_wall(tally, e, i, t, partner == EV_WALL_Y);
+        turn_at_wall(sim, e, i, t, partner == EV_WALL_Y);
         return;
     case EV_CELL_X:
     case EV_CELL_Y:
@@ -164,20 +177,6 @@ static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
 /* Showing the disks, moving the epoch                                  */
 /* ------------------------------------------------------------------ */
 
-/* Moves the integrator's origin to its time t (a step boundary): every
- * disk is advanced to t and every scheduled time shifted by -t. */
-static void rebase(ds_events *e, size_t n, double t)
-{
-    for (size_t k = 0; k < n; ++k) {
-        ds_ed_advance(&e->disk[k], t);
-        e->disk[k].t = 0.0;
-        e->disk[k].next -= t;
-    }
-    ds_eq_build(e->queue, 0.0);
-    e->epoch += t;
-    e->law.from -= t;
-}
-
 static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
     ds_events *e = sim->state;
@@ -185,6 +184,10 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
     ds_timer_start(&sim->collision_timer);
     double target = (double)sim->steps * sim->world.dt - e->epoch;
     sim->tally.stress_clock = target;
+    /* Falling disks change the kinetic tensor between events too. */
+    sim->tally.falling = e->falls;
+    sim->tally.field[0] = e->field[0];
+    sim->tally.field[1] = e->field[1];
     for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
@@ -207,7 +210,7 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
         ++sim->steps;
         ds_tally_flight_to(&sim->tally, target);
         if (target >= e->rebase_time) {
-            rebase(e, sim->world.n, target);
+            ds_ed_rebase(e, sim->world.n, target);
             ds_protocols_rebased(sim, target);
             target = 0.0;
             sim->tally.stress_clock = 0.0;
@@ -287,18 +290,27 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     if (e->law.rate > 0.0)
         ds_ed_growth_go_on(e, sim->world.n, now);
     const uint32_t column = ds_cells_column(cells, nd.x), row = ds_cells_row(cells, nd.y);
+    /* The disk in the records' frame (falling with a field, event_state.h). */
+    ds_disk f = nd;
+    if (e->falls) {
+        const double h = 0.5 * now * now;
+        f.x -= e->field[0] * h;
+        f.y -= e->field[1] * h;
+        f.vx -= e->field[0] * now;
+        f.vy -= e->field[1] * now;
+    }
     /* Refuse an overlap before changing anything. */
     ds_ed_stencil_cells st;
     ds_ed_stencil(e, column, row, &st);
     for (uint32_t c = 0; c < st.count; ++c)
-        if (cell_overlaps(e, st.cell[c], (uint32_t)k, now, nd.x - st.sx[c], nd.y - st.sy[c]))
+        if (cell_overlaps(e, st.cell[c], (uint32_t)k, now, f.x - st.sx[c], f.y - st.sy[c]))
             return DS_ERR_OVERLAP;
     ed_disk *d = &e->disk[k];
     ds_cells_remove(cells, ds_cells_index(cells, d->column, d->row), (uint32_t)k);
-    d->x = nd.x;
-    d->y = nd.y;
-    d->vx = nd.vx;
-    d->vy = nd.vy;
+    d->x = f.x;
+    d->y = f.y;
+    d->vx = f.vx;
+    d->vy = f.vy;
     d->t = now;
     d->column = (uint16_t)column;
     d->row = (uint16_t)row;
@@ -327,11 +339,21 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     const size_t n = sim->world.n;
     const double now = now_of(sim);
     for (size_t k = 0; k < n; ++k) {
-        ds_ed_advance(&e->disk[k], now);
-        e->disk[k].vx *= factor;
-        e->disk[k].vy *= factor;
-        sim->disks.vx[k] = e->disk[k].vx;
-        sim->disks.vy[k] = e->disk[k].vy;
+        ed_disk *d = &e->disk[k];
+        ds_ed_advance(d, now);
+        if (e->falls) { /* the velocities in the box, not the frame */
+            double x, y, vx, vy;
+            ds_ed_lab_at(e, d, now, &x, &y, &vx, &vy);
+            d->vx = vx * factor - e->field[0] * now;
+            d->vy = vy * factor - e->field[1] * now;
+            sim->disks.vx[k] = vx * factor;
+            sim->disks.vy[k] = vy * factor;
+            continue;
+        }
+        d->vx *= factor;
+        d->vy *= factor;
+        sim->disks.vx[k] = d->vx;
+        sim->disks.vy[k] = d->vy;
     }
     ds_ed_growth_go_on(e, n, now);
     return DS_OK;
@@ -343,13 +365,19 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
 static void kinetic(const ds_sim *sim, double *kinetic, double *momentum_energy)
 {
     const ds_events *e = sim->state;
+    const double now = now_of(sim);
     double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
     for (size_t i = 0; i < sim->world.n; ++i) {
         const ed_disk *d = &e->disk[i];
         const double m = e->mass ? e->mass[i] : 1.0;
-        k += m * (d->vx * d->vx + d->vy * d->vy);
-        px += m * d->vx;
-        py += m * d->vy;
+        double vx = d->vx, vy = d->vy;
+        if (e->falls) { /* in the box at now, not the frame */
+            vx += e->field[0] * now;
+            vy += e->field[1] * now;
+        }
+        k += m * (vx * vx + vy * vy);
+        px += m * vx;
+        py += m * vy;
         mass += m;
     }
     *kinetic = 0.5 * k;
@@ -410,4 +438,6 @@ const ds_integrator_ops ds_event_driven_ops = {
     .grow = ds_ed_grow,
     .growth_law = ds_ed_growth_law,
     .widen = ds_ed_widen,
+    .kick = ds_ed_kick,
+    .take_rules = ds_ed_take_rules,
 };

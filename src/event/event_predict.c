@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* A disk's next event (event-driven integrator): the earliest of its
  * wall turn, its next cell crossing and its collisions with the disks of
- * the 3 x 3 cells around it. This is the integrator's hot loop: each
- * collision predicts both disks again, each crossing and wall turn one. */
+ * the 3 x 3 cells around it (in a field the pairs' relative motion is
+ * still straight: the records keep the falling frame, event_state.h). This is the integrator's hot
+ * loop: each collision predicts both disks again, each crossing and wall turn one. */
 #include <math.h>
 
 #include "core/lanes.h"
@@ -19,6 +20,10 @@
 static inline void boundary_event(const ds_events *e, const ed_disk *d, uint32_t i, double now,
                                   double *best, uint32_t *kind)
 {
+    if (e->falls) { /* parabolas, and both edges of the cell (falling.c) */
+        ds_ed_boundary_falling(e, d, i, now, best, kind);
+        return;
+    }
     const ds_cells *cells = &e->cells;
     const int walls_x = !ds_box_periodic(&e->box, 0), walls_y = !ds_box_periodic(&e->box, 1);
     /* The wall lines: R from each wall, a mixture's disk its own R. */

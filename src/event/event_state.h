@@ -92,8 +92,65 @@ struct ds_events {
      * restart does in the middle of a run, needs no memory. */
     double *times;
     ds_ed_law law;
+    /* The rules (core.h's ds_rules, taken by ds_ed_take_rules): whether
+     * disks lose energy (then each disk's integrator time of its last
+     * collision is the disk arrays' last_hit, by record, the TC model's),
+     * the coefficients and the contact time; whether they fall, and the
+     * field. With a field the records keep the falling frame (see
+     * ds_ed_lab_at). */
+    int inelastic, falls;
+    double restitution, wall_restitution, contact_time;
+    double field[2];
+    double *last_hit;
 };
 typedef struct ds_events ds_events;
+
+/* The falling frame. With a field g every disk flies x(t) = x0 + v0 t + g
+ * t^2 / 2, and two disks' relative motion is straight: in the frame that
+ * falls with the field from the origin of integrator time, X = x - g t^2
+ * / 2 and V = v - g t, every disk flies straight. So the records keep X
+ * and V (without a field the two frames are one): pair times,
+ * collisions and the delayed states are those of straight flights, to
+ * the line, and only what meets the box (walls, cell edges: falling.c)
+ * and what shows the disks turn them back into x and v. The frame's
+ * offset g t^2 / 2 stays below the box's side (ds_ed_rebase_time), so it
+ * costs the positions no more digits than a periodic wrap. */
+static inline void ds_ed_lab_at(const ds_events *e, const ed_disk *d, double t, double *x,
+                                double *y, double *vx, double *vy)
+{
+    const double lag = t - d->t;
+    *x = d->x + d->vx * lag;
+    *y = d->y + d->vy * lag;
+    *vx = d->vx;
+    *vy = d->vy;
+    if (e->falls) {
+        const double h = 0.5 * t * t;
+        *x += e->field[0] * h;
+        *y += e->field[1] * h;
+        *vx += e->field[0] * t;
+        *vy += e->field[1] * t;
+    }
+}
+
+/* Disk d's centre along axis, at its own time, in the box (not the
+ * falling frame). */
+static inline double ds_ed_lab_coordinate(const ds_events *e, const ed_disk *d, int axis)
+{
+    const double u = axis ? d->y : d->x;
+    return e->falls ? u + e->field[axis] * 0.5 * d->t * d->t : u;
+}
+
+/* Whether disk d, crossing a cell edge along axis at its own time, leaves
+ * through the cell's far edge (up, right): without a field its velocity
+ * says, with one (whose disks may cross an edge at the top of their arc)
+ * which edge it is at. */
+static inline int ds_ed_leaves_up(const ds_events *e, const ed_disk *d, int axis)
+{
+    if (!e->falls)
+        return (axis ? d->vy : d->vx) > 0.0;
+    const double w = axis ? e->cells.wy : e->cells.wx;
+    return ds_ed_lab_coordinate(e, d, axis) > ((axis ? d->row : d->column) + 0.5) * w;
+}
 
 /* The cells around (column, row): up to 9, each with the shift of the
  * image it stands for (a periodic box), or fewer at walls. */
@@ -170,5 +227,30 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *leg
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):
  * records it in the disk and returns its time. */
 double ds_ed_predict(ds_events *e, uint32_t i);
+
+/* Moves the integrator's origin to its time t (a step boundary): every
+ * disk is advanced to t (out of the falling frame), every scheduled time
+ * and time of last collision shifted by -t (ed_state.c). */
+void ds_ed_rebase(ds_events *e, size_t n, double t);
+/* How long the clock runs before its origin moves (ed_state.c): about
+ * the time a disk takes to cross the box, and with a field no longer than
+ * the frame's offset g t^2 / 2 takes to reach the box's side. */
+double ds_ed_rebase_time(const ds_world *w, const ds_rules *rules);
+/* The rules into the state's copy (ed_state.c; last_hit: the disk
+ * arrays', which must be there for rules that lose energy). */
+void ds_ed_adopt_rules(ds_events *e, const ds_rules *rules, double *last_hit);
+
+/* Disk d's (record i's) earliest wall or cell edge under the field, as
+ * the lanes' boundary event does without one (falling.c): into *best and
+ * *kind if before *best. */
+void ds_ed_boundary_falling(const ds_events *e, const ed_disk *d, uint32_t i, double now,
+                            double *best, uint32_t *kind);
+
+/* The granular parts (granular.c): the table's take_rules and kick; a
+ * wall turn with the wall restitution, the TC model and the field's
+ * floor (the disk taken to t, not predicted again). */
+ds_status ds_ed_take_rules(ds_sim *sim, const ds_rules *rules);
+void ds_ed_kick(ds_sim *sim, const double *dv);
+void ds_ed_turn_granular(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis);
 
 #endif

@@ -157,7 +157,38 @@ void ds_sim_reset_observables(ds_sim *sim)
     sim->tally.wall_impulse = 0.0;
     sim->tally.wall_reach = 0.0;
     sim->tally.virial = 0.0;
+    sim->tally.dissipated = 0.0;
+    sim->tally.injected = 0.0;
     sim->observables_since_step = sim->steps;
+}
+
+double ds_sim_get_energy_lost(const ds_sim *sim) { return sim ? sim->tally.dissipated : 0.0; }
+double ds_sim_get_energy_input(const ds_sim *sim) { return sim ? sim->tally.injected : 0.0; }
+
+double ds_sim_get_power_lost(const ds_sim *sim)
+{
+    if (!sim || sim->steps == sim->observables_since_step)
+        return 0.0;
+    return sim->tally.dissipated / elapsed(sim);
+}
+
+double ds_sim_get_power_input(const ds_sim *sim)
+{
+    if (!sim || sim->steps == sim->observables_since_step)
+        return 0.0;
+    return sim->tally.injected / elapsed(sim);
+}
+
+double ds_sim_get_potential_energy(const ds_sim *sim)
+{
+    if (!sim || !ds_rules_fall(&sim->world.rules))
+        return 0.0;
+    const ds_disks *d = &sim->disks;
+    const double gx = sim->world.rules.field[0], gy = sim->world.rules.field[1];
+    double u = 0.0;
+    for (size_t k = 0; k < d->n; ++k)
+        u -= (d->m ? d->m[k] : 1.0) * (gx * d->x[k] + gy * d->y[k]);
+    return u;
 }
 
 /* The kinetic part is the tally's integral, which the integrators carry

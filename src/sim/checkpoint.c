@@ -18,7 +18,9 @@
 #define MAGIC "DSIMSTAT"
 /* Version 2 added the pressure tensor's parts of the tally (after the
  * collision timer); a file of version 1 is read with them 0: its stress
- * integral starts at the load. */
+ * integral starts at the load. Version 4 added the rules of collisions
+ * and flights and the energy books after them; an older file's run is
+ * elastic and straight. */
 #define FORMAT_VERSION ((uint32_t)DS_CHECKPOINT_FORMAT_VERSION)
 #define OLDEST_FORMAT_VERSION 1u
 #define BYTE_ORDER_MARK 0x01020304u
@@ -95,6 +97,7 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     ds_put_f64(w, sim->tally.virial);
     ds_put_f64(w, ds_timer_seconds(&sim->collision_timer));
     put_stress(&sim->tally, w);
+    ds_rules_save(sim, w);
     ds_disks_save(&sim->disks, w);
     ds_kinds_save(sim, w);
     sim->integrator->save(sim, w);
@@ -419,6 +422,9 @@ ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_err
          !isfinite(sim->tally.virial) || !stress || !(sim->collision_timer.total >= 0.0) ||
          !((double)sim->steps * w.dt < 1e300)))
         st = ds_state_refuse(err, DS_ERR_FORMAT, "its clock or tally is not a run's");
+    /* Version 4's rules (before, elastic and straight: the world's). */
+    if (st == DS_OK && version >= 4)
+        st = ds_rules_load(sim, &r, err);
     for (size_t k = 0; st == DS_OK && k < w.n; ++k)
         sim->disks.slot[k] = UINT32_MAX;
     if (st == DS_OK)

@@ -37,7 +37,20 @@ ds_world ds_world_of(const ds_params *p)
     w.seed = p->seed;
     w.radius_min = w.radius_max = p->radius;
     w.covered = ds_covered_by((double)p->n, p->radius);
+    w.rules = ds_rules_default(&w);
     return w;
+}
+
+/* Elastic collisions, straight flights, and the TC model's default
+ * contact time, DS_CONTACT_TIME_DEFAULT of the time a disk at the initial
+ * speed takes to cross its diameter (docs/physics.md says why). */
+ds_rules ds_rules_default(const ds_world *w)
+{
+    ds_rules r;
+    memset(&r, 0, sizeof r);
+    r.restitution = r.wall_restitution = 1.0;
+    r.contact_time = DS_CONTACT_TIME_DEFAULT * 2.0 * w->radius / w->speed;
+    return r;
 }
 
 /* The radius and mass of disk i of a mixture (checked). */

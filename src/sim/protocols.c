@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Protocols, what acts on a running simulation from outside its dynamics:
- * growth (disksim/protocols.h). The request is checked here, every limit
+ * growth and driving (disksim/protocols.h). The request is checked here, every limit
  * named in err; the protocol (protocols/growth.c) carries it out through
  * the integrator's services. */
 #include <math.h>
@@ -63,6 +63,16 @@ ds_status ds_sim_set_growth(ds_sim *sim, double rate, double until_eta, double u
         return ds_refuse(err, DS_ERR_ARG, "boundary", NAN, NAN,
                          "boundary = %s: growth needs a periodic box",
                          ds_boundary_name(sim->world.boundary));
+    /* Growth compresses an elastic gas: its window scales the heat its
+     * collisions add back out, and would scale a drive's too. */
+    if (rate > 0.0 && sim->world.rules.restitution < 1.0)
+        return ds_refuse(err, DS_ERR_ARG, "restitution", sim->world.rules.restitution, 1.0,
+                         "restitution = %g: growth compresses an elastic gas (set it to 1 first)",
+                         sim->world.rules.restitution);
+    if (rate > 0.0 && ds_drive_strength(sim) > 0.0)
+        return ds_refuse(err, DS_ERR_ARG, "drive", ds_drive_strength(sim), 0.0,
+                         "drive = %g: growth takes out the heat a drive puts in (stop it first)",
+                         ds_drive_strength(sim));
     ds_status st = check_targets(sim, until_eta, until_z, err);
     if (st == DS_OK)
         st = check_rate(sim, rate, err);
@@ -89,3 +99,28 @@ double ds_sim_get_growth_z(const ds_sim *sim)
         (void)ds_growth_state_get(sim, &z);
     return z;
 }
+
+ds_status ds_sim_set_drive(ds_sim *sim, double strength, ds_error *err)
+{
+    ds_error_clear(err);
+    if (!sim)
+        return ds_refuse(err, DS_ERR_ARG, "sim", NAN, NAN, "sim: NULL");
+    if (!(strength >= 0.0 && strength <= DS_DRIVE_MAX))
+        return ds_refuse(err, DS_ERR_ARG, "strength", strength,
+                         strength > DS_DRIVE_MAX ? DS_DRIVE_MAX : 0.0,
+                         "strength = %g must be a number >= 0 and <= %g (0 stops the drive)",
+                         strength, DS_DRIVE_MAX);
+    if (strength > 0.0 && ds_sim_get_growth_state(sim) == DS_GROWTH_GROWING)
+        return ds_refuse(err, DS_ERR_ARG, "growth", NAN, NAN,
+                         "growth: a growth is growing, and takes out the heat a drive would put "
+                         "in (stop it first)");
+    if (!sim->integrator->kick)
+        return ds_refuse(err, DS_ERR_ARG, "integrator", NAN, NAN, "integrator = %s takes no kicks",
+                         sim->integrator->name);
+    if (ds_drive_start(sim, strength) != DS_OK)
+        return ds_refuse(err, DS_ERR_NOMEM, "n", (double)sim->world.n, NAN,
+                         "n = %zu disks: no memory for their kicks", sim->world.n);
+    return DS_OK;
+}
+
+double ds_sim_get_drive(const ds_sim *sim) { return sim ? ds_drive_strength(sim) : 0.0; }

@@ -116,6 +116,10 @@ ds_status ds_sim_run(ds_sim *sim, uint64_t steps, ds_error *err)
      * (collide.h), from the disks as they are now: whatever set them
      * since the last run is in it. */
     ds_disks_kinetic_tensor(&sim->disks, sim->tally.kinetic);
+    /* A field changes it between collisions too, through the momentum
+     * (core/collide.h). */
+    if (ds_rules_fall(&sim->world.rules))
+        ds_disks_momentum(&sim->disks, sim->tally.momentum, &sim->tally.mass);
     return ds_error_done(err, sim->integrator->run(sim, steps, err));
 }
 

@@ -22,8 +22,21 @@ void ds_kinds_save(const ds_sim *sim, ds_state_writer *w);
 ds_status ds_kinds_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_error *err);
 
 /* The world params describe, defaults resolved (broadphase as given,
- * maybe DS_BROADPHASE_AUTO). No checks. */
+ * maybe DS_BROADPHASE_AUTO; the rules ds_rules_default's). No checks. */
 ds_world ds_world_of(const ds_params *params);
+/* The rules of a new simulation in world w (its radius and speed set):
+ * elastic, no field, the default contact time (params.c). */
+ds_rules ds_rules_default(const ds_world *w);
+/* DS_OK, or DS_ERR_ARG and why rules cannot be world w's (a restitution
+ * not in (0, 1], a contact time not > 0 and finite, a field component
+ * not finite, beyond DS_FIELD_MAX or along a periodic axis): what the
+ * setters refuse and a checkpoint's loader (rules.c). */
+ds_status ds_rules_check(const ds_world *w, const ds_rules *rules, ds_error *err);
+/* A checkpoint's part (version 4, after the stress integral's): the
+ * rules and the energy books, read back held to what the setters hold
+ * them to (rules.c). */
+void ds_rules_save(const ds_sim *sim, ds_state_writer *w);
+ds_status ds_rules_load(ds_sim *sim, ds_reader *r, ds_error *err);
 /* The world of a request, mixture and all (mixture may be NULL), after
  * every check of ds_params_check, which fills err: its status. */
 ds_status ds_world_of_request(const ds_params *params, const ds_mixture *mixture, ds_world *world,

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The time step's free flight: every disk moves by v dt, then a disk past
- * a wall turns, or in a periodic box wraps to the opposite edge. */
+ * a wall turns, or in a periodic box wraps to the opposite edge; a field
+ * changes every velocity by g dt first. */
 #include <math.h>
 
 #include "core/box.h"
@@ -134,8 +135,67 @@ static void move_mixed(ds_disks *d, const ds_world *w, ds_tally *t)
     t->wall_reach += reach;
 }
 
+/* Walls that take energy (restitution below 1) or hold disks against a
+ * field: each axis as its edge says, a disk's own radius at the walls. A
+ * disk past a wall's band that moves out turns, its normal velocity -e
+ * v_n; whatever it moves, it comes back into the band mirrored (a field
+ * would otherwise press a disk resting on a wall a little further through
+ * it every other step), no further than the band's other side. */
+static void move_general(ds_disks *d, const ds_world *w, ds_tally *t)
+{
+    const ds_box *box = &w->box;
+    const double dt = w->dt, e = w->rules.wall_restitution;
+    uint64_t hits = 0;
+    double impulse = 0.0, reach = 0.0;
+    for (size_t k = 0; k < d->n; ++k) {
+        const double r = d->r ? d->r[k] : w->radius, m = d->m ? d->m[k] : 1.0;
+        double p[2] = {d->x[k] + d->vx[k] * dt, d->y[k] + d->vy[k] * dt};
+        double *v[2] = {&d->vx[k], &d->vy[k]};
+        int32_t *image[2] = {d->ix ? &d->ix[k] : NULL, d->iy ? &d->iy[k] : NULL};
+        for (int a = 0; a < 2; ++a) {
+            if (ds_box_periodic(box, a)) {
+                p[a] = image[a] ? ds_wrap_counting(p[a], box->side[a], image[a])
+                                : ds_wrap(p[a], box->side[a]);
+                continue;
+            }
+            const double lo = r, hi = box->side[a] - r;
+            if (!(p[a] < lo || p[a] > hi))
+                continue;
+            const int low = p[a] < lo;
+            if (low ? *v[a] < 0.0 : *v[a] > 0.0) {
+                const double after = -e * *v[a];
+                ds_tally_wall_bounce(t, m, d->vx[k], d->vy[k], a, after);
+                impulse += m * fabs(after - *v[a]);
+                reach += m * fabs(after - *v[a]) / ds_box_wall_reached(box, r);
+                *v[a] = after;
+                ++hits;
+            }
+            p[a] = fmin(fmax(low ? 2.0 * lo - p[a] : 2.0 * hi - p[a], lo), hi);
+        }
+        d->x[k] = p[0];
+        d->y[k] = p[1];
+    }
+    t->wall_count += hits;
+    t->wall_impulse += impulse;
+    t->wall_reach += reach;
+}
+
+void ds_fall(ds_disks *d, const ds_world *w, ds_tally *t)
+{
+    const double ux = w->rules.field[0] * w->dt, uy = w->rules.field[1] * w->dt;
+    for (size_t k = 0; k < d->n; ++k) {
+        d->vx[k] += ux;
+        d->vy[k] += uy;
+    }
+    ds_disks_kinetic_tensor(d, t->kinetic);
+}
+
 void ds_move(ds_disks *d, const ds_world *w, ds_tally *t)
 {
+    if (ds_rules_fall(&w->rules) || w->rules.wall_restitution < 1.0) {
+        move_general(d, w, t);
+        return;
+    }
     const int px = ds_box_periodic(&w->box, 0), py = ds_box_periodic(&w->box, 1);
     if (px && py)
         move_and_wrap(d, w);

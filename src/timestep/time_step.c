@@ -14,16 +14,18 @@
 #include "timestep/timestep.h"
 
 /* What the pair callbacks change: the tally, and in a periodic box the
- * sides for the nearest image. */
+ * sides for the nearest image; the disk-disk restitution (1: elastic). */
 typedef struct pair_context {
     ds_tally *tally;
     const ds_box *box;
+    double restitution;
 } pair_context;
 
 /* The response to a pair whose separation from a to b is (dx, dy). A
  * mixture's broad phase prunes with the largest diameter: the pair's own
  * contact distance is tested here. */
-static inline void resolve(ds_disks *d, size_t a, size_t b, double dx, double dy, ds_tally *t)
+static inline void resolve(ds_disks *d, size_t a, size_t b, double dx, double dy,
+                           const pair_context *c)
 {
     if (d->r) {
         const double sigma = d->r[a] + d->r[b];
@@ -37,17 +39,16 @@ static inline void resolve(ds_disks *d, size_t a, size_t b, double dx, double dy
      * approach < 0 needs dx, dy != 0. */
     if (!(approach < 0.0))
         return;
-    if (d->m)
-        ds_collide_masses(dx, dy, approach, d->m[a], d->m[b], &d->vx[a], &d->vy[a], &d->vx[b],
-                          &d->vy[b], t);
-    else
-        ds_collide(dx, dy, approach, &d->vx[a], &d->vy[a], &d->vx[b], &d->vy[b], t);
+    /* Restitution applies to every collision: a step resolves a pair at
+     * most once, so the time step cannot collapse (no TC model here). */
+    ds_collide_with(dx, dy, approach, d->m != NULL, d->m ? d->m[a] : 1.0, d->m ? d->m[b] : 1.0,
+                    c->restitution, &d->vx[a], &d->vy[a], &d->vx[b], &d->vy[b], c->tally);
 }
 
 static void resolve_pair(ds_disks *d, size_t a, size_t b, void *ctx)
 {
     const pair_context *c = ctx;
-    resolve(d, a, b, d->x[b] - d->x[a], d->y[b] - d->y[a], c->tally);
+    resolve(d, a, b, d->x[b] - d->x[a], d->y[b] - d->y[a], c);
 }
 
 static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
@@ -55,27 +56,38 @@ static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
     const pair_context *c = ctx;
     double dx = d->x[b] - d->x[a], dy = d->y[b] - d->y[a];
     ds_box_nearest(c->box, &dx, &dy);
-    resolve(d, a, b, dx, dy, c->tally);
+    resolve(d, a, b, dx, dy, c);
 }
 
 static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
-    (void)err; /* a step needs no memory */
     ds_bp *bp = sim->state;
     const ds_world *w = &sim->world;
     const ds_pair_fn on_pair = ds_box_any_periodic(&w->box) ? resolve_pair_periodic : resolve_pair;
-    pair_context ctx = {&sim->tally, &w->box};
-    for (uint64_t s = 0; s < steps; ++s) {
-        /* The step's flight is at the velocities its start has. */
+    pair_context ctx = {&sim->tally, &w->box, w->rules.restitution};
+    const int falls = ds_rules_fall(&w->rules);
+    ds_status st = DS_OK;
+    for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
+        /* A field first (v += g dt, then the flight at the new velocity:
+         * semi-implicit Euler), then the step's flight at the velocities
+         * its start then has. */
+        if (falls)
+            ds_fall(&sim->disks, w, &sim->tally);
         ds_tally_flight(&sim->tally, w->dt);
         ds_move(&sim->disks, w, &sim->tally);
         ds_timer_start(&sim->collision_timer);
         sim->tally.pairs_tested += ds_bp_find_pairs(bp, &sim->disks, on_pair, &ctx);
         ds_timer_stop(&sim->collision_timer);
         ++sim->steps;
+        /* The protocols' step's end (a drive's kicks). */
+        if (sim->protocols.stepping && (st = ds_protocols_step_end(sim)) != DS_OK)
+            ds_refuse(err, st, "steps", (double)sim->steps, NAN,
+                      "steps: a protocol could not go on after step %llu: it stopped there, "
+                      "and the run",
+                      (unsigned long long)sim->steps);
     }
     ds_disks_rebuild_slots(&sim->disks);
-    return DS_OK;
+    return st;
 }
 
 /* The time step has the sweeps and brute force. */
@@ -162,6 +174,25 @@ static ds_status load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *le
     return ds_bp_load(bp, &sim->world, &sim->disks, r, err);
 }
 
+/* A drive's kicks, at the step boundary: the columns are the disks. */
+static void kick(ds_sim *sim, const double *dv)
+{
+    ds_disks *d = &sim->disks;
+    ds_tally *t = &sim->tally;
+    for (size_t k = 0; k < d->n; ++k) {
+        const double m = d->m ? d->m[k] : 1.0, vx = d->vx[k], vy = d->vy[k];
+        const double ux = dv[2 * k], uy = dv[2 * k + 1];
+        t->injected += m * (vx * ux + vy * uy + 0.5 * (ux * ux + uy * uy));
+        t->kinetic[0] += m * ux * (2.0 * vx + ux);
+        t->kinetic[1] += m * uy * (2.0 * vy + uy);
+        t->kinetic[2] += m * (vx * uy + ux * vy + ux * uy);
+        t->momentum[0] += m * ux;
+        t->momentum[1] += m * uy;
+        d->vx[k] = vx + ux;
+        d->vy[k] = vy + uy;
+    }
+}
+
 static ds_status set(ds_sim *sim, size_t k, ds_disk d)
 {
     /* The time step does not refuse overlaps: its next step resolves them.
@@ -189,6 +220,8 @@ const ds_integrator_ops ds_time_step_ops = {
     .save = save,
     .load = load,
     .scale_velocities = scale_velocities,
-    /* No services to protocols yet: radii grow only with exact contact
-     * times, so growth refuses the time step. */
+    /* Radii grow only with exact contact times, so growth refuses the
+     * time step; a drive's kicks it takes. It reads the rules each step
+     * (take_rules NULL). */
+    .kick = kick,
 };
