@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The disks command's one header: what its files share. options.c reads
- * the command line; start.c checks where the run starts (a new request,
+ * the command line (usage.c its help); start.c checks where the run starts (a new request,
  * --restart's checkpoint, --from's frame); outputs.c checks every path
  * and makes --out; files.c writes files so that no partial one is ever
  * seen, and decides what a signal does; checkpoint.c writes checkpoints;
@@ -50,6 +50,9 @@ typedef struct options {
     /* --measure-after T: the observables reset at the first frame at t >=
      * T (0: never) */
     double measure_after;
+    /* --restitution, --wall-restitution (NaN: not given), --contact-time,
+     * --drive, --gravity (0: not given) */
+    double restitution, wall_restitution, contact_time, drive, gravity;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */
@@ -71,6 +74,8 @@ const char *in_command_words(const ds_error *err, char *out, size_t cap);
 
 /* options.c */
 options parse_args(int argc, char **argv);
+/* usage.c: the text of --help, with the default seed's %u */
+extern const char *const usage_text;
 
 /* start.c: the request checked (with --from, as the frame's: from is its
  * path), a new simulation, or one from a checkpoint or a frame. */
@@ -82,6 +87,10 @@ ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture);
 /* --grow started, once the simulation exists (a new one, a checkpoint's
  * or a frame's), or refused with the library's reason. */
 void start_growth(const options *o, ds_sim *sim);
+/* --restitution, --wall-restitution, --contact-time, --gravity and
+ * --drive set on the simulation, or refused with the library's reason
+ * (a usage error), before anything is made. */
+void start_granular(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
 void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);

@@ -61,20 +61,27 @@ typedef struct run {
 
 static const char stats_header[] =
     "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,virial_pressure,psi6,"
-    "area_fraction\n";
+    "area_fraction,granular_temperature,energy_lost,energy_input,power_lost,power_input,"
+    "potential_energy\n";
 
 static void stats_row(output *out, long frame, const ds_sim *sim)
 {
-    char row[360];
+    char row[640];
     double px, py, psi6 = NAN; /* psi6 NaN where the library has none: a box too narrow */
     ds_sim_get_momentum(sim, &px, &py);
     (void)ds_sim_get_psi6(sim, &psi6, NULL);
     int l =
-        snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g,%.17g\n",
+        snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g,%.17g,",
                  frame, ds_sim_get_time(sim), ds_sim_get_kinetic_energy(sim), px, py,
                  (unsigned long long)ds_sim_get_collision_count(sim),
                  (unsigned long long)ds_sim_get_wall_count(sim), ds_sim_get_pressure(sim),
                  ds_sim_get_virial_pressure(sim), psi6, ds_sim_get_area_fraction(sim));
+    /* The granular gas's: its temperature (ds_sim_get_temperature) and
+     * energy books. */
+    l += snprintf(row + l, sizeof row - (size_t)l, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
+                  ds_sim_get_temperature(sim), ds_sim_get_energy_lost(sim),
+                  ds_sim_get_energy_input(sim), ds_sim_get_power_lost(sim),
+                  ds_sim_get_power_input(sim), ds_sim_get_potential_energy(sim));
     output_write(out, row, (size_t)l);
 }
 
@@ -337,6 +344,7 @@ static void start_run(run *r, options *o)
         r->sim = create_fresh(&p, mixture);
     }
     start_growth(o, r->sim);
+    start_granular(o, r->sim);
     r->last = r->first + o->frames - 1;
     /* --measure-after: a restart past T continues the checkpoint's
      * averages (its run made the reset); a T past the last frame would

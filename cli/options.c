@@ -11,59 +11,6 @@
 
 #include "cli.h"
 
-static const char *const usage_text =
-    "usage: disks N R [options]\n"
-    "       disks --restart FILE [options]\n"
-    "       disks [N R] --from FRAME [options]\n"
-    "Simulates N hard disks of radius R in the box [0,1000]^2 and writes\n"
-    "frame_0000.txt, frame_0001.txt, ... with one line \"x y R\" per disk.\n"
-    "\n"
-    "options:\n"
-    "  --seed S             random seed, 0..2^64-1 (default %u)\n"
-    "  --frames F           frames to write, 1..10000 (default 500)\n"
-    "  --steps-per-frame K  steps of dt = 0.001 between frames (default 100)\n"
-    "  --out DIR            directory for the frames, created if missing (default .)\n"
-    "  --overwrite          remove the frames of another run from DIR instead of\n"
-    "                       refusing to mix them with this run's\n"
-    "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
-    "  --stats FILE         write one CSV row of observables per frame to FILE\n"
-    "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
-    "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
-    "                       stopped by a signal (INT, TERM, HUP)\n"
-    "  --checkpoint-every K also every K frames\n"
-    "  --restart FILE       continue the run a checkpoint saved: N, R, the box, the\n"
-    "                       integrator and the frame number come from FILE\n"
-    "  --from FRAME         start at time 0 from the disks of FRAME, a frame written\n"
-    "                       with --velocities (N and R from it)\n"
-    "  --lattice            start on a triangular lattice instead of at random\n"
-    "  --boundary B         walls (the default), periodic (nearest image along both\n"
-    "                       axes) or channel (periodic along x, walls at y = 0 and\n"
-    "                       y = box_y)\n"
-    "  --periodic           the same as --boundary periodic\n"
-    "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
-    "  --mixture RATIO:FRACTION\n"
-    "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
-    "                       radius RATIO x R, the rest R (e.g. 1.4:0.5)\n"
-    "  --mass M             equal (every disk mass 1, the default) or area (mass\n"
-    "                       (r/R)^2)\n"
-    "  --grow RATE          compress: every radius grows as r (1 + RATE t)\n"
-    "                       (event-driven, periodic); until Z passes 1e6, or:\n"
-    "  --until-eta ETA      stop growing at area fraction ETA, then run on\n"
-    "  --until-z Z          stop growing, and the run, once Z passes Z (1 < Z <= 1e9)\n"
-    "  --measure-after T    discard the start: the pressures and the wall counts of\n"
-    "                       --stats and the report are averaged from the first frame\n"
-    "                       at time >= T on\n"
-    "  --integrator I       step (the fixed time step, default) or event (exact\n"
-    "                       event-driven dynamics)\n"
-    "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
-    "                       or auto (default auto)\n"
-    "  -q, --quiet          print nothing but errors and warnings\n"
-    "  -h, --help           show this help and exit\n"
-    "  --version            show the version and exit\n"
-    "\n"
-    "exit status: 0 success, 1 run-time error (placement, I/O, a file that does not\n"
-    "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n";
-
 /* strtod also reads hexadecimal ("0x10"), "nan" and "infinity": a number
  * on our command line is decimal, so anything else is refused up front. */
 static int is_decimal_text(const char *s)
@@ -146,6 +93,16 @@ static double positive_arg(const char *option, const char *s, double most)
         die(EXIT_USAGE, "%s must be a number > 0, got '%s'", option, s);
     if (most > 0.0 && !(v <= most))
         die(EXIT_USAGE, "%s must be a number > 0 and <= %g, got '%s'", option, most, s);
+    return v;
+}
+
+/* A decimal number, whatever its range (the library's to hold). */
+static double number_arg(const char *option, const char *s)
+{
+    char *end;
+    const double v = strtod(s, &end);
+    if (!is_decimal_text(s) || end == s || *end != '\0' || !isfinite(v))
+        die(EXIT_USAGE, "%s must be a number, got '%s'", option, s);
     return v;
 }
 
@@ -251,7 +208,12 @@ enum {
     UNTIL_ETA,
     UNTIL_Z,
     MEASURE_AFTER,
-    BOUNDARY
+    BOUNDARY,
+    RESTITUTION,
+    WALL_RESTITUTION,
+    CONTACT_TIME,
+    DRIVE,
+    GRAVITY
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -276,7 +238,12 @@ static const struct {
              {"--until-eta", 0},
              {"--until-z", 0},
              {"--measure-after", 0},
-             {"--boundary", 1}};
+             {"--boundary", 1},
+             {"--restitution", 0},
+             {"--wall-restitution", 0},
+             {"--contact-time", 0},
+             {"--drive", 0},
+             {"--gravity", 0}};
 
 /* The first option given that describes the system, the first that
  * describes the placement (see check_combination), and the boundary
@@ -295,6 +262,22 @@ static void boundary_arg(options *o, const char *value, first_options *first)
         die(EXIT_USAGE, "two boundaries asked for: %s and %s (--periodic is --boundary periodic)",
             first->boundary, value);
     first->boundary = value;
+}
+
+/* The granular rules: numbers here, held to their bounds by the library
+ * once the simulation exists (start.c). */
+static void granular_arg(options *o, int which, const char *value)
+{
+    if (which == RESTITUTION)
+        o->restitution = number_arg("--restitution", value);
+    else if (which == WALL_RESTITUTION)
+        o->wall_restitution = number_arg("--wall-restitution", value);
+    else if (which == CONTACT_TIME)
+        o->contact_time = positive_arg("--contact-time", value, 0.0);
+    else if (which == DRIVE)
+        o->drive = positive_arg("--drive", value, 0.0);
+    else
+        o->gravity = positive_arg("--gravity", value, 0.0);
 }
 
 /* Option which (names[]) with its value. */
@@ -365,8 +348,11 @@ static void set_option(options *o, int which, const char *value, first_options *
     case MEASURE_AFTER:
         o->measure_after = positive_arg("--measure-after", value, 1e12);
         break;
-    default:
+    case BOUNDARY:
         boundary_arg(o, value, first);
+        break;
+    default:
+        granular_arg(o, which, value);
     }
 }
 
@@ -432,6 +418,7 @@ options parse_args(int argc, char **argv)
     o.steps_per_frame = 100;
     o.out_dir = ".";
     o.broadphase = DS_BROADPHASE_AUTO;
+    o.restitution = o.wall_restitution = NAN; /* not given */
 
     const char *positional[2];
     int npos = 0;

@@ -33,6 +33,10 @@ static const char *const command_names[][2] = {
     {"rate", "--grow"},
     {"until_eta", "--until-eta"},
     {"until_z", "--until-z"},
+    {"restitution", "--restitution"},
+    {"wall_restitution", "--wall-restitution"},
+    {"contact_time", "--contact-time"},
+    {"strength", "--drive"},
 };
 
 const char *in_command_words(const ds_error *err, char *out, size_t cap)

@@ -2,7 +2,7 @@
 /* Where a run starts, checked before any work: a new request (what the
  * library refuses, its reason in the command's words, and what this
  * machine cannot hold), a checkpoint (--restart) or a frame (--from); and
- * --grow, which the library refuses or starts. */
+ * --grow and the granular rules, which the library refuses or sets. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
@@ -309,4 +309,34 @@ void start_growth(const options *o, ds_sim *sim)
     char words[sizeof err.message + 16];
     die(EXIT_USAGE, "%s%s%s", in_command_words(&err, words, sizeof words), where ? " in " : "",
         where ? source : "");
+}
+
+/* The granular rules, once the simulation exists (a new one, a
+ * checkpoint's, whose rules they change, or a frame's): what the library
+ * refuses is a usage error in its words, before anything is made. A
+ * restitution not given stays the simulation's. */
+void start_granular(const options *o, ds_sim *sim)
+{
+    ds_error err;
+    ds_status st = DS_OK;
+    if (!isnan(o->restitution) || !isnan(o->wall_restitution))
+        st = ds_sim_set_restitution(
+            sim, isnan(o->restitution) ? ds_sim_get_restitution(sim) : o->restitution,
+            isnan(o->wall_restitution) ? ds_sim_get_wall_restitution(sim) : o->wall_restitution,
+            &err);
+    if (st == DS_OK && o->contact_time > 0.0)
+        st = ds_sim_set_contact_time(sim, o->contact_time, &err);
+    if (st == DS_OK && o->gravity > 0.0)
+        st = ds_sim_set_gravity(sim, 0.0, -o->gravity, &err);
+    if (st == DS_OK && o->drive > 0.0)
+        st = ds_sim_set_drive(sim, o->drive, &err);
+    if (st == DS_OK)
+        return;
+    if (err.status == DS_ERR_NOMEM)
+        die(EXIT_RUN, "cannot make the disks granular: %s", err.message);
+    /* The library's field is the component, -G: the command's is G. */
+    if (strcmp(err.field, "gy") == 0)
+        die(EXIT_USAGE, "--gravity %g: %s", o->gravity, err.message);
+    char words[sizeof err.message + 32];
+    die(EXIT_USAGE, "%s", in_command_words(&err, words, sizeof words));
 }

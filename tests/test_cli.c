@@ -1047,11 +1047,56 @@ static void test_a_mixture_run_writes_its_two_radii(void **state)
     free(x);
     free(y);
     /* The area fraction column: pi (70 x 25 + 30 x 49) / 10^6. */
-    char *csv = slurp_in(dir, "a.csv", NULL), *cols[16];
+    char *csv = slurp_in(dir, "a.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_non_null(strstr(csv, ",psi6,area_fraction\n"));
-    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_non_null(strstr(csv, ",psi6,area_fraction,granular_temperature,"));
+    assert_int_equal(last_row(csv, cols, 24), 17);
     assert_true(fabs(strtod(cols[10], NULL) / (3.14159265358979 * 3220e-6) - 1.0) < 1e-12);
+    free(csv);
+    remove_tree(dir);
+}
+
+/* A granular run from the command line: --restitution, --wall-restitution,
+ * --gravity and --drive in a channel; the --stats columns after
+ * area_fraction are the granular temperature and the energy books, which
+ * balance in every row to rounding (kinetic + potential + lost - input is
+ * the start's: the event-driven books are exact), and a --restart goes on
+ * with the rules its checkpoint holds, its rows those of the run that did
+ * not stop. */
+static void test_a_granular_run_writes_its_energy_books(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *run = "200 5 --integrator event --boundary channel --restitution 0.8 "
+                      "--wall-restitution 0.9 --gravity 100 --drive 20000 --steps-per-frame 50";
+    must_run(dir, "%s --frames 7 --quiet --out a --stats a.csv", run);
+    must_run(dir, "%s --frames 4 --quiet --out b --stats b.csv --checkpoint c.ckpt", run);
+    must_run(dir, "--restart c.ckpt --frames 3 --steps-per-frame 50 --quiet --out b --stats r.csv");
+    char *csv = slurp_in(dir, "a.csv", NULL);
+    assert_non_null(csv);
+    assert_non_null(strstr(csv, ",area_fraction,granular_temperature,energy_lost,energy_input,"
+                                "power_lost,power_input,potential_energy\n"));
+    char *line = strchr(csv, '\n') + 1;
+    double start = NAN;
+    for (int row = 0; row < 7; ++row) {
+        double v[17];
+        char *end = line;
+        for (int c = 0; c < 17; ++c)
+            v[c] = strtod(end + (c > 0), &end);
+        const double books = v[2] + v[16] + v[12] - v[13];
+        if (row == 0)
+            start = books;
+        assert_true(fabs(books - start) < 1e-9 * start);
+        assert_true(row == 0 || (v[12] > 0.0 && v[13] > 0.0 && v[11] > 0.0));
+        line = strchr(line, '\n') + 1;
+    }
+    /* The restarted rows are the whole run's last three, to the byte. */
+    char *whole = strstr(csv, "\n4,"), *restarted = slurp_in(dir, "r.csv", NULL);
+    assert_non_null(whole);
+    assert_non_null(restarted);
+    assert_string_equal(whole + 1, strchr(restarted, '\n') + 1);
+    free(restarted);
     free(csv);
     remove_tree(dir);
 }
@@ -1068,9 +1113,9 @@ static void test_a_growth_stops_at_its_target_area_fraction(void **state)
     must_run(dir, "64 10 --mixture 1.4:0.5 --integrator event --periodic --grow 1 --until-eta 0.5 "
                   "--frames 50 --quiet --out g --stats g.csv");
     assert_true(exists_in(dir, "g/frame_0049.txt"));
-    char *csv = slurp_in(dir, "g.csv", NULL), *cols[16];
+    char *csv = slurp_in(dir, "g.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(last_row(csv, cols, 24), 17);
     assert_true(fabs(strtod(cols[10], NULL) - 0.5) < 1e-12);
     assert_true(fabs(strtod(cols[2], NULL) / (64 * 5000.0) - 1.0) < 1e-12);
     free(csv);
@@ -1106,9 +1151,9 @@ static void test_measure_after_discards_the_start(void **state)
     snprintf(want[1], sizeof want[1], "%.17g", ds_sim_get_pressure(sim));
     snprintf(want[2], sizeof want[2], "%.17g", ds_sim_get_virial_pressure(sim));
     ds_sim_destroy(sim);
-    char *csv = slurp_in(dir, "a.csv", NULL), *cols[16];
+    char *csv = slurp_in(dir, "a.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(last_row(csv, cols, 24), 17);
     assert_string_equal(cols[6], want[0]);
     assert_string_equal(cols[7], want[1]);
     assert_string_equal(cols[8], want[2]);
@@ -1121,7 +1166,7 @@ static void test_measure_after_discards_the_start(void **state)
     must_run(dir, "--restart b.ckpt --frames 3 --measure-after 0.5 --quiet --out b --stats b.csv");
     csv = slurp_in(dir, "b.csv", NULL);
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(last_row(csv, cols, 24), 17);
     char restarted[256];
     snprintf(restarted, sizeof restarted, "%s,%s,%s", cols[6], cols[7], cols[8]);
     assert_string_equal(restarted, whole);
@@ -1154,9 +1199,9 @@ static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
     assert_false(exists_in(dir, name));
     /* The last frame is the packing when it jammed, between two frames'
      * times (steps of 0.001, 100 to a frame). */
-    char *csv = slurp_in(dir, "j.csv", NULL), *cols[16];
+    char *csv = slurp_in(dir, "j.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(last_row(csv, cols, 24), 17);
     assert_int_equal(strtol(cols[0], NULL, 10), last);
     const double jammed_at = strtod(cols[1], NULL);
     assert_true(jammed_at > 0.1 * (double)(last - 1) && jammed_at <= 0.1 * (double)last);
@@ -1167,7 +1212,7 @@ static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
     assert_true(exists_in(dir, name));
     csv = slurp_in(dir, "r.csv", NULL);
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 16), 11);
+    assert_int_equal(last_row(csv, cols, 24), 17);
     assert_int_equal(strtol(cols[0], NULL, 10), last + 2);
     assert_true(fabs(strtod(cols[1], NULL) - 0.1 * (double)(last + 2)) < 1e-6);
     free(csv);
@@ -1401,6 +1446,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_outputs_inside_a_new_out_directory_are_written),
         cmocka_unit_test(test_frames_of_another_run_are_refused_unless_overwrite),
         cmocka_unit_test(test_a_mixture_run_writes_its_two_radii),
+        cmocka_unit_test(test_a_granular_run_writes_its_energy_books),
         cmocka_unit_test(test_a_growth_stops_at_its_target_area_fraction),
         cmocka_unit_test(test_a_growth_that_jams_ends_the_run_with_the_packing),
         cmocka_unit_test(test_measure_after_discards_the_start),
