@@ -216,6 +216,15 @@ PyObject *dspy_sim_contacts(dspy_sim *self, PyObject *args, PyObject *kwargs);
 int dspy_add_contacts_type(PyObject *module);
 extern const char dspy_set_growth_doc[], dspy_scale_velocities_doc[], dspy_contacts_doc[];
 
+/* granular.c: restitution, the TC model's contact time, a field, a drive. */
+PyObject *dspy_sim_set_restitution(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_set_contact_time(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_set_gravity(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_set_drive(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_gravity_property(dspy_sim *self, void *closure);
+extern const char dspy_set_restitution_doc[], dspy_set_contact_time_doc[], dspy_set_gravity_doc[],
+    dspy_set_drive_doc[];
+
 /* frames.c */
 PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_read_frame(PyObject *module, PyObject *args, PyObject *kwargs);

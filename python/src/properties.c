@@ -35,7 +35,15 @@ static const real_getter get_time = {ds_sim_get_time}, get_radius = {ds_sim_get_
                          get_area_fraction = {ds_sim_get_area_fraction},
                          get_growth_z = {ds_sim_get_growth_z},
                          get_temperature = {ds_sim_get_temperature},
-                         get_compressibility_factor = {ds_sim_get_compressibility_factor};
+                         get_compressibility_factor = {ds_sim_get_compressibility_factor},
+                         get_restitution = {ds_sim_get_restitution},
+                         get_wall_restitution = {ds_sim_get_wall_restitution},
+                         get_contact_time = {ds_sim_get_contact_time},
+                         get_drive = {ds_sim_get_drive}, get_energy_lost = {ds_sim_get_energy_lost},
+                         get_energy_input = {ds_sim_get_energy_input},
+                         get_power_lost = {ds_sim_get_power_lost},
+                         get_power_input = {ds_sim_get_power_input},
+                         get_potential_energy = {ds_sim_get_potential_energy};
 static const count_getter get_steps = {ds_sim_get_steps}, get_n = {count_of},
                           get_collision_count = {ds_sim_get_collision_count},
                           get_wall_count = {ds_sim_get_wall_count},
@@ -288,6 +296,21 @@ PyGetSetDef dspy_sim_getset[] = {
     REAL(growth_z, "The reduced pressure Z growth measured over its last window of 2 n\n"
                    "collisions (when it jammed, the window that stopped it); 0 before its\n"
                    "first window, and for a simulation that never grew."),
+    REAL(restitution, "The coefficient of restitution of disk-disk collisions (set_restitution;\n"
+                      "1: elastic)."),
+    REAL(wall_restitution, "The coefficient of restitution of wall turns (1: elastic)."),
+    REAL(contact_time, "The TC model's contact time t_c (set_contact_time)."),
+    {"gravity", (getter)dspy_gravity_property, NULL,
+     "The field (gx, gy) every disk accelerates by (set_gravity; (0, 0): none).", NULL},
+    REAL(drive, "The strength of the white-noise drive (set_drive; 0: none)."),
+    REAL(energy_lost, "Kinetic energy the collisions and wall turns took out since the last\n"
+                      "reset (restitution below 1)."),
+    REAL(energy_input, "Energy the drive's kicks put in since the last reset."),
+    REAL(power_lost, "energy_lost per unit time since the last reset (0 before any step)."),
+    REAL(power_input, "energy_input per unit time since the last reset (0 before any step);\n"
+                      "in a steady state it equals power_lost within their fluctuations."),
+    REAL(potential_energy, "The field's potential energy, -sum m (gx x + gy y) (0 without one):\n"
+                           "an elastic run keeps kinetic_energy + potential_energy."),
     {"params", (getter)params_property, NULL,
      "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
      "same simulation at time 0. A Sim from load() has those the library tells: no\n"
