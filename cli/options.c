@@ -208,7 +208,8 @@ static void check_combination(const options *o, int npos, const char *system_opt
         die(EXIT_USAGE,
             "%s cannot be given with --from: the frame gives every position and velocity",
             placement_option);
-    if (o->checkpoint_every && !o->checkpoint_path)
+    /* (A restart's may come from its checkpoint: run_settings.c.) */
+    if (o->checkpoint_every && !o->checkpoint_path && !o->restart_path)
         die(EXIT_USAGE, "--checkpoint-every needs --checkpoint FILE");
     if (o->from_path && o->mixture_text)
         die(EXIT_USAGE, "--mixture cannot be given with --from: the frame gives every radius");
@@ -309,14 +310,17 @@ static void set_option(options *o, int which, const char *value, first_options *
         break;
     case FRAMES:
         o->frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
+        o->frames_given = 1;
         break;
     case STEPS:
         o->steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
+        o->steps_given = 1;
         break;
     case OUT:
         if (!*value)
             die(EXIT_USAGE, "--out needs a directory name");
         o->out_dir = value;
+        o->out_given = 1;
         break;
     case STATS:
         o->stats_path = file_arg("--stats", value);
