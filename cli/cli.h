@@ -40,6 +40,9 @@ typedef struct options {
     ds_placement placement;
     ds_boundary boundary;
     double box_y; /* 0: square */
+    /* --box, --dt, --speed (0: the library's defaults); --area-fraction,
+     * from which R is worked out (0: R given) */
+    double box, dt, speed, area_fraction;
     /* --mixture RATIO:FRACTION: a FRACTION of the disks of radius RATIO R
      * (mix_fraction 0: one kind); --mass area|equal */
     double mix_ratio, mix_fraction;
@@ -77,6 +80,20 @@ const char *in_command_words(const ds_error *err, char *out, size_t cap);
 
 /* options.c */
 options parse_args(int argc, char **argv);
+
+/* arguments.c: a value of the command line, or a usage error naming it. */
+int is_decimal_text(const char *s); /* digits, '.', 'e', signs only (no hex, nan, inf) */
+uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_t max);
+double radius_arg(const char *s);
+double side_arg(const char *option, const char *s); /* --box, --box-y */
+double positive_arg(const char *option, const char *s, double most); /* most 0: no bound */
+void mixture_arg(const char *s, options *o);
+void refuse_name(ds_status st, const ds_error *err); /* a name the library did not parse */
+const char *file_arg(const char *option, const char *value);
+
+/* suggest.c: of names[0 .. count), the one nearest to typed (len bytes),
+ * if near enough to be a typo of it; else NULL. */
+const char *closest_option(const char *typed, size_t len, const char *const *names, size_t count);
 
 /* start.c: the request checked (with --from, as the frame's: from is its
  * path), a new simulation, or one from a checkpoint or a frame. */

@@ -1093,6 +1093,50 @@ static int last_row(char *csv, char *cols[], int most)
     return n;
 }
 
+/* --box, --box-y, --speed, --dt and --area-fraction reach the
+ * simulation: 500 disks (and a 1.4:0.5 mixture) at area fraction 0.25 in a
+ * box of 600 x 450 cover 0.25 of it (to the rounding of a sum of 500
+ * areas, 1e-12), every centre inside it (frames print 6 decimals), the kinetic energy is N V^2 / 2
+ * for --speed 3 (equal masses; 1e-12 relative: the sum's rounding), and
+ * frames of 10 steps of --dt 0.01 are 0.1 apart. */
+static void test_the_box_speed_dt_and_area_fraction_options_reach_the_run(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *mixtures[2] = {"", "--mixture 1.4:0.5"};
+    for (int m = 0; m < 2; ++m) {
+        must_run(dir,
+                 "500 --area-fraction 0.25 %s --box 600 --box-y 450 --speed 3 --dt 0.01 "
+                 "--steps-per-frame 10 --frames 2 --quiet --overwrite --out o --stats s.csv",
+                 mixtures[m]);
+        size_t len;
+        char *csv = slurp_in(dir, "s.csv", &len);
+        assert_non_null(csv);
+        char *cols[16];
+        assert_int_equal(last_row(csv, cols, 16), 11);
+        assert_true(fabs(strtod(cols[1], NULL) - 0.1) < 1e-9);               /* time */
+        assert_true(fabs(strtod(cols[2], NULL) / (500 * 4.5) - 1.0) < 1e-12); /* K */
+        assert_true(fabs(strtod(cols[10], NULL) - 0.25) < 1e-12);             /* eta */
+        free(csv);
+        ds_frame f;
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/o/frame_0001.txt", dir);
+        assert_int_equal(ds_frame_read(path, &f, NULL), DS_OK);
+        assert_int_equal(f.count, 500);
+        for (size_t k = 0; k < f.count; ++k) {
+            const ds_frame_disk *d = &f.disks[k];
+            /* The time step turns a disk a step after it crossed its
+             * wall line: it may be up to V dt = 0.03 past it. */
+            const double past = 3.0 * 0.01 + 1e-6;
+            assert_true(d->x >= d->r - past && d->x <= 600 - d->r + past);
+            assert_true(d->y >= d->r - past && d->y <= 450 - d->r + past);
+        }
+        ds_frame_free(&f);
+    }
+    remove_tree(dir);
+}
+
 /* --mixture 1.4:0.3: 30 of 100 disks have radius 1.4 R, the rest R, in
  * every frame; --mass area changes the motion (the large disks weigh
  * 1.96), not the start. */
@@ -1470,6 +1514,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_a_second_signal_ends_the_run_at_once_keeping_the_trajectory),
         cmocka_unit_test(test_a_killed_run_leaves_a_checkpoint_that_restarts),
         cmocka_unit_test(test_a_restart_without_options_goes_on_with_the_run),
+        cmocka_unit_test(test_the_box_speed_dt_and_area_fraction_options_reach_the_run),
         cmocka_unit_test(test_a_checkpoint_without_settings_restarts_with_the_defaults),
         cmocka_unit_test(test_a_run_starts_from_a_frame_written_with_velocities),
         cmocka_unit_test(test_a_corrupted_checkpoint_is_refused_with_one_line),
