@@ -168,8 +168,12 @@ PyObject *dspy_params_repr(const ds_params *params, unsigned unknown, PyObject *
  * does not (seed, speed, placement). */
 unsigned dspy_params_of_sim(const ds_sim *sim, ds_params *params);
 /* The parameters of a dict of Sim's keyword arguments (a pickle's),
- * checked as Sim checks them; unknown receives the mask of the arguments
- * the dict does not have. */
+ * converted as Sim converts them (TypeError, ArgumentError for a name or a
+ * mixture's shape) but not judged by ds_params_check: they describe the
+ * checkpoint beside them, not a simulation to create (dspy_restore
+ * compares them with it). unknown receives the mask of the arguments the
+ * dict does not have. On success the caller frees the mixture and owns
+ * mixture->args. */
 int dspy_params_from_dict(PyObject *dict, ds_params *params, dspy_mixture *mixture,
                           unsigned *unknown);
 /* Whether the argument name is in the unknown mask. */
