@@ -209,6 +209,7 @@ ds_sim *dspy_sim_of(dspy_sim *self);
 PyObject *dspy_positions_property(dspy_sim *self, void *closure);
 PyObject *dspy_velocities_property(dspy_sim *self, void *closure);
 PyObject *dspy_unwrapped_property(dspy_sim *self, void *closure);
+PyObject *dspy_images_property(dspy_sim *self, void *closure);
 PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs);
 /* Every disk of sim (ds_sim_get_disks) into a new buffer; NULL with MemoryError. */
 ds_disk *dspy_get_all(const ds_sim *sim);

@@ -277,7 +277,7 @@ def test_a_closed_sim_refuses_everything_and_says_so():
         "placement", "broadphase", "kinetic_energy", "momentum", "pressure", "virial_pressure",
         "psi6", "collision_count", "wall_count", "wall_impulse", "pairs_tested",
         "collision_seconds", "radii", "masses", "radius_max", "area_fraction", "growth_state",
-        "growth_z")]
+        "growth_z", "images", "unwrapped")]
     for call in calls:
         with pytest.raises(Error, match="this Sim is closed"):
             call()
