@@ -313,6 +313,24 @@ static PyObject *sim_reset_observables(dspy_sim *self, PyObject *unused)
     Py_RETURN_NONE;
 }
 
+/* len(s) is s.n, as len() of a freud or HOOMD system is its particles'. */
+static Py_ssize_t sim_length(dspy_sim *self)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    return sim ? (Py_ssize_t)ds_sim_get_count(sim) : -1;
+}
+
+/* Truth is not length: a Sim is true, closed or not, as any object is
+ * (with __len__ alone, `if s:` would raise for a closed one). */
+static int sim_bool(dspy_sim *self)
+{
+    (void)self;
+    return 1;
+}
+
+static PySequenceMethods sim_as_sequence = {.sq_length = (lenfunc)sim_length};
+static PyNumberMethods sim_as_number = {.nb_bool = (inquiry)sim_bool};
+
 /* ---------------------------------------------------------------- methods */
 
 static PyMethodDef sim_methods[] = {
@@ -400,6 +418,8 @@ PyTypeObject dspy_SimType = {
     .tp_basicsize = sizeof(dspy_sim),
     .tp_dealloc = (destructor)sim_dealloc,
     .tp_repr = (reprfunc)sim_repr,
+    .tp_as_sequence = &sim_as_sequence,
+    .tp_as_number = &sim_as_number,
     .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE,
     .tp_doc = sim_doc,
     .tp_methods = sim_methods,

@@ -108,6 +108,16 @@ def test_a_sim_is_a_context_manager():
     assert s.closed
 
 
+def test_len_of_a_sim_is_its_number_of_disks_and_a_sim_is_always_true():
+    s = disksim.Sim(400, 5)
+    assert len(s) == s.n == 400
+    assert len(disksim.Sim(7, 5, species=[(3, 5), (4, 7)])) == 7
+    s.close()
+    with pytest.raises(disksim.Error, match="closed"):
+        len(s)  # as s.n
+    assert s  # truth is not length: `if s:` never raises
+
+
 def test_sim_can_be_subclassed():
     class Mine(disksim.Sim):
         def area_fraction(self):
