@@ -7,9 +7,9 @@
  * parameters of a simulation from keyword arguments (params.c), the Sim
  * type (sim.c), its properties (properties.c), its state as arrays
  * (state.c), exact checkpoints and pickles (checkpoint.c), frames
- * (frames.c), the analysis functions (analysis.c) and ASE (ase.c). Only
- * the public header disk_sim.h is used: the module is a thin face over
- * the library.
+ * (frames.c), the analysis functions (analysis.c), ASE (ase.c) and freud
+ * and HOOMD-blue's view (freud.c). Only the public header disk_sim.h is
+ * used: the module is a thin face over the library.
  *
  * Internal names start with dspy_; the module is built with
  * -fvisibility=hidden, so none of them (nor the library's ds_*) leaves it.
@@ -245,6 +245,11 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
 
 /* ase.c */
 PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused);
+
+/* freud.c: the disks as freud and HOOMD-blue take a system. */
+PyObject *dspy_sim_freud_box(dspy_sim *self, PyObject *unused);
+PyObject *dspy_sim_freud_points(dspy_sim *self, PyObject *unused);
+extern const char dspy_freud_box_doc[], dspy_freud_points_doc[];
 
 /* The module functions' docstrings, beside their code. */
 extern const char dspy_read_frame_doc[];

@@ -403,6 +403,8 @@ static PyMethodDef sim_methods[] = {
      "periodic box, else all False, arrays 'radius' (n,) and 'velo' (n, 3), info\n"
      "'Time'; dummy atoms 'X' (atomic number 0, mass 1). ImportError without ASE\n"
      "(Debian: python3-ase)."},
+    {"freud_box", (PyCFunction)dspy_sim_freud_box, METH_NOARGS, dspy_freud_box_doc},
+    {"freud_points", (PyCFunction)dspy_sim_freud_points, METH_NOARGS, dspy_freud_points_doc},
     {"close", (PyCFunction)sim_close, METH_NOARGS,
      "close($self, /)\n--\n\n"
      "Free the simulation's memory now; afterwards every use raises Error. Calling\n"
