@@ -116,6 +116,7 @@ class Sim:
     def contacts(self, gap: float = 0.0001) -> Contacts: ...
     def pair_histogram(self, dr: float, bins: int) -> NDArray[np.uint64]: ...
     def local_psi6(self, cutoff: float | None = None) -> NDArray[np.complex128]: ...
+    def rdf(self, r_max: float, bins: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
     def write_frame(self, path: StrOrBytesPath, velocities: bool = False) -> None: ...
     def save(self, path: StrOrBytesPath) -> None: ...
     # An ase.Atoms; Any, so that the types need no ASE (an optional dependency).
@@ -228,6 +229,16 @@ def pair_histogram(
     box_y: float | None = None,
     boundary: _Boundary = "walls",
 ) -> NDArray[np.uint64]: ...
+def rdf(
+    positions: ArrayLike,
+    r_max: float,
+    bins: int,
+    *,
+    box: float = 1000.0,
+    box_y: float | None = None,
+    boundary: _Boundary = "walls",
+    radius: float = 0.0,
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]: ...
 def local_psi6(
     positions: ArrayLike,
     cutoff: float,
@@ -264,6 +275,7 @@ __all__ = [
     "load",
     "pair_histogram",
     "local_psi6",
+    "rdf",
     "memory_needed",
     "Frame",
     "Contacts",

@@ -231,6 +231,8 @@ PyObject *dspy_pair_histogram(PyObject *module, PyObject *args, PyObject *kwargs
 PyObject *dspy_local_psi6(PyObject *module, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_pair_histogram(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_local_psi6(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_rdf(PyObject *module, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_rdf(dspy_sim *self, PyObject *args, PyObject *kwargs);
 
 /* checkpoint.c: exact checkpoints, files and pickles. */
 PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs);
@@ -255,5 +257,6 @@ extern const char dspy_freud_box_doc[], dspy_freud_points_doc[];
 extern const char dspy_read_frame_doc[];
 extern const char dspy_pair_histogram_doc[];
 extern const char dspy_local_psi6_doc[];
+extern const char dspy_rdf_doc[];
 
 #endif /* DISKSIM_PY_H */

@@ -380,6 +380,13 @@ static PyMethodDef sim_methods[] = {
      "pair_histogram($self, /, dr, bins)\n--\n\n"
      "disksim.pair_histogram() of this Sim's disks in its box and boundary: the\n"
      "number of pairs at each distance, in bins of width dr, for g(r)."},
+    {"rdf", (PyCFunction)(void (*)(void))dspy_sim_rdf, METH_VARARGS | METH_KEYWORDS,
+     "rdf($self, /, r_max, bins)\n--\n\n"
+     "disksim.rdf() of this Sim's disks in its box and boundary: (r, g), g(r) in bins\n"
+     "of width r_max / bins, normalised by an ideal gas of n centres in the same box\n"
+     "(with walls, in the rectangle the centres reach, box - 2R by box_y - 2R, with\n"
+     "the partners a wall takes away; a mixture's R is its mean radius, which is\n"
+     "exact to first order in the radii over the box)."},
     {"local_psi6", (PyCFunction)(void (*)(void))dspy_sim_local_psi6, METH_VARARGS | METH_KEYWORDS,
      "local_psi6($self, /, cutoff=None)\n--\n\n"
      "disksim.local_psi6() of this Sim's disks in its box and boundary: psi6 of\n"

@@ -271,7 +271,8 @@ def test_a_closed_sim_refuses_everything_and_says_so():
              lambda: s.to_ase(), lambda: s.reset_observables(), lambda: s.pair_histogram(1, 2),
              lambda: s.local_psi6(), lambda: s.params, lambda: s.__enter__(),
              lambda: s.save("x"), lambda: s.__reduce__(), lambda: s.set_growth(1.0),
-             lambda: s.scale_velocities(2.0), lambda: s.contacts()]
+             lambda: s.scale_velocities(2.0), lambda: s.contacts(), lambda: s.rdf(10.0, 2),
+             lambda: s.freud_box(), lambda: s.freud_points(), lambda: len(s)]
     calls += [lambda name=name: getattr(s, name) for name in (
         "n", "radius", "box", "box_y", "dt", "time", "steps", "integrator", "boundary",
         "placement", "broadphase", "kinetic_energy", "momentum", "pressure", "virial_pressure",
