@@ -5,7 +5,7 @@
 # written as Python signatures; help() has the words. The names,
 # signatures, defaults, base classes, fields and the Literal names here
 # are checked against the built module by python/tests/test_stubs.py.
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any, Final, Literal, final
 
 import numpy as np
@@ -106,7 +106,14 @@ class Sim:
 
     # running
     def step(self) -> None: ...
-    def run(self, steps: int) -> None: ...
+    def run(
+        self,
+        steps: int | None = None,
+        *,
+        until: float | None = None,
+        callback: Callable[[Self], object] | None = None,
+        every: int = 1,
+    ) -> None: ...
     def reset_observables(self) -> None: ...
     def set_state(self, positions: ArrayLike, velocities: ArrayLike | None = None) -> None: ...
     def set_growth(self, rate: float, until_eta: float = 0.0, until_z: float = 0.0) -> None: ...

@@ -305,7 +305,8 @@ PyGetSetDef dspy_sim_getset[] = {
     {"closed", (getter)closed_property, NULL, "Whether close() has freed this Sim.", NULL},
     {"running", (getter)running_property, NULL,
      "Whether a thread is inside this Sim's run() (or step(), set_state(),\n"
-     "write_frame()) now. Never raises.",
+     "write_frame()) now; not while run() calls its callback, when the Sim is free.\n"
+     "Never raises.",
      NULL},
     {NULL, NULL, NULL, NULL, NULL},
 };

@@ -24,7 +24,7 @@ def test_everything_public_has_a_docstring():
 
 def test_help_reads_like_the_header():
     text = pydoc.render_doc(disksim.Sim, renderer=pydoc.plaintext)
-    for words in ("N hard disks of one radius", "'event': exact event-driven", "run(self, /, steps)",
+    for words in ("N hard disks of one radius", "'event': exact event-driven", "run(self, /, steps=None, *, until=None, callback=None, every=1)",
                   "virial_pressure", "Pressure from the collision virial", "releases the GIL",
                   "species     [(count, radius), ...]", "mass        the rule for the masses",
                   "set_growth(self, /, rate, until_eta=0.0, until_z=0.0)",
