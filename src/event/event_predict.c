@@ -2,8 +2,9 @@
 /* A disk's next event (event-driven integrator): the earliest of its
  * wall turn, its next cell crossing and its collisions with the disks of
  * the 3 x 3 cells around it (in a field the pairs' relative motion is
- * still straight: the records keep the falling frame, event_state.h). This is the integrator's hot
- * loop: each collision predicts both disks again, each crossing and wall turn one. */
+ * still straight: the records keep the falling frame, event_state.h).
+ * This is the integrator's hot loop: each collision predicts both disks
+ * again, each crossing and wall turn one. */
 #include <math.h>
 
 #include "core/lanes.h"
@@ -20,10 +21,6 @@
 static inline void boundary_event(const ds_events *e, const ed_disk *d, uint32_t i, double now,
                                   double *best, uint32_t *kind)
 {
-    if (e->falls) { /* parabolas, and both edges of the cell (falling.c) */
-        ds_ed_boundary_falling(e, d, i, now, best, kind);
-        return;
-    }
     const ds_cells *cells = &e->cells;
     const int walls_x = !ds_box_periodic(&e->box, 0), walls_y = !ds_box_periodic(&e->box, 1);
     /* The wall lines: R from each wall, a mixture's disk its own R. */
@@ -299,7 +296,10 @@ double ds_ed_predict_growing(ds_events *e, uint32_t i)
     const double now = d->t;
     double best = INFINITY;
     uint32_t kind = EV_NONE, partner_changes = 0;
-    boundary_event(e, d, i, now, &best, &kind);
+    if (e->falls)
+        ds_ed_boundary_falling(e, d, i, now, &best, &kind);
+    else
+        boundary_event(e, d, i, now, &best, &kind);
     ds_ed_stencil_cells st;
     ds_ed_stencil(e, d->column, d->row, &st);
     uint64_t tested = 0;
@@ -354,7 +354,14 @@ double ds_ed_predict(ds_events *e, uint32_t i)
     pr.partner_changes = 0;
     pr.count = 0;
     pr.tested = 0;
-    boundary_event(e, d, i, pr.now, &pr.best, &pr.kind);
+    /* In a field, parabolas and both edges of the cell (falling.c); the
+     * straight flights' test stays apart so that it is inlined as it was
+     * (callgrind: the event loop took 1.1% more instructions with the branch
+     * inside it, as many as before without). */
+    if (e->falls)
+        ds_ed_boundary_falling(e, d, i, pr.now, &pr.best, &pr.kind);
+    else
+        boundary_event(e, d, i, pr.now, &pr.best, &pr.kind);
 
     if (ds_ed_interior(cells, d)) {
         /* Away from the edges of the grid (nearly every disk of a large
