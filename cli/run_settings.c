@@ -98,7 +98,10 @@ static char *value_of(const char *v, size_t len)
 
 /* Reads what record_run_settings wrote; a key it does not know is
  * skipped (a later command's), a number that is not one refused. */
-static settings kept; /* its paths live as long as the run's options */
+/* Its paths live as long as the run's options. Volatile: a static only
+ * written is a store the compiler may drop, and LeakSanitizer then finds
+ * the paths lost. */
+static volatile settings kept;
 
 static settings read_settings(const char *meta, const char *path)
 {
