@@ -341,10 +341,10 @@ static void test_dir_renders_every_frame_of_a_disks_run(void **state)
         assert_int_equal(img.width, 64);
         free(img.rgb);
     }
-    /* Without --out the PNGs go next to the frames. */
+    /* Without --out the PNGs go next to the frames (and frames.json). */
     snprintf(args, sizeof args, "--quiet --size 64 --dir %s", frames);
     assert_int_equal(run(*state, args), 0);
-    assert_int_equal(count_files(frames), 12);
+    assert_int_equal(count_files(frames), 13);
 }
 
 static void test_version_names_the_backend_and_the_gl_renderer(void **state)
@@ -677,7 +677,7 @@ static void test_a_movie_is_h264_yuv420p_with_every_frame(void **state)
     assert_int_equal(pr.width, 96);
     assert_int_equal(pr.height, 96);
     assert_int_equal(count_files(out), 1);     /* the movie, no temporary */
-    assert_int_equal(count_files(frames), 12); /* and no PNG beside the frames */
+    assert_int_equal(count_files(frames), 13); /* the frames and frames.json: no PNG */
 }
 
 /* yuv420p stores colour for 2 x 2 pixel blocks: an odd size is padded. */
