@@ -226,9 +226,10 @@ $(OUT)tools/pressure: tools/analysis/pressure.c tools/analysis/analysis_util.h $
 # tools/gr: g(r) of one frame file (public API only), plotted by
 # tools/analysis/plot_gr.plt. Built by `make`.
 all: $(OUT)tools/gr
-$(OUT)tools/gr: tools/analysis/gr.c $(LIB) $(PUB_HDR)
+$(OUT)tools/gr: tools/analysis/gr.c $(BUILD)/tools/frames_json.o $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(WARN) -Iinclude -Itools/common $(CFLAGS) $(LDFLAGS) -o $@ $< \
+	    $(BUILD)/tools/frames_json.o $(LIB) $(LDLIBS)
 
 # tools/transport: diffusion, mean-squared displacement and velocity
 # autocorrelation of one periodic system (public API only), plotted by
@@ -433,6 +434,11 @@ endif
 $(BUILD)/tools/%.o: tools/renderer/%.c $(RENDER_DEPS)
 	@mkdir -p $(BUILD)/tools
 	$(CC) $(WARN) -Iinclude $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
+
+# What the tools share: frames.json's reader (render, gr).
+$(BUILD)/tools/frames_json.o: tools/common/frames_json.c tools/common/frames_json.h $(PUB_HDR)
+	@mkdir -p $(BUILD)/tools
+	$(CC) $(WARN) -Iinclude $(CFLAGS) -c $< -o $@
 
 $(BUILD)/tools/render-%: $(RENDER_COMMON:%=$(BUILD)/tools/%.o) $(BUILD)/tools/render_%.o $(LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(shell $(PKG_CONFIG) --libs $(RENDER_PKGS_$*)) -lpthread $(LDLIBS)
