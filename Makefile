@@ -414,12 +414,12 @@ RENDER_BACKENDS := $(if $(HAVE_PKG_CONFIG),$(strip $(foreach b,osmesa egl,$(if $
 BACKEND ?= $(firstword $(RENDER_BACKENDS))
 RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
 RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png \
-                 render_movie
+                 render_movie render_request render_inputs render_xyz frames_json
 RENDER_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null))
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)
 .SECONDARY: $(RENDER_OBJ) # kept between builds, not intermediate
-RENDER_DEPS := $(PUB_HDR) $(wildcard tools/renderer/*.h)
+RENDER_DEPS := $(PUB_HDR) $(wildcard tools/renderer/*.h) tools/common/frames_json.h
 
 .PHONY: render render-skipped clean-render
 ifneq ($(RENDER_BACKENDS),)
@@ -433,7 +433,7 @@ endif
 
 $(BUILD)/tools/%.o: tools/renderer/%.c $(RENDER_DEPS)
 	@mkdir -p $(BUILD)/tools
-	$(CC) $(WARN) -Iinclude $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
+	$(CC) $(WARN) -Iinclude -Itools/common $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
 
 # What the tools share: frames.json's reader (render, gr).
 $(BUILD)/tools/frames_json.o: tools/common/frames_json.c tools/common/frames_json.h $(PUB_HDR)

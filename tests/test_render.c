@@ -361,6 +361,194 @@ static void test_version_names_the_backend_and_the_gl_renderer(void **state)
 }
 
 /* ------------------------------------------------------------------ */
+/* One backend: the run's box, periodic images, XYZ                    */
+/* ------------------------------------------------------------------ */
+
+/* A fresh directory whose path stays (path_in's buffers are reused). */
+static const char *kept_dir(char *keep, size_t cap, const char *name)
+{
+    snprintf(keep, cap, "%s", fresh_dir(name));
+    return keep;
+}
+
+/* Runs disks with args in a fresh directory dir/name; its path. */
+static const char *disks_run(const char *name, const char *args)
+{
+    static char dir[512];
+    snprintf(dir, sizeof dir, "%s", fresh_dir(name));
+    char full[1200];
+    snprintf(full, sizeof full, "%s --quiet --out %s", args, dir);
+    if (run(RENDER_DISKS, full) != 0)
+        fail_msg("disks %s: %s", full, last_stderr());
+    return dir;
+}
+
+/* Renders args (which name the frames) at size px into the PNG out. */
+static image render_png(const char *binary, const char *args, int size, const char *out)
+{
+    char full[2048];
+    snprintf(full, sizeof full, "--quiet --size %d %s", size, args);
+    int st = run(binary, full);
+    if (st != 0)
+        fail_msg("render %s exited with %d: %s", full, st, last_stderr());
+    return read_png(out);
+}
+
+/* The outline crosses the middle of the box's top edge (within half its
+ * width of the edge), and the image is background half an outline and a
+ * pixel beyond it. */
+static void assert_top_edge(const image *img, const rl_layout *l, const char *what)
+{
+    const double x = rl_px(l, 0.5 * l->box), y = rl_py(l, l->box_y);
+    if (!near(pixel(img, x, y - 0.25 * l->outline + 0.01), to8(RC_OUTLINE)) ||
+        !near(pixel(img, x, y + 0.5 * l->outline + 1.0), to8(RC_BACKGROUND)))
+        fail_msg("%s: no box edge at y = %g px", what, y);
+}
+
+/* disks --box-y 500 writes frames.json; the renderer draws that box with
+ * no option: the edge at height 500, nothing where a square box's top
+ * half would be. */
+static void test_a_run_is_drawn_in_its_own_box_from_frames_json(void **state)
+{
+    const char *dir = disks_run("rect", "40 5 --box-y 500 --frames 1");
+    char args[1200], out[600];
+    snprintf(out, sizeof out, "%s", path_in(dir, "frame_0000.png"));
+    snprintf(args, sizeof args, "--dir %s", dir);
+    image img = render_png(*state, args, 200, out);
+    assert_string_equal(last_stderr(), "");
+    rl_layout l, square;
+    rl_make_rect(&l, 200, 1000.0, 500.0, 0);
+    rl_make(&square, 200, 1000.0, 0);
+    assert_top_edge(&img, &l, "the run's 1000 x 500 box");
+    assert_colour(pixel(&img, rl_px(&square, 500), rl_py(&square, 1000) - 0.5 * square.outline),
+                  RC_BACKGROUND, "where a square box's top edge would be");
+    free(img.rgb);
+    /* Options still win, and the contradiction is said. */
+    snprintf(args, sizeof args, "--box-y 1000 --dir %s", dir);
+    img = render_png(*state, args, 200, out);
+    assert_top_edge(&img, &square, "--box-y 1000");
+    if (!strstr(last_stderr(), "frames.json gives the box 1000 x 500; drawn 1000 x 1000 as the "
+                               "options say"))
+        fail_msg("stderr: %s", last_stderr());
+    free(img.rgb);
+}
+
+/* A frame whose frames.json is another run's is refused, not drawn in
+ * that run's box. */
+static void test_a_frame_that_is_not_its_frames_json_runs_is_refused(void **state)
+{
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "foreign");
+    write_text(path_in(dir, "frames.json"), "{\"n\": 3, \"box\": [1000, 500]}\n");
+    write_text(path_in(dir, "frame_0000.txt"), "100 100 5\n200 200 5\n");
+    char args[600];
+    snprintf(args, sizeof args, "--quiet %s", path_in(dir, "frame_0000.txt"));
+    assert_int_equal(run(*state, args), 1);
+    if (!strstr(last_stderr(), "frame_0000.txt: 2 disks, but ") ||
+        !strstr(last_stderr(), "frames.json says n = 3: not that run's frame"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(dir), 2); /* no PNG */
+}
+
+/* In a periodic box a disk across an edge is drawn on both sides and
+ * clipped to the box; in a channel only across the x edges; with walls
+ * it hangs over the edge as before. Disk 1 crosses the left edge, disk 2
+ * the top edge, disk 3 the corner. */
+static void test_a_disk_across_a_periodic_edge_is_drawn_on_both_sides(void **state)
+{
+    const char *text = "15 500 40\n500 985 40\n10 10 40\n";
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 0);
+    const rgb8 disk = to8(RC_DISK), bg = to8(RC_BACKGROUND);
+#define AT(x, y) near(pixel(&img, rl_px(&l, x), rl_py(&l, y)), disk)
+#define OFF(x, y) near(pixel(&img, rl_px(&l, x), rl_py(&l, y)), bg)
+    image img = render_text(*state, text, 400, "--periodic");
+    assert_true(AT(15, 500) && AT(990, 500) && OFF(-15, 500));             /* across x, clipped */
+    assert_true(AT(500, 985) && AT(500, 10) && OFF(500, 1015));            /* across y, clipped */
+    assert_true(AT(10, 10) && AT(990, 10) && AT(10, 990) && AT(990, 990)); /* the corner */
+    free(img.rgb);
+    /* The same from a frames.json that says so, with no option. */
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "periodic");
+    write_text(path_in(dir, "frames.json"), "{\"box\": [1000, 1000], \"boundary\": \"periodic\"}");
+    write_text(path_in(dir, "frame_0000.txt"), text);
+    char args[600], out[600];
+    snprintf(args, sizeof args, "%s", path_in(dir, "frame_0000.txt"));
+    snprintf(out, sizeof out, "%s", path_in(dir, "frame_0000.png"));
+    img = render_png(*state, args, 400, out);
+    assert_true(AT(990, 500) && OFF(-15, 500) && AT(500, 10) && AT(990, 990));
+    free(img.rgb);
+    img = render_text(*state, text, 400, "--boundary channel");
+    assert_true(AT(990, 500) && OFF(-15, 500));                  /* periodic along x */
+    assert_true(OFF(500, 10) && AT(500, 1015) && OFF(990, 990)); /* walls along y */
+    free(img.rgb);
+    img = render_text(*state, text, 400, NULL);
+    assert_true(OFF(990, 500) && AT(-15, 500) && OFF(500, 10) && AT(500, 1015));
+    free(img.rgb);
+#undef AT
+#undef OFF
+}
+
+/* disks --trajectory writes extended XYZ: one PNG per frame, named from
+ * the file and the frame's index, in the box its Lattice gives, periodic
+ * by its pbc (the image column is not drawn). */
+static void test_an_extended_xyz_trajectory_gives_a_png_per_frame(void **state)
+{
+    const char *pngs = fresh_dir("xyz-pngs");
+    char out[600], xyz[600], args[1400];
+    snprintf(out, sizeof out, "%s", pngs);
+    snprintf(xyz, sizeof xyz, "%s", path_in(scratch, "run.xyz"));
+    snprintf(args, sizeof args, "30 5 --periodic --box-y 500 --frames 3 --trajectory %s", xyz);
+    disks_run("xyz-frames", args);
+    snprintf(args, sizeof args, "--out %s %s", out, xyz);
+    image img = render_png(*state, args, 200, path_in(out, "run_0002.png"));
+    assert_int_equal(count_files(out), 3); /* run_0000.png ... run_0002.png */
+    rl_layout l;
+    rl_make_rect(&l, 200, 1000.0, 500.0, 1); /* velo: speed colours and their legend */
+    assert_top_edge(&img, &l, "the Lattice's 1000 x 500 box");
+    free(img.rgb);
+}
+
+/* The columns are found by the Properties= header, in any order: a file
+ * as ASE writes it (momenta, not drawn) and one with velo before pos. */
+static void test_an_xyz_file_is_read_by_its_properties_header(void **state)
+{
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "ase");
+    /* Written by ase.io.write (ASE 3.22.1) from Atoms with a radius array
+     * and velocities, one disk across the left edge of a periodic box. */
+    write_text(path_in(dir, "ase.xyz"),
+               "2\n"
+               "Lattice=\"1000.0 0.0 0.0 0.0 500.0 0.0 0.0 0.0 10.0\" "
+               "Properties=species:S:1:pos:R:3:radius:R:1:momenta:R:3 Time=1.5 pbc=\"T T F\"\n"
+               "X       10.00000000     250.00000000       0.00000000      40.00000000       "
+               "1.00000000       2.00000000       0.00000000\n"
+               "X      700.00000000     300.00000000       0.00000000      25.00000000       "
+               "3.00000000       4.00000000       0.00000000\n");
+    char args[600];
+    snprintf(args, sizeof args, "%s", path_in(dir, "ase.xyz"));
+    image img = render_png(*state, args, 400, path_in(dir, "ase_0000.png"));
+    rl_layout l;
+    rl_make_rect(&l, 400, 1000.0, 500.0, 0);
+    assert_colour(pixel(&img, rl_px(&l, 700), rl_py(&l, 300)), RC_DISK, "disk 2");
+    assert_colour(pixel(&img, rl_px(&l, 990), rl_py(&l, 250)), RC_DISK, "disk 1's image");
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 250)), RC_BACKGROUND, "between");
+    free(img.rgb);
+    write_text(path_in(dir, "order.xyz"),
+               "2\n"
+               "Properties=velo:R:2:species:S:1:radius:R:1:pos:R:2 pbc=\"F F F\" "
+               "Lattice=\"1000 0 0 0 1000 0 0 0 1\"\n"
+               "10 0 X 60 300 500\n"
+               "0 -240 X 60 700 500\n");
+    snprintf(args, sizeof args, "--vmax 250 %s", path_in(dir, "order.xyz"));
+    img = render_png(*state, args, 400, path_in(dir, "order_0000.png"));
+    rl_make(&l, 400, 1000.0, 1);
+    assert_colour(pixel(&img, rl_px(&l, 300), rl_py(&l, 500)), rc_viridis(10.0 / 250.0), "slow");
+    assert_colour(pixel(&img, rl_px(&l, 700), rl_py(&l, 500)), rc_viridis(240.0 / 250.0), "fast");
+    free(img.rgb);
+}
+
+/* ------------------------------------------------------------------ */
 /* One backend: bad input                                              */
 /* ------------------------------------------------------------------ */
 
@@ -854,7 +1042,14 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_a_missing_file_is_refused, binary),                         \
         cmocka_unit_test_prestate(test_a_bad_frame_among_good_ones_fails_the_run, binary),         \
         cmocka_unit_test_prestate(test_directories_that_cannot_be_read_are_refused, binary),       \
-        cmocka_unit_test_prestate(test_an_output_directory_that_is_a_file_is_refused, binary)
+        cmocka_unit_test_prestate(test_an_output_directory_that_is_a_file_is_refused, binary),     \
+        cmocka_unit_test_prestate(test_a_run_is_drawn_in_its_own_box_from_frames_json, binary),    \
+        cmocka_unit_test_prestate(test_a_frame_that_is_not_its_frames_json_runs_is_refused,        \
+                                  binary),                                                         \
+        cmocka_unit_test_prestate(test_a_disk_across_a_periodic_edge_is_drawn_on_both_sides,       \
+                                  binary),                                                         \
+        cmocka_unit_test_prestate(test_an_extended_xyz_trajectory_gives_a_png_per_frame, binary),  \
+        cmocka_unit_test_prestate(test_an_xyz_file_is_read_by_its_properties_header, binary)
 
 #define MOVIE_TESTS(binary)                                                                        \
     cmocka_unit_test_prestate(test_a_movie_is_h264_yuv420p_with_every_frame, binary),              \
