@@ -463,12 +463,13 @@ render-skipped:
 # The test runs each backend's binary (their paths are compiled in) and
 # links the GL-free parts (colour map, layout) to compute expected pixels.
 $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDER_DEPS) \
-                            $(BUILD)/tools/render_colormap.o $(BUILD)/tools/render_layout.o
+                            $(BUILD)/tools/render_colormap.o $(BUILD)/tools/render_layout.o \
+                            $(BUILD)/tools/render_font.o
 	@mkdir -p $(BUILD)/tests
 	$(CC) $(WARN) $(CPPFLAGS) -Itools/renderer $(RENDER_CFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) \
 	    $(foreach b,$(RENDER_BACKENDS),-DRENDER_$(b)='"$(BUILD)/tools/render-$(b)"') \
 	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
-	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
+	    $(BUILD)/tools/render_layout.o $(BUILD)/tools/render_font.o $(LIB) $(CMOCKA_LIBS) \
 	    $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null) $(LDLIBS)
 
 # ---------------------------------------------------------------- python

@@ -14,6 +14,7 @@
 #include <png.h>
 
 #include "render_colormap.h"
+#include "render_font.h"
 #include "render_layout.h"
 
 /* ------------------------------------------------------------------ */
@@ -361,7 +362,7 @@ static void test_version_names_the_backend_and_the_gl_renderer(void **state)
 }
 
 /* ------------------------------------------------------------------ */
-/* One backend: the run's box, periodic images, XYZ                    */
+/* One backend: the run's box, periodic images, labels                 */
 /* ------------------------------------------------------------------ */
 
 /* A fresh directory whose path stays (path_in's buffers are reused). */
@@ -546,6 +547,70 @@ static void test_an_xyz_file_is_read_by_its_properties_header(void **state)
     assert_colour(pixel(&img, rl_px(&l, 300), rl_py(&l, 500)), rc_viridis(10.0 / 250.0), "slow");
     assert_colour(pixel(&img, rl_px(&l, 700), rl_py(&l, 500)), rc_viridis(240.0 / 250.0), "fast");
     free(img.rgb);
+}
+
+/* The label's text as drawn: every font pixel of every character is the
+ * outline's colour where the glyph has it and the background elsewhere. */
+static void assert_label(const image *img, const rl_layout *l, const char *want)
+{
+    const double px = l->text_px;
+    for (size_t k = 0; want[k]; ++k) {
+        const unsigned char *rows = rf_glyph(want[k]);
+        for (int row = 0; row < RF_HEIGHT; ++row)
+            for (int col = 0; col < RF_WIDTH; ++col) {
+                const int on = rows[row] & (1u << (RF_WIDTH - 1 - col));
+                const double x = l->label_x + ((double)k * (RF_WIDTH + 1) + col + 0.5) * px;
+                const double y = l->label_y + (RF_HEIGHT - 1 - row + 0.5) * px;
+                if (!near(pixel(img, x, y), to8(on ? RC_OUTLINE : RC_BACKGROUND)))
+                    fail_msg("label \"%s\": character %zu, row %d, column %d is not %s", want, k,
+                             row, col, on ? "drawn" : "blank");
+            }
+    }
+}
+
+/* --label time: k steps_per_frame dt from frames.json (or an XYZ Time=);
+ * --label frame: the frame's number. */
+static void test_a_label_shows_the_time_or_the_frame_number(void **state)
+{
+    const char *dir = disks_run("label", "10 5 --frames 4 --steps-per-frame 50 --dt 0.002");
+    char args[1200], out[600];
+    snprintf(out, sizeof out, "%s", path_in(dir, "frame_0003.png"));
+    rl_layout l;
+    rl_make_view(&l, 400, 1000.0, 1000.0, 0, 1);
+    snprintf(args, sizeof args, "--label time %s", path_in(dir, "frame_0003.txt"));
+    image img = render_png(*state, args, 400, out);
+    assert_label(&img, &l, "t = 0.3");
+    free(img.rgb);
+    snprintf(args, sizeof args, "--label frame %s", path_in(dir, "frame_0003.txt"));
+    img = render_png(*state, args, 400, out);
+    assert_label(&img, &l, "frame 3");
+    free(img.rgb);
+    /* Without a label nothing is there. */
+    snprintf(args, sizeof args, "%s", path_in(dir, "frame_0003.txt"));
+    img = render_png(*state, args, 400, out);
+    rl_layout plain;
+    rl_make(&plain, 400, 1000.0, 0);
+    assert_colour(pixel(&img, plain.x0 + 0.5, plain.size - 0.5), RC_BACKGROUND, "no label");
+    free(img.rgb);
+    /* An XYZ frame's Time=. */
+    char xyz[512];
+    snprintf(xyz, sizeof xyz, "%s", path_in(scratch, "label.xyz"));
+    write_text(xyz,
+               "1\nLattice=\"1000 0 0 0 1000 0 0 0 1\" Properties=species:S:1:pos:R:3:radius:R:1 "
+               "Time=12.5 pbc=\"F F F\"\nX 500 500 0 20\n");
+    snprintf(args, sizeof args, "--label time %s", xyz);
+    img = render_png(*state, args, 400, path_in(scratch, "label_0000.png"));
+    assert_label(&img, &l, "t = 12.5");
+    free(img.rgb);
+    /* A frame with no time is refused before anything is drawn. */
+    char keep[512];
+    const char *bare = kept_dir(keep, sizeof keep, "label-bare");
+    write_text(path_in(bare, "frame_0001.txt"), "500 500 20\n");
+    snprintf(args, sizeof args, "--label time %s", path_in(bare, "frame_0001.txt"));
+    assert_int_equal(run(*state, args), 1);
+    if (!strstr(last_stderr(), "--label time: ") || !strstr(last_stderr(), "use --label frame"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(bare), 1);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1049,7 +1114,8 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_a_disk_across_a_periodic_edge_is_drawn_on_both_sides,       \
                                   binary),                                                         \
         cmocka_unit_test_prestate(test_an_extended_xyz_trajectory_gives_a_png_per_frame, binary),  \
-        cmocka_unit_test_prestate(test_an_xyz_file_is_read_by_its_properties_header, binary)
+        cmocka_unit_test_prestate(test_an_xyz_file_is_read_by_its_properties_header, binary),      \
+        cmocka_unit_test_prestate(test_a_label_shows_the_time_or_the_frame_number, binary)
 
 #define MOVIE_TESTS(binary)                                                                        \
     cmocka_unit_test_prestate(test_a_movie_is_h264_yuv420p_with_every_frame, binary),              \

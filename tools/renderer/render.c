@@ -6,7 +6,7 @@
  *   render --movie run.mp4 [options] --dir DIR
  *
  * The command line is read and checked (render_request.c), and the frames
- * listed, each with its box, boundary and PNG's name
+ * listed, each with its box, boundary, number, time and PNG's name
  * (render_inputs.c, from the options, a run's frames.json or an XYZ
  * header), so every refusal comes before anything is made.
  * Each worker thread owns one GL context (render_backend.h) and one set of
@@ -34,6 +34,7 @@
 typedef struct job {
     const ri_list *list;
     rd_options draw;
+    rq_label label;
     mode_t mode;
     rm_movie *movie;      /* --movie: frames go to ffmpeg, no PNGs are written */
     pthread_mutex_t lock; /* guards next, next_write, failed and stderr */
@@ -90,7 +91,12 @@ static int draw_frame(job *j, rd_renderer *r, size_t i, char *msg, size_t len)
     ds_frame frame;
     if (ri_read(j->list, i, &frame, msg, len) != 0)
         return -1;
-    const rd_view view = {f->box_x, f->box_y, f->boundary};
+    char label[64];
+    if (j->label == RQ_LABEL_TIME)
+        snprintf(label, sizeof label, "t = %.6g", f->time);
+    else
+        snprintf(label, sizeof label, "frame %ld", f->number);
+    const rd_view view = {f->box_x, f->box_y, f->boundary, j->label ? label : NULL};
     char why[256];
     const int rc = rd_draw(r, &frame, &view, why, sizeof why);
     ds_frame_free(&frame);
@@ -220,7 +226,8 @@ int main(int argc, char **argv)
     if (parsed != 0 || (rc = rq_check(&q)) != 0 || (rc = rq_prepare(&q, &list)) != 0)
         goto done;
     j.list = &list;
-    j.draw = (rd_options){(int)q.size, q.colour, q.vmax};
+    j.draw = (rd_options){(int)q.size, q.colour, q.vmax, q.label != RQ_LABEL_NONE};
+    j.label = q.label;
     j.mode = umask(0);
     umask(j.mode);
     j.mode = 0666 & ~j.mode;

@@ -328,8 +328,8 @@ static int disk_quads(rd_renderer *r, const ds_frame *frame, const rd_view *view
     return 0;
 }
 
-/* The box's outline and the legend, over the disks. */
-static int decorations(rd_renderer *r, const rl_layout *l, const palette *p)
+/* The box's outline, the legend and the label, over the disks. */
+static int decorations(rd_renderer *r, const rl_layout *l, const palette *p, const char *label)
 {
     /* The outline goes over the disks: a disk touching a wall overlaps the
      * edge by a fraction of a step, and the box must stay visible. */
@@ -344,7 +344,8 @@ static int decorations(rd_renderer *r, const rl_layout *l, const palette *p)
            /* The psi6 bar: bond orientations from -30 to +30 degrees at
             * full order, t as rc_psi6 maps the phase. */
            (p->psi6 && legend(r, l, rc_cyclic, "-30", "30", "psi6")) ||
-           (p->sizes && size_legend(r, l, p->rmin, p->rmax));
+           (p->sizes && size_legend(r, l, p->rmin, p->rmax)) ||
+           (label && text(r, l->label_x, l->label_y, l->text_px, label, RC_OUTLINE));
 }
 
 /* Sends the vertices and draws them: the first disk_vertices (the disks)
@@ -403,7 +404,8 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, const rd_view *view, char *er
         p.rmax = fmax(p.rmax, frame->disks[i].r);
     }
     rl_layout l;
-    rl_make_rect(&l, r->opt.size, view->box_x, view->box_y, p.speeds || p.psi6 || p.sizes);
+    rl_make_view(&l, r->opt.size, view->box_x, view->box_y, p.speeds || p.psi6 || p.sizes,
+                 r->opt.label);
     p.vmax = !p.speeds ? 0.0 : r->opt.vmax > 0.0 ? r->opt.vmax : rc_speed_scale(frame);
     if (p.psi6) {
         p.re = malloc(frame->count * sizeof *p.re);
@@ -421,7 +423,7 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, const rd_view *view, char *er
     const size_t disk_vertices = r->count;
     free(p.re);
     free(p.im);
-    if (failed || decorations(r, &l, &p)) {
+    if (failed || decorations(r, &l, &p, view->label)) {
         snprintf(err, errlen, "out of memory for %zu disks", frame->count);
         return -1;
     }

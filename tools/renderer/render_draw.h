@@ -24,6 +24,7 @@ typedef struct rd_options {
     int size;         /* image side in pixels */
     rd_colour colour; /* what the colours show */
     double vmax;      /* top of the speed scale for 5-column frames, 0 = automatic */
+    int label;        /* a line above the box holds each frame's label (rd_view) */
 } rd_options;
 
 /* What one frame is drawn in, besides its disks. */
@@ -33,6 +34,7 @@ typedef struct rd_view {
      * only): a disk across an edge is drawn on both sides, clipped to the
      * box, and psi6 counts neighbours across the edges. */
     ds_boundary boundary;
+    const char *label; /* text above the box's top-left corner ("t = 2.5"); NULL: none */
 } rd_view;
 
 /* Compiles the shaders and makes the buffers, once per context. */

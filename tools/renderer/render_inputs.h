@@ -3,7 +3,7 @@
  * order, with what the drawing needs besides the disks: the box and its
  * boundary (the options', else the run's frames.json beside a frame file
  * or the XYZ frame's header, else 1000 x 1000 with walls), the frame's
- * number and time and its PNG's name. The list is built
+ * number and time (for --label) and its PNG's name. The list is built
  * before anything is drawn, so that every refusal comes first; ri_read
  * then reads one frame's disks, from any thread. */
 #ifndef RENDER_INPUTS_H

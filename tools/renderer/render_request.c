@@ -36,6 +36,8 @@ const char rq_usage[] =
     "               +30 degrees on a cyclic colour wheel, darker where |psi6| is\n"
     "               small (brightness 0.3 + 0.7 |psi6|), or size, the radius\n"
     "               from the frame's smallest to its largest (mixtures)\n"
+    "  --label L    write above the box each frame's time (time: from frames.json\n"
+    "               or the XYZ Time=) or number (frame)\n"
     "  --vmax V     speed at the top of the colour scale (default 2.5 x rms speed)\n"
     "  -j N         frames rendered at once, 1..256 (default: number of cores)\n"
     "  --movie FILE write one H.264 MP4 movie of the frames instead of PNGs\n"
@@ -91,6 +93,15 @@ static int word_option(rq_request *q, const char *s, const char *v, int *a)
         }
         q->box.boundary = (int)b;
         return 1;
+    }
+    if (!strcmp(s, "--label")) {
+        ++*a;
+        q->label = !strcmp(v, "time")    ? RQ_LABEL_TIME
+                   : !strcmp(v, "frame") ? RQ_LABEL_FRAME
+                                         : RQ_LABEL_NONE;
+        if (q->label == RQ_LABEL_NONE)
+            fprintf(stderr, "render: --label must be time or frame, got '%s'\n", v);
+        return q->label == RQ_LABEL_NONE ? -1 : 1;
     }
     const char **into = !strcmp(s, "--out") ? &q->out : !strcmp(s, "--movie") ? &q->movie : NULL;
     if (into) {
@@ -169,13 +180,38 @@ int rq_check(const rq_request *q)
     return 2;
 }
 
-/* Lists every frame, names the outputs and makes --out's directory. 0, or the exit status (said).
- */
+/* What the frames must give for the request, before anything is made:
+ * a time or a number for --label. 0, or the exit status (said). */
+static int check_frames(const rq_request *q, const ri_list *list)
+{
+    for (size_t i = 0; i < list->count; ++i) {
+        const ri_frame *f = &list->frames[i];
+        if (q->label == RQ_LABEL_TIME && !isfinite(f->time)) {
+            fprintf(stderr, "render: --label time: %s has no time (%s): use --label frame\n",
+                    f->path,
+                    f->xyz ? "its XYZ header has no Time="
+                           : "no frames.json with dt and steps_per_frame beside it, or not "
+                             "named frame_NNNN.txt");
+            return 1;
+        }
+        if (q->label == RQ_LABEL_FRAME && f->number < 0) {
+            fprintf(stderr, "render: --label frame: %s is not named frame_NNNN.txt\n", f->path);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Lists every frame, checks what they must give, names the outputs and
+ * makes --out's directory. 0, or the exit status (said). */
 int rq_prepare(const rq_request *q, ri_list *list)
 {
     for (size_t k = 0; k < q->count; ++k)
         if ((q->is_dir[k] ? ri_add_dir : ri_add_file)(list, q->inputs[k], &q->box) != 0)
             return 1;
+    int rc = check_frames(q, list);
+    if (rc != 0)
+        return rc;
     if (!q->movie && ri_name_outputs(list, q->out)) {
         fprintf(stderr, "render: out of memory\n");
         return 1;

@@ -12,6 +12,8 @@
 
 #define RQ_MAX_WORKERS 256 /* -j's largest */
 
+typedef enum rq_label { RQ_LABEL_NONE, RQ_LABEL_TIME, RQ_LABEL_FRAME } rq_label;
+
 /* The command line: what it asks for, and its inputs in their order. */
 typedef struct rq_request {
     const char *out, *movie;
@@ -19,6 +21,7 @@ typedef struct rq_request {
     ri_box box;
     int quiet;
     rd_colour colour;
+    rq_label label;
     const char **inputs; /* argv entries, in order */
     int *is_dir;         /* inputs[k] was given to --dir */
     size_t count;
@@ -34,7 +37,8 @@ enum { RQ_HELP = -1, RQ_VERSION = -2 };
 int rq_parse(rq_request *q, int argc, char **argv);
 /* The checks that need only the command line: 0, or 2 (said). */
 int rq_check(const rq_request *q);
-/* Lists every frame into list, names the PNGs and makes --out's
+/* Lists every frame into list, checks what the request needs of them
+ * (a time or a number for --label), names the PNGs and makes --out's
  * directory. 0, or the exit status (said). */
 int rq_prepare(const rq_request *q, ri_list *list);
 
