@@ -361,16 +361,14 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
         struct stat st;
         snprintf(full, sizeof full, "%s/%s", dir, after[i]);
         if (lstat(full, &st) == 0 && S_ISDIR(st.st_mode)) {
-            /* A failed disks may leave the --out it made, holding frames
-             * (the renderer's promise is only about files). */
+            /* A failed disks may leave the --out it made holding frames,
+             * the renderer holding PNGs: never an empty one. */
             DIR *d = opendir(full);
             int entries = 0;
             for (struct dirent *e; d && (e = readdir(d));)
                 entries += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
             if (d)
                 closedir(d);
-            if (strncmp(c->command, "disks", 5) != 0)
-                continue;
             if (c->exit_code == 2)
                 snprintf(o->problem, sizeof o->problem, "a usage error made directory '%s'",
                          after[i]);

@@ -613,6 +613,37 @@ static void test_a_label_shows_the_time_or_the_frame_number(void **state)
     assert_int_equal(count_files(bare), 1);
 }
 
+/* --out F.png writes that one file for one frame, and with more frames
+ * is refused, making nothing; a failed render leaves no directory it
+ * made. */
+static void test_out_names_one_png_or_a_directory(void **state)
+{
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "out-png");
+    char one[600], args[1600];
+    write_text(path_in(dir, "frame_0000.txt"), "500 500 20\n");
+    write_text(path_in(dir, "frame_0001.txt"), "500 500 20\n");
+    snprintf(one, sizeof one, "%s", path_in(dir, "one.png"));
+    snprintf(args, sizeof args, "--out %s %s", one, path_in(dir, "frame_0000.txt"));
+    image img = render_png(*state, args, 64, one);
+    assert_int_equal(img.width, 64);
+    free(img.rgb);
+    struct stat st;
+    assert_int_equal(stat(one, &st), 0);
+    assert_true(S_ISREG(st.st_mode));
+    snprintf(args, sizeof args, "--quiet --out %s --dir %s", path_in(dir, "two.png"), dir);
+    assert_int_equal(run(*state, args), 2);
+    if (!strstr(last_stderr(), "names one PNG, but there are 2 frames: give --out a directory"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(dir), 3); /* the frames and one.png: no two.png */
+    /* A render that fails removes the --out directory it made. */
+    write_text(path_in(dir, "bad.txt"), "1 2 -3\n");
+    snprintf(args, sizeof args, "--quiet --out %s %s", path_in(dir, "made"),
+             path_in(dir, "bad.txt"));
+    assert_int_equal(run(*state, args), 1);
+    assert_int_not_equal(stat(path_in(dir, "made"), &st), 0);
+}
+
 /* ------------------------------------------------------------------ */
 /* One backend: bad input                                              */
 /* ------------------------------------------------------------------ */
@@ -996,6 +1027,48 @@ static void test_movie_frames_keep_their_order_with_many_workers(void **state)
     assert_int_equal(pclose(p), 0);
 }
 
+/* The name says the format: .gif a GIF, .mp4 an MP4; any other name is
+ * refused before anything is rendered. */
+static void test_a_movie_is_the_format_its_name_says(void **state)
+{
+    SKIP_WITHOUT_FFMPEG();
+    const char *dir = fresh_dir("movie-kinds");
+    char dir_copy[512], args[1400];
+    snprintf(dir_copy, sizeof dir_copy, "%s", dir);
+    for (int k = 0; k < 3; ++k) {
+        char name[32], text[32];
+        snprintf(name, sizeof name, "frame_%04d.txt", k);
+        snprintf(text, sizeof text, "%d 500 60\n", 200 + 300 * k);
+        write_text(path_in(dir_copy, name), text);
+    }
+    const struct {
+        const char *name, *magic;
+        size_t at;
+    } kinds[] = {{"m.gif", "GIF89a", 0}, {"m.GIF", "GIF89a", 0}, {"m.mp4", "ftyp", 4}};
+    for (size_t k = 0; k < 3; ++k) {
+        snprintf(args, sizeof args, "--quiet --size 96 --movie %s --dir %s",
+                 path_in(dir_copy, kinds[k].name), dir_copy);
+        if (run(*state, args) != 0)
+            fail_msg("render --movie %s: %s", kinds[k].name, last_stderr());
+        FILE *f = fopen(path_in(dir_copy, kinds[k].name), "rb");
+        assert_non_null(f);
+        char head[16] = "";
+        assert_int_equal(fread(head, 1, sizeof head, f), sizeof head);
+        fclose(f);
+        if (memcmp(head + kinds[k].at, kinds[k].magic, strlen(kinds[k].magic)) != 0)
+            fail_msg("%s does not hold \"%s\" at byte %zu", kinds[k].name, kinds[k].magic,
+                     kinds[k].at);
+        assert_int_equal(ffprobe(path_in(dir_copy, kinds[k].name)).frames, 3);
+    }
+    assert_int_equal(count_files(dir_copy), 6);
+    snprintf(args, sizeof args, "--quiet --movie %s --dir %s", path_in(dir_copy, "m.avi"),
+             dir_copy);
+    assert_int_equal(run(*state, args), 2);
+    if (!strstr(last_stderr(), "m.avi: the name must end in .mp4 (H.264) or .gif"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(dir_copy), 6); /* no m.avi, no temporary */
+}
+
 /* Runs the renderer with PATH holding only an empty directory. */
 static void test_a_movie_without_ffmpeg_names_the_package(void **state)
 {
@@ -1115,14 +1188,16 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
                                   binary),                                                         \
         cmocka_unit_test_prestate(test_an_extended_xyz_trajectory_gives_a_png_per_frame, binary),  \
         cmocka_unit_test_prestate(test_an_xyz_file_is_read_by_its_properties_header, binary),      \
-        cmocka_unit_test_prestate(test_a_label_shows_the_time_or_the_frame_number, binary)
+        cmocka_unit_test_prestate(test_a_label_shows_the_time_or_the_frame_number, binary),        \
+        cmocka_unit_test_prestate(test_out_names_one_png_or_a_directory, binary)
 
 #define MOVIE_TESTS(binary)                                                                        \
     cmocka_unit_test_prestate(test_a_movie_is_h264_yuv420p_with_every_frame, binary),              \
         cmocka_unit_test_prestate(test_an_odd_size_makes_an_even_movie, binary),                   \
         cmocka_unit_test_prestate(test_movie_frames_keep_their_order_with_many_workers, binary),   \
         cmocka_unit_test_prestate(test_a_movie_without_ffmpeg_names_the_package, binary),          \
-        cmocka_unit_test_prestate(test_a_bad_frame_leaves_no_movie, binary)
+        cmocka_unit_test_prestate(test_a_bad_frame_leaves_no_movie, binary),                       \
+        cmocka_unit_test_prestate(test_a_movie_is_the_format_its_name_says, binary)
 
 /* The movie code is the same in every backend's binary: tested with one. */
 #ifdef RENDER_osmesa

@@ -3,7 +3,7 @@
  * movie, off-screen, no display or gnuplot.
  *
  *   render [options] FRAME.txt... RUN.xyz...     render [options] --dir DIR
- *   render --movie run.mp4 [options] --dir DIR
+ *   render --movie run.mp4 [options] --dir DIR   (or run.gif)
  *
  * The command line is read and checked (render_request.c), and the frames
  * listed, each with its box, boundary, number, time and PNG's name
@@ -196,7 +196,7 @@ static int render_all(job *j, size_t workers, int quiet)
     if (!quiet)
         printf("render: %zu frame%s, %dx%d px, %s backend, %zu worker%s, %.2f s%s\n", count,
                count == 1 ? "" : "s", j->draw.size, j->draw.size, rb_name(), started + 1,
-               started ? "s" : "", ds_timer_now() - start, j->movie ? ", one H.264 movie" : "");
+               started ? "s" : "", ds_timer_now() - start, j->movie ? ", one movie" : "");
     return 0;
 }
 
@@ -214,7 +214,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "render: out of memory\n");
         return 1;
     }
-    int rc = 0;
+    int rc = 0, made = 0;
     ri_list list;
     memset(&list, 0, sizeof list);
     job j;
@@ -223,7 +223,7 @@ int main(int argc, char **argv)
     if (parsed == RQ_HELP)
         printf("%sBackend: %s (render --version names the GL renderer).\n", rq_usage, rb_name());
     rc = parsed == RQ_VERSION ? print_version() : parsed > 0 ? parsed : 0;
-    if (parsed != 0 || (rc = rq_check(&q)) != 0 || (rc = rq_prepare(&q, &list)) != 0)
+    if (parsed != 0 || (rc = rq_check(&q)) != 0 || (rc = rq_prepare(&q, &list, &made)) != 0)
         goto done;
     j.list = &list;
     j.draw = (rd_options){(int)q.size, q.colour, q.vmax, q.label != RQ_LABEL_NONE};
@@ -233,8 +233,8 @@ int main(int argc, char **argv)
     j.mode = 0666 & ~j.mode;
     if (q.movie) {
         char why[512];
-        if (!(j.movie = rm_open(q.movie, j.draw.size, j.draw.size, (int)q.fps, j.mode, why,
-                                sizeof why))) {
+        if (!(j.movie = rm_open(q.movie, (rm_format)rm_format_of(q.movie), j.draw.size, j.draw.size,
+                                (int)q.fps, j.mode, why, sizeof why))) {
             fprintf(stderr, "render: %s\n", why);
             rc = 1;
             goto done;
@@ -252,6 +252,9 @@ int main(int argc, char **argv)
     pthread_cond_destroy(&j.turn);
     pthread_mutex_destroy(&j.lock);
 done:
+    /* A failed render leaves no directory it made and left empty. */
+    if (rc != 0 && made)
+        rmdir(q.out);
     ri_free(&list);
     free(q.inputs);
     free(q.is_dir);

@@ -283,11 +283,11 @@ static char *png_name(const ri_frame *f, const char *out_dir)
     return s;
 }
 
-int ri_name_outputs(ri_list *l, const char *out_dir)
+int ri_name_outputs(ri_list *l, const char *out_dir, const char *out_file)
 {
     for (size_t i = 0; i < l->count; ++i) {
         ri_frame *f = &l->frames[i];
-        if (!(f->output = png_name(f, out_dir)))
+        if (!(f->output = out_file ? copy(out_file) : png_name(f, out_dir)))
             return -1;
     }
     return 0;

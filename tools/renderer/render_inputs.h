@@ -51,8 +51,9 @@ int ri_add_dir(ri_list *l, const char *dir, const ri_box *given);
 
 /* Names every frame's PNG: frame_0012.txt -> frame_0012.png and frame
  * 12 of run.xyz -> run_0012.png, in out_dir if given, else beside the
- * file. -1 without memory. */
-int ri_name_outputs(ri_list *l, const char *out_dir);
+ * file; out_file (the list's one frame) names it outright. -1 without
+ * memory. */
+int ri_name_outputs(ri_list *l, const char *out_dir, const char *out_file);
 
 /* The disks of frame i, checked against its run's frames.json (its N,
  * whether it has velocities). 0, or -1 with a message naming the file. */

@@ -5,9 +5,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 
 #include "render_layout.h"
+#include "render_movie.h"
 #include "render_request.h"
 
 const char rq_usage[] =
@@ -21,7 +23,8 @@ const char rq_usage[] =
     "boundary come from the run's frames.json beside the frames, or the XYZ\n"
     "header; the options below replace them.\n"
     "  --dir DIR    render every frame_*.txt in DIR, in name order\n"
-    "  --out DIR    write the PNGs into DIR (created if missing)\n"
+    "  --out DIR    write the PNGs into DIR (created if missing); --out F.png\n"
+    "               writes the one frame given as F.png\n"
     "  --size PX    image width and height, 32..16384 (default 800)\n"
     "  --box L      side of the simulation box, its width if --box-y is given\n"
     "               (default: the run's, else 1000)\n"
@@ -40,8 +43,8 @@ const char rq_usage[] =
     "               or the XYZ Time=) or number (frame)\n"
     "  --vmax V     speed at the top of the colour scale (default 2.5 x rms speed)\n"
     "  -j N         frames rendered at once, 1..256 (default: number of cores)\n"
-    "  --movie FILE write one H.264 MP4 movie of the frames instead of PNGs\n"
-    "               (needs ffmpeg on PATH; Debian package ffmpeg)\n"
+    "  --movie FILE write one movie of the frames instead of PNGs: FILE.mp4 (H.264)\n"
+    "               or FILE.gif (needs ffmpeg on PATH; Debian package ffmpeg)\n"
     "  --fps N      movie frames per second, 1..240 (default 25, as the GIF)\n"
     "  --quiet      print nothing but errors and warnings\n"
     "  -h, --help, --version\n";
@@ -175,15 +178,36 @@ int rq_check(const rq_request *q)
         fprintf(stderr, "render: no frame files given (try --help)\n");
     else if (q->movie && q->out)
         fprintf(stderr, "render: --movie writes no PNGs: give --movie or --out, not both\n");
+    else if (q->movie && rm_format_of(q->movie) < 0)
+        fprintf(stderr, "render: --movie %s: the name must end in .mp4 (H.264) or .gif\n",
+                q->movie);
     else
         return 0;
     return 2;
 }
 
+/* --out names one PNG rather than a directory: it ends in .png and is
+ * not a directory already. */
+static int names_one_png(const char *out)
+{
+    const size_t n = strlen(out);
+    struct stat st;
+    return n > 4 && strcasecmp(out + n - 4, ".png") == 0 &&
+           !(stat(out, &st) == 0 && S_ISDIR(st.st_mode));
+}
+
 /* What the frames must give for the request, before anything is made:
- * a time or a number for --label. 0, or the exit status (said). */
+ * one frame for --out F.png, a time or a number for --label. 0, or the
+ * exit status (said). */
 static int check_frames(const rq_request *q, const ri_list *list)
 {
+    if (q->out && names_one_png(q->out) && list->count != 1) {
+        fprintf(stderr,
+                "render: --out %s names one PNG, but there are %zu frames: give --out a "
+                "directory (e.g. --out pngs) for a PNG each, or one frame\n",
+                q->out, list->count);
+        return 2;
+    }
     for (size_t i = 0; i < list->count; ++i) {
         const ri_frame *f = &list->frames[i];
         if (q->label == RQ_LABEL_TIME && !isfinite(f->time)) {
@@ -203,8 +227,9 @@ static int check_frames(const rq_request *q, const ri_list *list)
 }
 
 /* Lists every frame, checks what they must give, names the outputs and
- * makes --out's directory. 0, or the exit status (said). */
-int rq_prepare(const rq_request *q, ri_list *list)
+ * makes --out's directory (*made: it did not exist). 0, or the exit
+ * status (said). */
+int rq_prepare(const rq_request *q, ri_list *list, int *made)
 {
     for (size_t k = 0; k < q->count; ++k)
         if ((q->is_dir[k] ? ri_add_dir : ri_add_file)(list, q->inputs[k], &q->box) != 0)
@@ -212,13 +237,18 @@ int rq_prepare(const rq_request *q, ri_list *list)
     int rc = check_frames(q, list);
     if (rc != 0)
         return rc;
-    if (!q->movie && ri_name_outputs(list, q->out)) {
+    const int one_png = q->out && names_one_png(q->out);
+    if (!q->movie && ri_name_outputs(list, one_png ? NULL : q->out, one_png ? q->out : NULL)) {
         fprintf(stderr, "render: out of memory\n");
         return 1;
     }
-    if (q->out && mkdir(q->out, 0777) != 0 && errno != EEXIST) {
-        fprintf(stderr, "render: %s: cannot create directory: %s\n", q->out, strerror(errno));
-        return 1;
+    if (q->out && !one_png) {
+        if (mkdir(q->out, 0777) == 0) {
+            *made = 1;
+        } else if (errno != EEXIST) {
+            fprintf(stderr, "render: %s: cannot create directory: %s\n", q->out, strerror(errno));
+            return 1;
+        }
     }
     return 0;
 }

@@ -38,8 +38,9 @@ int rq_parse(rq_request *q, int argc, char **argv);
 /* The checks that need only the command line: 0, or 2 (said). */
 int rq_check(const rq_request *q);
 /* Lists every frame into list, checks what the request needs of them
- * (a time or a number for --label), names the PNGs and makes --out's
- * directory. 0, or the exit status (said). */
-int rq_prepare(const rq_request *q, ri_list *list);
+ * (one frame for --out F.png, a time or a number for --label), names the
+ * PNGs and makes --out's directory (*made: this call made it). 0, or the
+ * exit status (said). */
+int rq_prepare(const rq_request *q, ri_list *list, int *made);
 
 #endif
