@@ -117,7 +117,7 @@ int main(int argc, char **argv)
             boundary = DS_BOUNDARY_PERIODIC;
             continue;
         } else if (!strcmp(s, "--boundary")) {
-            ds_boundary b;
+            ds_boundary b = DS_BOUNDARY_WALLS; /* clang cannot see that die() does not return */
             if (!v || ds_boundary_parse(v, &b, NULL) != DS_OK)
                 die(EXIT_USAGE, "--boundary must be walls, periodic or channel, got '%s'",
                     v ? v : "");
