@@ -96,14 +96,52 @@ ds_status ds_xyz_write(const ds_sim *sim, FILE *out, ds_error *err);
 typedef enum ds_format {
     DS_FORMAT_FRAME = 0, /* "frame": a text frame a write, lines "x y R [vx vy]" */
     DS_FORMAT_XYZ,       /* "xyz": extended XYZ, a frame a write */
+    DS_FORMAT_GSD,       /* "gsd": a GSD file (HOOMD schema), a frame a write */
     DS_FORMAT_COUNT
 } ds_format;
-const char *ds_format_name(ds_format format); /* "frame", "xyz"; "unknown" */
+const char *ds_format_name(ds_format format); /* "frame", "xyz", "gsd"; "unknown" */
 ds_status ds_format_parse(const char *name, ds_format *out, ds_error *err);
 
+/* "gsd" writes GSD 2.0 files in the HOOMD schema 1.4, the trajectory
+ * format HOOMD-blue writes and OVITO, VMD, freud, MDAnalysis and the gsd
+ * Python package read (gsd.hoomd.open). Each write is a frame holding:
+ *   configuration/step        uint64  sim's step count (ds_sim_get_steps)
+ *   configuration/dimensions  uint8   2
+ *   configuration/box         float   Lx Ly 0 0 0 0 (a 2D box has Lz 0)
+ *   particles/N               uint32  the disk count
+ *   particles/types           int8    the kinds' names (ds_sim_get_kind_name)
+ *   particles/typeid          uint32  each disk's kind (ds_sim_get_kinds)
+ *   particles/mass            float   each disk's mass
+ *   particles/diameter        float   each disk's 2 r
+ *   particles/position        float   x - Lx/2, y - Ly/2, 0: the box centred
+ *                                     on the origin, as HOOMD places it
+ *   particles/velocity        float   vx, vy, 0
+ *   particles/image           int32   ix, iy, 0 (ds_sim_get_images)
+ *   log/disksim/NAME          the command's --stats columns: time,
+ *                             kinetic_energy, px, py, pressure,
+ *                             virial_pressure, psi6 (NaN where the library
+ *                             has none), area_fraction (float64) and
+ *                             collisions, wall_reflections (uint64)
+ * in generation order (HOOMD's tag order), every number little-endian.
+ * Frame 0 holds every chunk; a later frame holds the step, positions,
+ * velocities and log, and the other chunks only where they differ from
+ * frame 0's (the schema reads a missing chunk from frame 0): the
+ * diameters of a growth, the images of a periodic box. A centre that
+ * float rounding puts on the box's +L/2 side of a periodic axis is
+ * written at -L/2 with its image one more, as HOOMD requires -L/2 <= x <
+ * L/2 (so x + ix Lx is the unwrapped centre to float rounding). GSD has
+ * no walls: every HOOMD box is periodic, and a box with walls is written
+ * with its sides and images 0. After every write the file is a valid
+ * GSD file of the frames written: a frame's chunks are written before the
+ * index entries that point at them, and the index is flushed with them.
+ * ds_writer_open writes the header, the chunks' names and an empty index
+ * (DS_ERR_IO if that fails), on a stream that can seek and stands at its
+ * start (DS_ERR_ARG otherwise: a pipe cannot hold a GSD file); offsets
+ * past LONG_MAX (2 GiB where long has 32 bits) are DS_ERR_IO. */
+
 /* What a writer writes beyond positions and radii, where its format can
- * (bits of flags): velocities (a frame's vx vy columns; XYZ always has
- * them). */
+ * (bits of flags): velocities (a frame's vx vy columns; XYZ and GSD always
+ * have them). */
 #define DS_WRITE_VELOCITIES 1u
 
 typedef struct ds_writer ds_writer; /* opaque */
