@@ -63,28 +63,33 @@ void ds_frame_free(ds_frame *frame);
 /* One frame of an extended XYZ trajectory; frames written one after
  * another to the same file make the trajectory. A frame is the disk count
  * on a line, the comment line
- *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
- *   Time=T pbc="F F F"
- * with walls, or in a periodic box
- *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3:image:I:2
- *   Time=T pbc="T T F"
- * (one line; Lx and Ly the box's sides, ds_sim_get_box_width and
- * ds_sim_get_box_height, and H twice the largest radius,
- * ds_sim_get_radius_max, each in the shortest form that reads back
- * exactly; T the simulated time with 6 decimals), then one line per disk
- * in generation order,
- *   X x y 0 r vx vy 0         with walls
- *   X x y 0 r vx vy 0 ix iy   in a periodic box
- * with x, y, vx, vy written like frames (6 decimals), r the disk's own
- * radius (ds_sim_get_radii) in the shortest form that reads back exactly,
- * and ix, iy its image counts (ds_sim_get_images), so x + ix Lx, y + iy Ly
- * is its unwrapped centre. The 2D box is written as a cell of height H
- * with every disk at z = 0, periodic along x and y only; "X" is a dummy
- * species. ASE reads positions, cell and pbc, arrays "radius", "velo" and
- * "image" and info "Time"; OVITO maps the columns to Particle Type,
- * Position, Radius and Velocity. ds_xyz_format works like
- * ds_frame_format (ds_xyz_get_size is always enough); ds_xyz_write writes
- * one frame to out, flushed (DS_ERR_IO if the write fails). */
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=P Time=T pbc="F F F"
+ * with walls (pbc="T T F" in a periodic box, "T F F" in a channel), P
+ *   type:S:1:pos:R:3:radius:R:1:velo:R:3:momenta:R:3:mass:R:1:masses:R:1
+ * and outside walls P:map_shift:I:3 (one line; Lx and Ly the box's sides,
+ * ds_sim_get_box_width and ds_sim_get_box_height, and H twice the
+ * largest radius, ds_sim_get_radius_max, each in the shortest form that
+ * reads back exactly; T the simulated time with 6 decimals), then one
+ * line per disk in generation order,
+ *   K x y 0 r vx vy 0 px py 0 m m           with walls
+ *   K x y 0 r vx vy 0 px py 0 m m ix iy 0   in a periodic box or channel
+ * with K the name of the disk's kind (ds_sim_get_kind_name), x, y, vx, vy
+ * and its momentum px = m vx, py = m vy written like frames (6
+ * decimals), r its own radius (ds_sim_get_radii) and m its mass
+ * (ds_sim_get_masses) in the shortest form that reads back exactly, and
+ * ix, iy its image counts (ds_sim_get_images), so x + ix Lx, y + iy Ly is
+ * its unwrapped centre. The 2D box is written as a cell of height H with
+ * every disk at z = 0, periodic along x and y only. The columns are named
+ * for the two readers: OVITO maps type, pos, radius, velo, mass and
+ * map_shift to Particle Type, Position, Radius, Velocity, Mass and
+ * Periodic Image; ASE (ase.io.read) maps pos to positions and keeps the
+ * rest as per-atom arrays of their names, reading momenta and masses as
+ * its momenta and masses (so get_velocities() is vx, vy, 0), its atoms
+ * the dummy "X" (no species column: a kind's name is no chemical symbol),
+ * with cell, pbc and info "Time". OVITO takes a cell as 2D only without a
+ * z column, which ASE needs: it sees a flat 3D cell. ds_xyz_format works
+ * like ds_frame_format (ds_xyz_get_size is always enough); ds_xyz_write
+ * writes one frame to out, flushed (DS_ERR_IO if the write fails). */
 size_t ds_xyz_get_size(const ds_sim *sim);
 ds_status ds_xyz_format(const ds_sim *sim, char *buf, size_t cap, size_t *len, ds_error *err);
 ds_status ds_xyz_write(const ds_sim *sim, FILE *out, ds_error *err);
@@ -117,7 +122,7 @@ ds_status ds_format_parse(const char *name, ds_format *out, ds_error *err);
  *                                     on the origin, as HOOMD places it
  *   particles/velocity        float   vx, vy, 0
  *   particles/image           int32   ix, iy, 0 (ds_sim_get_images)
- *   log/disksim/NAME          the command's --stats columns: time,
+ *   log/disksim/NAME          the command's --stats columns after frame: time,
  *                             kinetic_energy, px, py, pressure,
  *                             virial_pressure, psi6 (NaN where the library
  *                             has none), area_fraction (float64) and

@@ -19,7 +19,7 @@ enum {
 };
 
 /* What one frame logs (log/disksim/<name>), computed once per frame: the
- * columns of the command's --stats, named as there. */
+ * columns of the command's --stats after frame, named as there. */
 typedef struct ds_gsd_log {
     double time, kinetic_energy, px, py, pressure, virial_pressure, psi6, area_fraction;
     uint64_t collisions, wall_reflections;
