@@ -30,6 +30,7 @@ typedef struct options {
     const char *out_dir;
     const char *stats_path;
     const char *trajectory_path;
+    const char *gsd_path;        /* --gsd FILE, or NULL */
     const char *checkpoint_path; /* NULL: none */
     long checkpoint_every;       /* 0: only at the end */
     const char *restart_path;    /* --restart FILE, or NULL */
@@ -117,7 +118,7 @@ int write_file_atomic(const char *dir, const char *name, const void *data, size_
 int probe_dir(const char *dir, const char *name); /* 0, or why a file cannot be made there */
 int is_special_file(const char *path);
 int write_file_in_place(const char *path, const void *data, size_t len, const char **why);
-/* files.c: files that grow frame by frame (--stats, --trajectory) */
+/* files.c: files that grow frame by frame (--stats, --trajectory, --gsd) */
 typedef struct output {
     const char *option, *path;
     FILE *f;

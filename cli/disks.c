@@ -50,8 +50,9 @@ typedef struct run {
     long first, last; /* the frames this run writes */
     char *frame_buf;
     size_t frame_cap;
-    output stats, trajectory;
+    output stats, trajectory, gsd_file;
     ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
+    ds_writer *gsd;        /* --gsd's, into gsd_file.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
     long jammed_frame;     /* the frame in which growth jammed, -1 */
     progress pr;
@@ -78,8 +79,17 @@ static void stats_row(output *out, long frame, const ds_sim *sim)
     output_write(out, row, (size_t)l);
 }
 
-/* The frame file, its trajectory frame and its stats row, with the
- * signals held: at any moment the three agree. */
+/* A trajectory's frame: a write that fails ends the run. */
+static void trajectory_frame(ds_writer *w, const output *out, const ds_sim *sim)
+{
+    errno = 0;
+    if (w && ds_writer_write(w, sim, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+}
+
+/* The frame file, its trajectory frames and its stats row, with the
+ * signals held: at any moment they agree. */
 static void emit_frame(run *r, long frame)
 {
     const options *o = r->o;
@@ -94,12 +104,8 @@ static void emit_frame(run *r, long frame)
         progress_clear(&r->pr);
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, why);
     }
-    if (r->xyz) {
-        errno = 0;
-        if (ds_writer_write(r->xyz, r->sim, NULL) != DS_OK)
-            die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path,
-                strerror(errno ? errno : EIO));
-    }
+    trajectory_frame(r->xyz, &r->trajectory, r->sim);
+    trajectory_frame(r->gsd, &r->gsd_file, r->sim);
     if (r->stats.f)
         stats_row(&r->stats, frame, r->sim);
     keep_created_dirs(); /* --out holds a frame now */
@@ -112,13 +118,20 @@ static void write_checkpoint(run *r, long frame)
     r->checkpoint_frame = frame;
 }
 
+/* A trajectory's writer finished, and its file put in place. */
+static void close_trajectory(ds_writer **w, output *out)
+{
+    if (*w && ds_writer_close(*w, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path, strerror(EIO));
+    *w = NULL;
+    if (out->f)
+        output_close(out);
+}
+
 static void close_outputs(run *r)
 {
-    if (r->xyz && ds_writer_close(r->xyz, NULL) != DS_OK)
-        die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path, strerror(EIO));
-    r->xyz = NULL;
-    if (r->trajectory.f)
-        output_close(&r->trajectory);
+    close_trajectory(&r->xyz, &r->trajectory);
+    close_trajectory(&r->gsd, &r->gsd_file);
     if (r->stats.f)
         output_close(&r->stats);
 }
@@ -144,8 +157,27 @@ static void stop_by_signal(run *r, int sig, long frame)
     end_by_signal(sig);
 }
 
-/* Opens --stats and --trajectory (their temporaries) and makes sure the
- * frames and the checkpoint can be written, before any disk is placed. */
+/* A trajectory of format into its temporary: its writer (GSD writes its
+ * header here). A write that fails says its errno; a refusal the
+ * library's reason, which names its stream "out", here the option's file. */
+static ds_writer *open_trajectory(output *out, const char *option, const char *path,
+                                  ds_format format)
+{
+    output_open(out, option, path);
+    ds_writer *w = NULL;
+    ds_error err;
+    errno = 0;
+    if (ds_writer_open(format, out->f, 0, &w, &err) == DS_OK)
+        return w;
+    if (err.status == DS_ERR_IO)
+        die(EXIT_RUN, "cannot write %s %s: %s", option, path, strerror(errno ? errno : EIO));
+    die(EXIT_RUN, "cannot write %s %s: %s", option, path,
+        strncmp(err.message, "out: ", 5) == 0 ? err.message + 5 : err.message);
+}
+
+/* Opens --stats, --trajectory and --gsd (their temporaries) and makes
+ * sure the frames and the checkpoint can be written, before any disk is
+ * placed. */
 static void open_outputs(run *r)
 {
     const options *o = r->o;
@@ -156,12 +188,10 @@ static void open_outputs(run *r)
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, strerror(err));
     if (o->checkpoint_path)
         checkpoint_probe(o->checkpoint_path);
-    if (o->trajectory_path) {
-        output_open(&r->trajectory, "--trajectory", o->trajectory_path);
-        ds_error err;
-        if (ds_writer_open(DS_FORMAT_XYZ, r->trajectory.f, 0, &r->xyz, &err) != DS_OK)
-            die(EXIT_RUN, "cannot write --trajectory %s: %s", o->trajectory_path, err.message);
-    }
+    if (o->trajectory_path)
+        r->xyz = open_trajectory(&r->trajectory, "--trajectory", o->trajectory_path, DS_FORMAT_XYZ);
+    if (o->gsd_path)
+        r->gsd = open_trajectory(&r->gsd_file, "--gsd", o->gsd_path, DS_FORMAT_GSD);
     if (o->stats_path) {
         output_open(&r->stats, "--stats", o->stats_path);
         output_write(&r->stats, stats_header, sizeof stats_header - 1);

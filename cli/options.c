@@ -28,6 +28,7 @@ static const char *const usage_text =
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
     "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
+    "  --gsd FILE           also write every frame to FILE, one GSD trajectory (HOOMD)\n"
     "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
     "                       stopped by a signal (INT, TERM, HUP)\n"
     "  --checkpoint-every K also every K frames\n"
@@ -251,7 +252,8 @@ enum {
     UNTIL_ETA,
     UNTIL_Z,
     MEASURE_AFTER,
-    BOUNDARY
+    BOUNDARY,
+    GSD
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -276,7 +278,8 @@ static const struct {
              {"--until-eta", 0},
              {"--until-z", 0},
              {"--measure-after", 0},
-             {"--boundary", 1}};
+             {"--boundary", 1},
+             {"--gsd", 0}};
 
 /* The first option given that describes the system, the first that
  * describes the placement (see check_combination), and the boundary
@@ -364,6 +367,9 @@ static void set_option(options *o, int which, const char *value, first_options *
         break;
     case MEASURE_AFTER:
         o->measure_after = positive_arg("--measure-after", value, 1e12);
+        break;
+    case GSD:
+        o->gsd_path = file_arg("--gsd", value);
         break;
     default:
         boundary_arg(o, value, first);
