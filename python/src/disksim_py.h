@@ -7,7 +7,8 @@
  * parameters of a simulation from keyword arguments (params.c), the Sim
  * type (sim.c), its properties (properties.c), its state as arrays
  * (state.c), exact checkpoints and pickles (checkpoint.c), frames
- * (frames.c), the analysis functions (analysis.c) and ASE (ase.c). Only
+ * (frames.c), the analysis functions (analysis.c), ASE (ase.c) and
+ * trajectory files (writer.c). Only
  * the public header disk_sim.h is used: the module is a thin face over
  * the library.
  *
@@ -81,6 +82,7 @@ typedef enum dspy_kind {
     DSPY_BROADPHASE,
     DSPY_MASS_RULE,    /* ds_mass_rule: "equal", "area" */
     DSPY_GROWTH_STATE, /* ds_growth_state: "none", "growing", "reached_eta", "jammed" */
+    DSPY_FORMAT,       /* ds_format: "frame", "xyz", "gsd" */
     DSPY_KINDS
 } dspy_kind;
 
@@ -240,6 +242,10 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
 
 /* ase.c */
 PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused);
+
+/* writer.c: disksim.Writer, a trajectory file in one of the library's
+ * formats. */
+extern PyTypeObject dspy_WriterType;
 
 /* The module functions' docstrings, beside their code. */
 extern const char dspy_read_frame_doc[];
