@@ -107,7 +107,8 @@ static void entry_bytes(const gsd_entry *e, uint8_t out[GSD_ENTRY_BYTES])
     out[w.len + 3] = 0; /* flags */
 }
 
-/* Entries from..to of g, then zeros up to cap entries, from byte at. */
+/* The entries of g from `from` on, then zeros, up to entry cap (not
+ * included), written from byte at. */
 static int put_entries(const gsd_writer *g, FILE *out, uint64_t at, size_t from, size_t cap)
 {
     uint8_t block[64 * GSD_ENTRY_BYTES];

@@ -23,10 +23,12 @@ static void put_u8(ds_state_writer *w, uint8_t v) { w->buf[w->len++] = v; }
 /* ------------------------------------------------------------------ */
 
 /* Disk k's centre (slot k) as HOOMD places it, in the box centred on the
- * origin: -L/2 <= x < L/2 along each axis, in float. A periodic axis
- * wraps a centre that float rounding puts at +L/2 to -L/2 and counts the
- * image; along walls a centre is at least its radius inside, and is kept
- * below +L/2 should rounding reach it. */
+ * origin: -L/2 <= x < L/2 along each axis, in float. The library keeps a
+ * centre in [0, L), so x - L/2 is in [-L/2, L/2) in double (exact from
+ * L/4 on, by Sterbenz's lemma); only its rounding to float can reach
+ * +L/2. A periodic axis then wraps it to -L/2 and counts the image;
+ * along walls, where a centre is at least its radius inside, it is kept
+ * below +L/2. */
 typedef struct gsd_place {
     float at[2];
     int32_t image[2];
@@ -41,17 +43,8 @@ static gsd_place place(const ds_sim *sim, size_t k)
     p.image[0] = d->ix ? d->ix[k] : 0;
     p.image[1] = d->iy ? d->iy[k] : 0;
     for (int a = 0; a < 2; ++a) {
-        const double side = b->side[a];
-        const float half = (float)side / 2.0f;
-        double u = x[a] - 0.5 * side;
-        if (ds_box_periodic(b, a) && u < -0.5 * side) {
-            u += side;
-            --p.image[a];
-        } else if (ds_box_periodic(b, a) && u >= 0.5 * side) {
-            u -= side;
-            ++p.image[a];
-        }
-        p.at[a] = (float)u;
+        const float half = (float)b->side[a] / 2.0f;
+        p.at[a] = (float)(x[a] - 0.5 * b->side[a]);
         if (p.at[a] >= half && ds_box_periodic(b, a)) {
             p.at[a] = -half;
             ++p.image[a];
