@@ -114,6 +114,14 @@ static void emit_frame(run *r, long frame)
 
 static void write_checkpoint(run *r, long frame)
 {
+    /* The outputs first: a checkpoint never holds a frame that the files
+     * beside it lack (a restart drops the rows past its checkpoint). */
+    if (r->stats.f)
+        output_publish(&r->stats);
+    if (r->trajectory.f)
+        output_publish(&r->trajectory);
+    if (r->gsd_file.f)
+        output_publish(&r->gsd_file);
     checkpoint_write(r->sim, r->o->checkpoint_path);
     r->checkpoint_frame = frame;
 }
@@ -157,21 +165,20 @@ static void stop_by_signal(run *r, int sig, long frame)
     end_by_signal(sig);
 }
 
-/* A trajectory of format into its temporary: its writer (GSD writes its
- * header here). A write that fails says its errno; a refusal the
- * library's reason, which names its stream "out", here the option's file. */
-static ds_writer *open_trajectory(output *out, const char *option, const char *path,
-                                  ds_format format)
+/* The writer of format on a trajectory's file (GSD writes its header
+ * here). A write that fails says its errno; a refusal the library's
+ * reason, which names its stream "out", here the option's file. */
+static ds_writer *writer_on(const output *out, ds_format format)
 {
-    output_open(out, option, path);
     ds_writer *w = NULL;
     ds_error err;
     errno = 0;
     if (ds_writer_open(format, out->f, 0, &w, &err) == DS_OK)
         return w;
     if (err.status == DS_ERR_IO)
-        die(EXIT_RUN, "cannot write %s %s: %s", option, path, strerror(errno ? errno : EIO));
-    die(EXIT_RUN, "cannot write %s %s: %s", option, path,
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+    die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
         strncmp(err.message, "out: ", 5) == 0 ? err.message + 5 : err.message);
 }
 
@@ -188,13 +195,22 @@ static void open_outputs(run *r)
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, strerror(err));
     if (o->checkpoint_path)
         checkpoint_probe(o->checkpoint_path);
-    if (o->trajectory_path)
-        r->xyz = open_trajectory(&r->trajectory, "--trajectory", o->trajectory_path, DS_FORMAT_XYZ);
-    if (o->gsd_path)
-        r->gsd = open_trajectory(&r->gsd_file, "--gsd", o->gsd_path, DS_FORMAT_GSD);
+    if (o->trajectory_path) {
+        output_open(&r->trajectory, "--trajectory", o->trajectory_path);
+        if (o->trajectory_continues && r->trajectory.slot >= 0)
+            carry_over_trajectory(&r->trajectory, r->sim, o->steps_per_frame, r->first - 1);
+        r->xyz = writer_on(&r->trajectory, DS_FORMAT_XYZ);
+    }
+    if (o->gsd_path) {
+        output_open(&r->gsd_file, "--gsd", o->gsd_path);
+        r->gsd = writer_on(&r->gsd_file, DS_FORMAT_GSD);
+    }
     if (o->stats_path) {
         output_open(&r->stats, "--stats", o->stats_path);
-        output_write(&r->stats, stats_header, sizeof stats_header - 1);
+        /* A restart going on with its run's file keeps its header and rows. */
+        if (!(o->stats_continues && r->stats.slot >= 0 &&
+              carry_over_stats(&r->stats, stats_header, r->first - 1)))
+            output_write(&r->stats, stats_header, sizeof stats_header - 1);
     }
 }
 
@@ -354,7 +370,8 @@ static void start_run(run *r, options *o)
 {
     if (o->restart_path) {
         r->sim = restart_from(o->restart_path);
-        r->first = restart_frame(o, r->sim) + 1;
+        r->first = resume_run_settings(o, r->sim) + 1;
+        check_paths(o); /* again, with the paths the checkpoint gave */
         check_restart_frame_file(o, r->sim, r->first - 1);
     } else if (o->from_path) {
         r->sim = start_from_frame(o);
@@ -395,6 +412,7 @@ int main(int argc, char **argv)
     r.checkpoint_frame = -1;
     r.jammed_frame = -1;
     start_run(&r, &o);
+    record_run_settings(r.sim, &o, r.last);
     check_other_runs(&o, r.last);
 
     make_out_dir(o.out_dir);
