@@ -387,6 +387,47 @@ static void test_the_file_is_valid_after_every_write(void **state)
     ds_sim_destroy(sim);
 }
 
+/* A file closed and opened again ("r+b") is gone on with: its frames are
+ * kept, the writes append, and frame 0 still decides what a frame leaves
+ * out; also past index blocks that moved before and after. */
+static void test_a_file_opened_again_is_gone_on_with(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/ds_test_gsd_XXXXXX";
+    const int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    close(fd);
+    ds_sim *sim = named_mixture(DS_BOUNDARY_PERIODIC);
+    const int sessions[3] = {3, 25, 20}; /* the index moves in the second and third */
+    uint64_t written = 0;
+    for (int k = 0; k < 3; ++k) {
+        FILE *f = fopen(path, k == 0 ? "wb" : "r+b");
+        assert_non_null(f);
+        ds_writer *w = open_gsd(f);
+        for (int j = 0; j < sessions[k]; ++j, ++written) {
+            assert_int_equal(ds_writer_write(w, sim, NULL), DS_OK);
+            assert_int_equal(ds_sim_run(sim, 50, NULL), DS_OK);
+        }
+        assert_int_equal(ds_writer_close(w, NULL), DS_OK);
+        fclose(f);
+    }
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    gsd_file g;
+    read_back(&g, f);
+    assert_int_equal(g.frames, written);
+    for (uint64_t k = 1; k < written; ++k) { /* none of frame 0's repeated */
+        assert_null(find(&g, k, "particles/types"));
+        assert_null(find(&g, k, "particles/mass"));
+        assert_non_null(find(&g, k, "particles/position"));
+        assert_int_equal(le(chunk(&g, k, "configuration/step", 4, 1, 1), 8), 3000 + 50 * k);
+    }
+    free_file(&g);
+    fclose(f);
+    unlink(path);
+    ds_sim_destroy(sim);
+}
+
 /* A file of no frames is a valid file too. */
 static void test_a_writer_closed_at_once_leaves_an_empty_trajectory(void **state)
 {
@@ -402,8 +443,9 @@ static void test_a_writer_closed_at_once_leaves_an_empty_trajectory(void **state
     fclose(f);
 }
 
-/* GSD places its bytes where its index says: a pipe cannot hold it, nor
- * a stream already written to; a full disk is DS_ERR_IO. */
+/* GSD places its bytes where its index says: a pipe cannot hold it; a
+ * stream holding something else than its file is not gone on with, nor
+ * one it cannot read back; a full disk is DS_ERR_IO. */
 static void test_a_stream_that_cannot_hold_a_gsd_file_is_refused(void **state)
 {
     (void)state;
@@ -421,8 +463,24 @@ static void test_a_stream_that_cannot_hold_a_gsd_file_is_refused(void **state)
     FILE *f = tmpfile();
     assert_non_null(f);
     assert_int_equal(fputc('x', f), 'x');
-    assert_int_equal(ds_writer_open(DS_FORMAT_GSD, f, 0, &w, &err), DS_ERR_ARG);
+    assert_int_equal(ds_writer_open(DS_FORMAT_GSD, f, 0, &w, &err), DS_ERR_FORMAT);
+    assert_string_equal(err.field, "out");
     fclose(f);
+    /* A GSD file on a stream opened for writing only: it cannot be read back. */
+    char path[] = "/tmp/ds_test_gsd_XXXXXX";
+    const int made = mkstemp(path);
+    assert_true(made >= 0);
+    close(made);
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(ds_writer_close(open_gsd(f), NULL), DS_OK);
+    fclose(f);
+    f = fopen(path, "ab");
+    assert_non_null(f);
+    assert_int_equal(ds_writer_open(DS_FORMAT_GSD, f, 0, &w, &err), DS_ERR_ARG);
+    assert_false(ferror(f)); /* the writer's failed read leaves no mark */
+    fclose(f);
+    unlink(path);
     FILE *full = fopen("/dev/full", "wb");
     if (full) { /* Linux: the header's flush fails with ENOSPC */
         assert_int_equal(ds_writer_open(DS_FORMAT_GSD, full, 0, &w, &err), DS_ERR_IO);
@@ -437,6 +495,7 @@ int main(void)
         cmocka_unit_test(test_every_chunk_holds_what_the_simulation_says),
         cmocka_unit_test(test_later_frames_hold_what_changed),
         cmocka_unit_test(test_the_file_is_valid_after_every_write),
+        cmocka_unit_test(test_a_file_opened_again_is_gone_on_with),
         cmocka_unit_test(test_a_writer_closed_at_once_leaves_an_empty_trajectory),
         cmocka_unit_test(test_a_stream_that_cannot_hold_a_gsd_file_is_refused),
     };

@@ -139,10 +139,14 @@ ds_status ds_format_parse(const char *name, ds_format *out, ds_error *err);
  * with its sides and images 0. After every write the file is a valid
  * GSD file of the frames written: a frame's chunks are written before the
  * index entries that point at them, and the index is flushed with them.
- * ds_writer_open writes the header, the chunks' names and an empty index
- * (DS_ERR_IO if that fails), on a stream that can seek and stands at its
- * start (DS_ERR_ARG otherwise: a pipe cannot hold a GSD file); offsets
- * past LONG_MAX (2 GiB where long has 32 bits) are DS_ERR_IO. */
+ * The stream must be able to seek (DS_ERR_ARG otherwise: a pipe cannot
+ * hold a GSD file). Empty, ds_writer_open writes the header, the chunks'
+ * names and an empty index there (DS_ERR_IO if that fails); holding a GSD
+ * file this writer wrote, it goes on with it: its frames are kept and
+ * each write appends one (frame 0's chunks still decide what a frame
+ * leaves out), which needs a stream it can read too, opened "r+b" or
+ * "w+b" (DS_ERR_ARG otherwise); holding anything else, DS_ERR_FORMAT.
+ * Offsets past LONG_MAX (2 GiB where long has 32 bits) are DS_ERR_IO. */
 
 /* What a writer writes beyond positions and radii, where its format can
  * (bits of flags): velocities (a frame's vx vy columns; XYZ and GSD always
