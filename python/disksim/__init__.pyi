@@ -220,7 +220,12 @@ class Sim:
 @final
 class Writer:
     def __init__(
-        self, path: StrOrBytesPath, format: _Format = "gsd", *, velocities: bool = False
+        self,
+        path: StrOrBytesPath,
+        format: _Format = "gsd",
+        *,
+        velocities: bool = False,
+        append: bool = False,
     ) -> None: ...
     def write(self, sim: Sim) -> None: ...
     def close(self) -> None: ...

@@ -68,11 +68,11 @@ static int finish(dspy_writer *self)
 
 static int writer_init(dspy_writer *self, PyObject *args, PyObject *kwargs)
 {
-    static char *keywords[] = {"path", "format", "velocities", NULL};
+    static char *keywords[] = {"path", "format", "velocities", "append", NULL};
     PyObject *path_obj, *format_obj = NULL;
-    int velocities = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O|O$p:Writer", keywords, &path_obj, &format_obj,
-                                     &velocities))
+    int velocities = 0, append = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O|O$pp:Writer", keywords, &path_obj,
+                                     &format_obj, &velocities, &append))
         return -1;
     if (self->file || self->busy) {
         PyErr_SetString(dspy_Error, "this Writer is open already: close it, or make another");
@@ -91,7 +91,15 @@ static int writer_init(dspy_writer *self, PyObject *args, PyObject *kwargs)
     FILE *f;
     Py_BEGIN_ALLOW_THREADS
     errno = 0;
-    f = fopen(PyBytes_AS_STRING(path), "wb");
+    /* Appending, the file is read back too (a GSD writer reads its index)
+     * and written at its end; a missing one is made. */
+    f = fopen(PyBytes_AS_STRING(path), append ? "r+b" : "wb");
+    if (!f && append && errno == ENOENT)
+        f = fopen(PyBytes_AS_STRING(path), "w+b");
+    if (f && append && fseek(f, 0, SEEK_END) != 0) {
+        fclose(f);
+        f = NULL;
+    }
     errnum = f ? 0 : errno;
     if (f) {
         st = ds_writer_open((ds_format)format, f, velocities ? DS_WRITE_VELOCITIES : 0u, &w, &err);
@@ -105,6 +113,10 @@ static int writer_init(dspy_writer *self, PyObject *args, PyObject *kwargs)
         return dspy_raise_file(errnum, strerror(errnum), path_obj), -1;
     if (st == DS_ERR_IO)
         return dspy_raise_file(errnum, err.message, path_obj), -1;
+    if (st == DS_ERR_FORMAT) /* the library's "out: ..." is about path */
+        return dspy_raise_format(path_obj, 0,
+                                 strncmp(err.message, "out: ", 5) ? err.message : err.message + 5),
+               -1;
     if (st != DS_OK)
         return dspy_raise_error(&err), -1;
     Py_XSETREF(self->path, Py_NewRef(path_obj));
@@ -241,7 +253,7 @@ static PyMethodDef writer_methods[] = {
 };
 
 static const char writer_doc[] =
-    "Writer(path, format='gsd', *, velocities=False)\n--\n\n"
+    "Writer(path, format='gsd', *, velocities=False, append=False)\n--\n\n"
     "A trajectory file, written a frame at a time: open it, write a Sim's state\n"
     "whenever the script chooses, close it (a with block closes it):\n"
     "\n"
@@ -254,7 +266,9 @@ static const char writer_doc[] =
     "gsd.hoomd, OVITO, VMD, freud and MDAnalysis read), 'xyz' (extended XYZ, as\n"
     "the command's --trajectory: ASE, OVITO, VMD) or 'frame' (the command's text\n"
     "frames one after another; velocities=True adds vx vy). The file at path is\n"
-    "created, or emptied. ArgumentError for an unknown format; FileError (an\n"
+    "created, or emptied; with append=True a file there is gone on with, the frames\n"
+    "written after its own (a GSD file must be one this library wrote: FormatError,\n"
+    "a ValueError, otherwise). ArgumentError for an unknown format; FileError (an\n"
     "OSError) if the file cannot be written.";
 
 PyTypeObject dspy_WriterType = {

@@ -5,7 +5,7 @@ every frame Python's Writer writes, field by field (the step, the 2D box,
 the kinds' names and ids, masses, diameters, positions to float32
 rounding, images, velocities and the logged observables). A file cut
 short never reads as whole; an interrupted run keeps a GSD file of
-exactly its frames; a pipe is refused."""
+exactly its frames; a Writer appending goes on with its file; a pipe is refused."""
 import os
 import signal
 import subprocess
@@ -210,3 +210,27 @@ def test_a_writer_of_each_format_and_its_refusals(tmp_path):
     s.close()
     with disksim.Writer(tmp_path / "y.gsd") as w, pytest.raises(disksim.Error, match="closed"):
         w.write(s)
+
+
+def test_a_writer_appending_goes_on_with_its_file(tmp_path):
+    s = disksim.Sim(30, 5.0, boundary="periodic")
+    wants = []
+    for session in range(3):  # a new file, then two more sessions appending to it
+        with disksim.Writer(tmp_path / "a.gsd", append=session > 0) as w:
+            for _ in range(2):
+                w.write(s)
+                wants.append(expected(s))
+                s.run(400)
+    with gsd_hoomd.open(tmp_path / "a.gsd", "rb") as trajectory:
+        assert len(trajectory) == 6
+        for frame, want in zip(trajectory, wants):
+            check_frame(frame, want)
+    with disksim.Writer(tmp_path / "a.xyz", "xyz", append=True) as w:  # none there: made
+        w.write(s)
+    with disksim.Writer(tmp_path / "a.xyz", "xyz", append=True) as w:
+        w.write(s)
+    assert (tmp_path / "a.xyz").read_text().count("Lattice=") == 2
+    (tmp_path / "other.gsd").write_text("not a GSD file\n")
+    with pytest.raises(disksim.FormatError, match="not a GSD file of this library's chunks"):
+        disksim.Writer(tmp_path / "other.gsd", append=True)
+
