@@ -203,6 +203,8 @@ static void open_outputs(run *r)
     }
     if (o->gsd_path) {
         output_open(&r->gsd_file, "--gsd", o->gsd_path);
+        if (o->gsd_continues && r->gsd_file.slot >= 0)
+            carry_over_gsd(&r->gsd_file, r->sim);
         r->gsd = writer_on(&r->gsd_file, DS_FORMAT_GSD);
     }
     if (o->stats_path) {

@@ -298,7 +298,8 @@ void output_open(output *out, const char *option, const char *path)
         die(EXIT_RUN, "cannot write %s %s: %s", option, path, strerror(errno));
     out->slot = slot;
     fchmod(fd, 0644);
-    if (!(out->f = fdopen(fd, "wb")))
+    /* Read back too: a GSD writer reads the file a restart goes on with. */
+    if (!(out->f = fdopen(fd, "w+b")))
         die(EXIT_RUN, "cannot write %s %s: %s", option, path, strerror(errno));
 }
 

@@ -5,7 +5,8 @@ every frame Python's Writer writes, field by field (the step, the 2D box,
 the kinds' names and ids, masses, diameters, positions to float32
 rounding, images, velocities and the logged observables). A file cut
 short never reads as whole; an interrupted run keeps a GSD file of
-exactly its frames; a Writer appending goes on with its file; a pipe is refused."""
+exactly its frames, and a killed one restarted ends with the uninterrupted
+run's; a Writer appending goes on with its file; a pipe is refused."""
 import os
 import signal
 import subprocess
@@ -234,3 +235,31 @@ def test_a_writer_appending_goes_on_with_its_file(tmp_path):
     with pytest.raises(disksim.FormatError, match="not a GSD file of this library's chunks"):
         disksim.Writer(tmp_path / "other.gsd", append=True)
 
+
+def test_a_restart_goes_on_with_the_runs_gsd_file(disks_command, tmp_path):
+    # The run killed (SIGKILL) two frames after its checkpoint at frame 10,
+    # restarted with nothing but --restart: its GSD file ends up holding
+    # the uninterrupted run's frames, chunk for chunk.
+    common = ["200", "5", "--frames", "20", "--steps-per-frame", "2000", "--quiet"]
+    subprocess.run([disks_command, *common, "--out", str(tmp_path / "a"), "--gsd",
+                    str(tmp_path / "a.gsd")], check=True)
+    run = subprocess.Popen([disks_command, *common, "--out", str(tmp_path / "b"), "--gsd",
+                            str(tmp_path / "b.gsd"), "--checkpoint", str(tmp_path / "c.ckpt"),
+                            "--checkpoint-every", "5"])
+    deadline = time.monotonic() + 120
+    while not (tmp_path / "b" / "frame_0012.txt").exists() and time.monotonic() < deadline:
+        time.sleep(0.001)
+    run.kill()
+    run.wait(60)
+    with gsd_hoomd.open(tmp_path / "b.gsd", "rb") as killed:
+        assert len(killed) > 11  # frames past the checkpoint's, to be taken out
+    subprocess.run([disks_command, "--restart", str(tmp_path / "c.ckpt"), "--quiet"], check=True)
+    with gsd_hoomd.open(tmp_path / "a.gsd", "rb") as a, gsd_hoomd.open(tmp_path / "b.gsd",
+                                                                       "rb") as b:
+        assert len(a) == len(b) == 20
+        for fa, fb in zip(a, b):
+            assert fa.configuration.step == fb.configuration.step
+            for name in ("position", "velocity", "image", "typeid", "mass", "diameter"):
+                assert np.array_equal(getattr(fa.particles, name), getattr(fb.particles, name))
+            for key, value in fa.log.items():
+                assert np.array_equal(value, fb.log[key], equal_nan=True), key
