@@ -90,12 +90,16 @@ def test_the_stub_has_every_public_name_of_the_module_and_no_other():
 
 
 def test_the_stub_has_every_method_and_property_of_sim_and_writer_and_no_other():
-    for cls in (disksim.Sim, disksim.Writer):
+    for cls, slots_wanted in ((disksim.Sim, {"__len__", "__bool__"}), (disksim.Writer, set())):
         methods, properties = members(stub_class(cls.__name__))
-        # The method table (step, run, ... and __enter__, __exit__, __reduce__)
-        # and the getters: a property typed as a method would be called by a
-        # type checker's user, and fail.
-        assert set(methods) - {"__init__"} == runtime_names(cls, types.MethodDescriptorType)
+        # The method table (step, run, ... and __enter__, __exit__, __reduce__),
+        # the type's slots that a type checker must know of (Sim's __len__,
+        # __bool__: len(s) and truth; __init__ is declared, __repr__ is
+        # object's) and the getters: a property typed as a method would be
+        # called by a type checker's user, and fail.
+        slots = runtime_names(cls, types.WrapperDescriptorType) - {"__init__", "__repr__"}
+        assert slots == slots_wanted
+        assert set(methods) - {"__init__"} == runtime_names(cls, types.MethodDescriptorType) | slots
         assert set(properties) == runtime_names(cls, types.GetSetDescriptorType)
         assert public(methods) | public(properties) == public(dir(cls))
 
