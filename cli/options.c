@@ -86,6 +86,7 @@ enum {
     DT,
     SPEED,
     AREA_FRACTION,
+    GSD,
     RESTITUTION,
     WALL_RESTITUTION,
     CONTACT_TIME,
@@ -120,6 +121,7 @@ static const struct {
              {"--dt", 1},
              {"--speed", 1},
              {"--area-fraction", 1},
+             {"--gsd", 0},
              {"--restitution", 0},
              {"--wall-restitution", 0},
              {"--contact-time", 0},
@@ -185,6 +187,9 @@ static int set_run_option(options *o, int which, const char *value)
         return 1;
     case TRAJECTORY:
         o->trajectory_path = file_arg("--trajectory", value);
+        return 1;
+    case GSD:
+        o->gsd_path = file_arg("--gsd", value);
         return 1;
     case CHECKPOINT:
         o->checkpoint_path = file_arg("--checkpoint", value);
