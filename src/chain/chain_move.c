@@ -1,0 +1,387 @@
+/* SPDX-License-Identifier: MIT */
+/* The chains: the event-chain integrator's hot loop.
+ *
+ * A chain moves one disk at a time along its axis until it would touch
+ * another; there the motion passes to the disk it touches (a lifting),
+ * which goes on in the same direction, until the chain's length is used
+ * up. Each piece is a translation, so the chain maps a configuration and
+ * a starting disk one to one onto a configuration and an ending disk, and
+ * keeps the measure: the chain run backwards from its end (the opposite
+ * direction, from the last disk) brings it back. So if every disk is as
+ * likely to start, the uniform distribution over the allowed
+ * configurations (the canonical one of hard disks) is kept: for each
+ * final (configuration, last disk) there is exactly one start. Chains
+ * along x and along y in turn make the sampler reach everything
+ * (Bernard, Krauth and Wilson 2009).
+ *
+ * Walls. A chain moving up cannot pass a wall, and going only up it
+ * could not keep the balance (no configuration would flow into those with
+ * a disk at the lower wall). At a wall the disk turns: the chain goes on
+ * with the same disk moving down. That is the lifting a wall asks for:
+ * the flow a disk moving up brings to the wall leaves it as the flow of
+ * the same disk moving down, which nothing else would bring. With both
+ * directions along a walled axis, the one-to-one argument above needs
+ * each chain's sign drawn (up or down, even odds), which ds_ch_new_chain
+ * does; along a periodic axis chains move up only.
+ *
+ * What is tallied (docs/physics.md derives it): at each lifting the
+ * separation of the two centres along the chain (Michel, Kapfer and Krauth
+ * 2014: beta P / rho = 1 + <sum of them> / <chain displacement>) and across
+ * it (the pressure tensor's xy part), and each wall turn. */
+#include <math.h>
+
+#include "chain/chain_state.h"
+#include "core/lanes.h"
+
+/* The active disk as the loop holds it: its centre along and across the
+ * chain, its radius, its cell's index along and across, and where its
+ * coordinate along the chain is kept in its cell (a scratch double for a
+ * disk in an overflow list). */
+typedef struct ch_front {
+    uint32_t disk;
+    uint32_t along, across;
+    double u, v, r;
+    double *slot;
+} ch_front;
+
+/* The six cells a disk moving along axis can reach before it leaves its
+ * cell: its own column of three (along its own index, across -1, 0, +1)
+ * and the one ahead, with the shifts of the images they stand for. */
+typedef struct ch_stencil {
+    uint32_t cell[6];
+    double su[6], sv[6];
+} ch_stencil;
+
+/* What a scan found: how far the active disk moves to touch the nearest
+ * disk ahead (+infinity: none within reach), that disk, and the pair's
+ * separation across the chain then (v_j - v_i, through the image). */
+typedef struct ch_hit {
+    double distance;
+    uint32_t disk;
+    double across;
+} ch_hit;
+
+static DS_ALWAYS_INLINE void stencil_of(const ch_grid *g, uint32_t axis, uint32_t up,
+                                        const ch_front *f, ch_stencil *st)
+{
+    const uint32_t across = axis ^ 1u;
+    const uint32_t along_at[2] = {f->along, g->near[axis][2 * f->along + up]};
+    const double along_shift[2] = {0.0, g->shift[axis][2 * f->along + up]};
+    const uint32_t across_at[3] = {g->near[across][2 * f->across], f->across,
+                                   g->near[across][2 * f->across + 1]};
+    const double across_shift[3] = {g->shift[across][2 * f->across], 0.0,
+                                    g->shift[across][2 * f->across + 1]};
+    const uint32_t along_stride = axis ? g->count[0] : 1u, across_stride = axis ? 1u : g->count[0];
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const int k = 3 * i + j;
+            const int inside = along_at[i] != CH_NONE && across_at[j] != CH_NONE;
+            st->cell[k] = inside ? along_at[i] * along_stride + across_at[j] * across_stride
+                                 : (uint32_t)g->cells;
+            st->su[k] = along_shift[i];
+            st->sv[k] = across_shift[j];
+        }
+}
+
+/* The nearest disk ahead among the stencil's slots. For each slot, along
+ * the chain du = sign ((u_j - u) + shift) (subtracting first makes a
+ * pair's du exactly minus what the other disk sees, so two disks never
+ * both see the other ahead), across dv = (v_j - v) + shift; the disk is
+ * ahead and in the way if du > 0 and dv^2 < sigma^2, and then the active
+ * disk touches it after du - sqrt(sigma^2 - dv^2). Free slots (+infinity)
+ * and the active disk itself (du = 0) fail the test. Two slots per lane
+ * pair (core/lanes.h), the nearest so far and its place kept with masks:
+ * which slot is nearer is a coin toss a branch would lose. Ties go to the
+ * first slot. */
+static DS_ALWAYS_INLINE void scan_cells(const ch_grid *g, const ch_stencil *st, uint32_t axis,
+                                        double sign, const ch_front *f, double sigma2, int mixture,
+                                        ch_hit *hit)
+{
+    const size_t along_at = axis * CH_SLOTS, across_at = (axis ^ 1u) * CH_SLOTS;
+    const ds_x2 u = ds_x2_set1(f->u), v = ds_x2_set1(f->v), s = ds_x2_set1(sign);
+    const ds_x2 zero = ds_x2_set1(0.0), far = ds_x2_set1((double)INFINITY);
+    const ds_x2 own = ds_x2_set1(f->r), one_sigma2 = ds_x2_set1(sigma2);
+    ds_x2 best = far, which = ds_x2_set1(-1.0);
+    for (int k = 0; k < 6; ++k) {
+        const double *p = g->pos + (size_t)st->cell[k] * 2 * CH_SLOTS;
+        const ds_x2 su = ds_x2_set1(st->su[k]), sv = ds_x2_set1(st->sv[k]);
+        for (int h = 0; h < CH_SLOTS; h += 2) {
+            const ds_x2 du =
+                ds_x2_mul(s, ds_x2_add(ds_x2_sub(ds_x2_load(p + along_at + h), u), su));
+            const ds_x2 dv = ds_x2_add(ds_x2_sub(ds_x2_load(p + across_at + h), v), sv);
+            ds_x2 sig2 = one_sigma2;
+            if (mixture) {
+                const ds_x2 sig = ds_x2_add(
+                    own, ds_x2_load(g->radius + (size_t)st->cell[k] * CH_SLOTS + (size_t)h));
+                sig2 = ds_x2_mul(sig, sig);
+            }
+            const ds_x2 room = ds_x2_sub(sig2, ds_x2_mul(dv, dv));
+            const ds_x2 in_way = ds_x2_and(ds_x2_gt(du, zero), ds_x2_gt(room, zero));
+            const ds_x2 to_touch = ds_x2_sub(du, ds_x2_sqrt(ds_x2_max(room, zero)));
+            const ds_x2 d = ds_x2_select(in_way, to_touch, far);
+            const ds_x2 nearer = ds_x2_lt(d, best);
+            best = ds_x2_select(nearer, d, best);
+            which = ds_x2_select(nearer, ds_x2_make(4.0 * k + h, 4.0 * k + h + 1.0), which);
+        }
+    }
+    const double b0 = ds_x2_first(best), b1 = ds_x2_first(ds_x2_high(best));
+    const double w0 = ds_x2_first(which), w1 = ds_x2_first(ds_x2_high(which));
+    const int second = b1 < b0;
+    hit->distance = second ? b1 : b0;
+    hit->disk = CH_NONE;
+    hit->across = 0.0;
+    if (!(hit->distance < INFINITY))
+        return;
+    const int place = (int)(second ? w1 : w0), k = place >> 2, slot = place & 3;
+    const size_t cell = st->cell[k];
+    hit->disk = g->who[cell * CH_SLOTS + (size_t)slot];
+    hit->across = (g->pos[cell * 2 * CH_SLOTS + across_at + (size_t)slot] - f->v) + st->sv[k];
+}
+
+/* The same test for the disks of the stencil's overflow lists (their
+ * centres from the columns), nearer than what the slots gave. */
+static void scan_overflow(const ds_chain *c, const ds_disks *d, const ch_stencil *st, uint32_t axis,
+                          double sign, const ch_front *f, double sigma2, ch_hit *hit)
+{
+    const double *along = axis ? d->y : d->x, *across = axis ? d->x : d->y;
+    for (int k = 0; k < 6; ++k)
+        for (uint32_t m = c->grid.more[st->cell[k]]; m != CH_NONE; m = c->disk[m].next) {
+            const double du = sign * ((along[m] - f->u) + st->su[k]);
+            const double dv = (across[m] - f->v) + st->sv[k];
+            const double sig = d->r ? f->r + d->r[m] : 0.0;
+            const double room = (d->r ? sig * sig : sigma2) - dv * dv;
+            if (!(du > 0.0 && room > 0.0))
+                continue;
+            const double to_touch = du - sqrt(room);
+            if (to_touch < hit->distance) {
+                hit->distance = to_touch;
+                hit->disk = m;
+                hit->across = dv;
+            }
+        }
+}
+
+/* Brute force, the reference: every disk, through the nearest image.
+ * The nearest image is the one ahead only within half a periodic side,
+ * so run() moves a disk no more than half a side less a diameter before
+ * it looks again (reach). */
+static void scan_all(const ds_chain *c, const ds_disks *d, uint32_t axis, double sign,
+                     const ch_front *f, double sigma2, ch_hit *hit)
+{
+    const double *along = axis ? d->y : d->x, *across = axis ? d->x : d->y;
+    const double side_u = c->box.side[axis], side_v = c->box.side[axis ^ 1u];
+    const int wrap_u = ds_box_periodic(&c->box, (int)axis),
+              wrap_v = ds_box_periodic(&c->box, (int)(axis ^ 1u));
+    hit->distance = INFINITY;
+    hit->disk = CH_NONE;
+    hit->across = 0.0;
+    for (size_t m = 0; m < d->n; ++m) {
+        double du = along[m] - f->u, dv = across[m] - f->v;
+        if (wrap_u)
+            du = ds_nearest(du, side_u);
+        if (wrap_v)
+            dv = ds_nearest(dv, side_v);
+        du *= sign;
+        const double sig = d->r ? f->r + d->r[m] : 0.0;
+        const double room = (d->r ? sig * sig : sigma2) - dv * dv;
+        if (!(du > 0.0 && room > 0.0))
+            continue;
+        const double to_touch = du - sqrt(room);
+        if (to_touch < hit->distance) {
+            hit->distance = to_touch;
+            hit->disk = (uint32_t)m;
+            hit->across = dv;
+        }
+    }
+}
+
+void ds_ch_new_chain(ds_chain *c)
+{
+    ch_chain *ch = &c->chain;
+    ch->axis ^= 1u;
+    ch->active = (uint32_t)ds_rng_uniform(&c->rng, 0.0, (double)c->n);
+    if (ch->active >= c->n) /* cannot happen: uniform is below n */
+        ch->active = (uint32_t)c->n - 1;
+    ch->sign = 1.0;
+    if (!ds_box_periodic(&c->box, (int)ch->axis))
+        ch->sign = ds_rng_next(&c->rng) >> 63 ? 1.0 : -1.0;
+    ch->left = c->length;
+    ch->stalled = 0;
+    ++c->chains;
+}
+
+static void front_of(ds_chain *c, const ds_disks *d, double radius, ch_front *f)
+{
+    const uint32_t k = c->chain.active, axis = c->chain.axis;
+    const ch_disk *cd = &c->disk[k];
+    f->disk = k;
+    f->u = axis ? d->y[k] : d->x[k];
+    f->v = axis ? d->x[k] : d->y[k];
+    f->r = d->r ? d->r[k] : radius;
+    f->along = axis ? cd->row : cd->column;
+    f->across = axis ? cd->column : cd->row;
+    double *slot = ds_ch_slot_coord(c, k, axis);
+    f->slot = slot ? slot : &c->scratch;
+}
+
+/* What a step adds to the tally, kept in registers until its end. */
+typedef struct ch_tally {
+    uint64_t lifts, tested;
+    double along[2]; /* separations along the chain at liftings: x chains, y chains */
+    double across;   /* sign times the separation across (the xy part) */
+} ch_tally;
+
+static DS_ALWAYS_INLINE void write_u(ds_disks *d, const ch_front *f, uint32_t axis)
+{
+    (axis ? d->y : d->x)[f->disk] = f->u;
+    *f->slot = f->u;
+}
+
+/* The active disk at the edge of its cell into the next one beyond, at
+ * the edge exactly (wrapped at a periodic box's edge, its image counted). */
+static void cross(ds_chain *c, ds_disks *d, ch_front *f, uint32_t axis, uint32_t up,
+                  uint32_t beyond)
+{
+    const ch_grid *g = &c->grid;
+    const double shift = g->shift[axis][2 * f->along + up];
+    f->u = g->edge[axis][f->along + up] - shift;
+    if (shift != 0.0) {
+        int32_t *image = (axis ? d->iy : d->ix) + f->disk;
+        *image = (int32_t)((uint32_t)*image + (up ? 1u : UINT32_MAX));
+    }
+    (axis ? d->y : d->x)[f->disk] = f->u;
+    ds_ch_remove(c, f->disk, d);
+    f->along = beyond;
+    ds_ch_add(c, f->disk, axis ? f->across : beyond, axis ? beyond : f->across, d->x[f->disk],
+              d->y[f->disk], f->r);
+    double *slot = ds_ch_slot_coord(c, f->disk, axis);
+    f->slot = slot ? slot : &c->scratch;
+}
+
+/* The active disk at the wall line turns: the chain goes on with it the
+ * other way. The walls' tally is the impulse molecular dynamics at kT
+ * would give them on average: a disk meets a wall once per unit of its
+ * displacement along the axis with probability n_c L / N (n_c the
+ * density of centres at the wall line, L its length), and beta P = n_c
+ * there, so each turn stands for 2 N kT dt / d_a of impulse over a step,
+ * d_a = n speed dt / 2 the step's displacement along the axis: 4 kT /
+ * speed (docs/physics.md). */
+static void turn(ds_sim *sim, ds_chain *c, ch_front *f, uint32_t axis, uint32_t up)
+{
+    f->u = up ? c->box.side[axis] - f->r : f->r;
+    write_u(&sim->disks, f, axis);
+    c->chain.sign = -c->chain.sign;
+    ds_tally *t = &sim->tally;
+    const double impulse = 4.0 * c->kt / sim->world.speed;
+    ++t->wall_count;
+    t->wall_impulse += impulse;
+    if (sim->disks.r || sim->disks.m)
+        t->wall_reach += impulse / ds_box_wall_reached(&c->box, f->r);
+}
+
+/* The step's liftings into the tally. A step carries n speed dt of chain
+ * displacement, half of it along each axis (the chains alternate), so
+ * the virial molecular dynamics would tally over it is 2 kT / speed times
+ * the separations along x (y) for xx (yy), and half that times those
+ * across for xy (both axes estimate it); sim->tally.virial keeps the plain
+ * sum of separations along, a length, for the compressibility
+ * (event_chain.c). */
+static void add_tally(ds_sim *sim, const ds_chain *c, const ch_tally *t)
+{
+    ds_tally *s = &sim->tally;
+    s->collisions += t->lifts;
+    s->pairs_tested += t->tested;
+    s->virial += t->along[0] + t->along[1];
+    const double per = 2.0 * c->kt / sim->world.speed;
+    s->stress_virial[0] += per * t->along[0];
+    s->stress_virial[1] += per * t->along[1];
+    s->stress_virial[2] += 0.5 * per * t->across;
+}
+
+/* One step: chains for n speed dt of displacement in all. Long: the
+ * event loop is one piece, its state in registers; the scans and the
+ * rarer events are the functions above. */
+static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, int brute)
+{
+    ds_disks *d = &sim->disks;
+    const ch_grid *g = &c->grid;
+    ch_chain *ch = &c->chain;
+    const double radius = sim->world.radius, sigma2 = 4.0 * radius * radius;
+    const uint64_t per_scan = brute ? (uint64_t)c->n : 6 * CH_SLOTS;
+    double left = c->per_step;
+    ch_tally t = {0, 0, {0.0, 0.0}, 0.0};
+    ch_front f;
+    front_of(c, d, radius, &f);
+    while (left > 0.0) {
+        const uint32_t axis = ch->axis, up = ch->sign > 0.0;
+        ch_hit hit;
+        if (brute) {
+            scan_all(c, d, axis, ch->sign, &f, sigma2, &hit);
+        } else {
+            ch_stencil st;
+            stencil_of(g, axis, up, &f, &st);
+            scan_cells(g, &st, axis, ch->sign, &f, sigma2, mixture, &hit);
+            if (g->overflowing)
+                scan_overflow(c, d, &st, axis, ch->sign, &f, sigma2, &hit);
+        }
+        t.tested += per_scan;
+        /* How far the disk may go before it leaves its cell or meets a
+         * wall, a chain's end or the step's. */
+        const uint32_t beyond = g->near[axis][2 * f.along + up];
+        const double wall = up ? c->box.side[axis] - f.r : f.r;
+        const double edge = beyond == CH_NONE ? wall : g->edge[axis][f.along + up];
+        const double to_edge = fmax(ch->sign * (edge - f.u), 0.0);
+        const double lim = fmin(fmin(to_edge, c->reach[axis]), fmin(ch->left, left));
+        if (hit.distance < lim) { /* a lifting, the common event */
+            const double move = fmax(hit.distance, 0.0);
+            f.u += ch->sign * move;
+            write_u(d, &f, axis);
+            ch->left -= move;
+            left -= move;
+            const double sigma = mixture ? f.r + d->r[hit.disk] : 2.0 * radius;
+            ++t.lifts;
+            t.along[axis] += sqrt(fmax(sigma * sigma - hit.across * hit.across, 0.0));
+            t.across += ch->sign * hit.across;
+            ch->stalled = move > 0.0 ? 0 : ch->stalled + 1;
+            ch->active = hit.disk;
+            /* Disks touching all along the chain's line (a rigid row
+             * across a periodic box, a jammed packing) pass the motion
+             * round without moving; in exact arithmetic no displacement
+             * is possible that way, so the chain ends. */
+            if (ch->stalled > c->n)
+                ch->left = 0.0;
+            else {
+                front_of(c, d, radius, &f);
+                continue;
+            }
+        } else {
+            f.u += ch->sign * lim;
+            write_u(d, &f, axis);
+            ch->left -= lim;
+            left -= lim;
+            if (lim > 0.0)
+                ch->stalled = 0;
+            if (lim == to_edge) {
+                if (beyond == CH_NONE)
+                    turn(sim, c, &f, axis, up);
+                else
+                    cross(c, d, &f, axis, up, beyond);
+            }
+        }
+        if (ch->left <= 0.0) {
+            ds_ch_new_chain(c);
+            front_of(c, d, radius, &f);
+        }
+    }
+    add_tally(sim, c, &t);
+}
+
+void ds_ch_step(ds_sim *sim, ds_chain *c)
+{
+    if (c->brute)
+        step_with(sim, c, sim->disks.r != NULL, 1);
+    else if (sim->disks.r)
+        step_with(sim, c, 1, 0);
+    else
+        step_with(sim, c, 0, 0);
+}
