@@ -99,6 +99,12 @@ static ds_status read_cells(ds_chain *c, const ds_world *w, const ds_disks *d, d
         if (g->radius)
             g->radius[at] = d->r ? d->r[k] : w->radius;
     }
+    /* Packed from the first slot, as the hot loop reads them. */
+    for (size_t cell = 0; cell < g->cells; ++cell)
+        for (int s = 1; s < CH_SLOTS; ++s)
+            if (g->who[cell * CH_SLOTS + (size_t)s] != CH_NONE &&
+                g->who[cell * CH_SLOTS + (size_t)s - 1] == CH_NONE)
+                return ds_state_refuse(err, DS_ERR_FORMAT, "a cell's slots are not packed");
     size_t listed = 0;
     for (size_t cell = 0; cell < g->cells; ++cell) {
         g->more[cell] = ds_get_u32(r);

@@ -161,17 +161,32 @@ void ds_ch_add(ds_chain *c, uint32_t k, uint32_t column, uint32_t row, double x,
     ++g->overflowing;
 }
 
-/* Empties slot s of cell; if the cell's overflow list holds a disk, the
- * first takes the slot, so lists are not empty only behind four full
- * slots. */
+/* Empties slot s of cell, keeping the cell's disks packed from its first
+ * slot (the hot loop reads a third slot only when it is taken): the
+ * first disk of the overflow list takes the slot if there is one (lists
+ * are not empty only behind four full slots), else the cell's last disk
+ * moves into it. */
 static void free_slot(ds_chain *c, uint32_t cell, uint32_t s, const ds_disks *d)
 {
     ch_grid *g = &c->grid;
     double *p = g->pos + (size_t)cell * 2 * CH_SLOTS;
+    uint32_t *who = g->who + (size_t)cell * CH_SLOTS;
+    double *radius = g->radius ? g->radius + (size_t)cell * CH_SLOTS : NULL;
     const uint32_t m = g->more[cell];
     if (m == CH_NONE) {
-        g->who[(size_t)cell * CH_SLOTS + s] = CH_NONE;
-        p[s] = p[CH_SLOTS + s] = INFINITY;
+        uint32_t last = CH_SLOTS - 1;
+        while (who[last] == CH_NONE)
+            --last;
+        if (last != s) {
+            who[s] = who[last];
+            c->disk[who[s]].slot = s;
+            p[s] = p[last];
+            p[CH_SLOTS + s] = p[CH_SLOTS + last];
+            if (radius)
+                radius[s] = radius[last];
+        }
+        who[last] = CH_NONE;
+        p[last] = p[CH_SLOTS + last] = INFINITY;
         return;
     }
     g->more[cell] = c->disk[m].next;

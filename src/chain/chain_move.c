@@ -83,59 +83,116 @@ static DS_ALWAYS_INLINE void stencil_of(const ch_grid *g, uint32_t axis, uint32_
         }
 }
 
-/* The nearest disk ahead among the stencil's slots. For each slot, along
- * the chain du = sign ((u_j - u) + shift) (subtracting first makes a
- * pair's du exactly minus what the other disk sees, so two disks never
- * both see the other ahead), across dv = (v_j - v) + shift; the disk is
- * ahead and in the way if du > 0 and dv^2 < sigma^2, and then the active
- * disk touches it after du - sqrt(sigma^2 - dv^2). Free slots (+infinity)
- * and the active disk itself (du = 0) fail the test. Two slots per lane
- * pair (core/lanes.h), the nearest so far and its place kept with masks:
- * which slot is nearer is a coin toss a branch would lose. Ties go to the
- * first slot. */
+/* How far the active disk moves to touch each of the two disks in slots
+ * h and h + 1 of stencil cell k, or +infinity. Along the chain du = sign
+ * ((u_j - u) + shift) (subtracting first makes a pair's du exactly minus
+ * what the other disk sees, so two disks never both see the other
+ * ahead), across dv = (v_j - v) + shift; the disk is ahead and in the way
+ * if du > 0 and dv^2 < sigma^2, and then the active disk touches it after
+ * du - sqrt(sigma^2 - dv^2). Free slots (+infinity) and the active disk
+ * itself (du = 0) fail the test. Both slots in one pair of lanes
+ * (core/lanes.h), every value computed and the answer chosen with masks. */
+typedef struct ch_scan {
+    ds_x2 u, v, sign, zero, far, own, sigma2;
+    size_t along_at, across_at;
+} ch_scan;
+
+static DS_ALWAYS_INLINE ds_x2 to_touch_pair(const ch_grid *g, const ch_stencil *st,
+                                            const ch_scan *sc, int k, int h, int mixture)
+{
+    const double *p = g->pos + (size_t)st->cell[k] * 2 * CH_SLOTS;
+    const ds_x2 du =
+        ds_x2_mul(sc->sign, ds_x2_add(ds_x2_sub(ds_x2_load(p + sc->along_at + h), sc->u),
+                                      ds_x2_set1(st->su[k])));
+    const ds_x2 dv =
+        ds_x2_add(ds_x2_sub(ds_x2_load(p + sc->across_at + h), sc->v), ds_x2_set1(st->sv[k]));
+    ds_x2 sig2 = sc->sigma2;
+    if (mixture) {
+        const ds_x2 sig =
+            ds_x2_add(sc->own, ds_x2_load(g->radius + (size_t)st->cell[k] * CH_SLOTS + (size_t)h));
+        sig2 = ds_x2_mul(sig, sig);
+    }
+    const ds_x2 room = ds_x2_sub(sig2, ds_x2_mul(dv, dv));
+    const ds_x2 in_way = ds_x2_and(ds_x2_gt(du, sc->zero), ds_x2_gt(room, sc->zero));
+    const ds_x2 to_touch = ds_x2_sub(du, ds_x2_sqrt(ds_x2_max(room, sc->zero)));
+    return ds_x2_select(in_way, to_touch, sc->far);
+}
+
+/* The lowest set bit of a nonzero mask. */
+static inline int lowest_bit(unsigned bits)
+{
+#if defined(__GNUC__)
+    return __builtin_ctz(bits);
+#else
+    int k = 0;
+    while (!(bits >> k & 1u))
+        ++k;
+    return k;
+#endif
+}
+
+/* The nearest of count pairs of slots d[] (pairs = 6: slots 0 and 1 of
+ * each cell; 12: all four), into hit. The minimum is found as a tree and
+ * its place as the first lane equal to it: no chain of dependent choices
+ * from one pair to the next, and ties go to the first slot. */
+static DS_ALWAYS_INLINE void nearest_of(const ch_grid *g, const ch_stencil *st, const ch_scan *sc,
+                                        const ds_x2 *d, int pairs, const ch_front *f, ch_hit *hit)
+{
+    ds_x2 m = d[0];
+    for (int j = 1; j < pairs; ++j)
+        m = ds_x2_min(m, d[j]);
+    const double best = ds_x2_first(ds_x2_min(m, ds_x2_high(m)));
+    hit->distance = best;
+    hit->disk = CH_NONE;
+    hit->across = 0.0;
+    if (!(best < INFINITY))
+        return;
+    const ds_x2 b = ds_x2_set1(best);
+    unsigned bits = 0;
+    for (int j = 0; j + 1 < pairs; j += 2)
+        bits |= ds_x2_bits_pair(ds_x2_eq(d[j], b), ds_x2_eq(d[j + 1], b)) << (2 * j);
+    const int lane = lowest_bit(bits), pair = lane >> 1;
+    const int k = pairs == 6 ? pair : pair >> 1;
+    const int slot = (pairs == 6 ? 0 : 2 * (pair & 1)) + (lane & 1);
+    const size_t cell = st->cell[k];
+    hit->disk = g->who[cell * CH_SLOTS + (size_t)slot];
+    hit->across = (g->pos[cell * 2 * CH_SLOTS + sc->across_at + (size_t)slot] - f->v) + st->sv[k];
+}
+
+/* The nearest disk ahead among the stencil's slots. A cell's disks fill
+ * its slots from the first (chain_grid.c), and a dense liquid's cells
+ * hold one or two (at area fraction 0.70: 5% hold two, none more): the
+ * first two slots of the six cells are read unless some third slot is
+ * taken. */
 static DS_ALWAYS_INLINE void scan_cells(const ch_grid *g, const ch_stencil *st, uint32_t axis,
                                         double sign, const ch_front *f, double sigma2, int mixture,
                                         ch_hit *hit)
 {
-    const size_t along_at = axis * CH_SLOTS, across_at = (axis ^ 1u) * CH_SLOTS;
-    const ds_x2 u = ds_x2_set1(f->u), v = ds_x2_set1(f->v), s = ds_x2_set1(sign);
-    const ds_x2 zero = ds_x2_set1(0.0), far = ds_x2_set1((double)INFINITY);
-    const ds_x2 own = ds_x2_set1(f->r), one_sigma2 = ds_x2_set1(sigma2);
-    ds_x2 best = far, which = ds_x2_set1(-1.0);
-    for (int k = 0; k < 6; ++k) {
-        const double *p = g->pos + (size_t)st->cell[k] * 2 * CH_SLOTS;
-        const ds_x2 su = ds_x2_set1(st->su[k]), sv = ds_x2_set1(st->sv[k]);
-        for (int h = 0; h < CH_SLOTS; h += 2) {
-            const ds_x2 du =
-                ds_x2_mul(s, ds_x2_add(ds_x2_sub(ds_x2_load(p + along_at + h), u), su));
-            const ds_x2 dv = ds_x2_add(ds_x2_sub(ds_x2_load(p + across_at + h), v), sv);
-            ds_x2 sig2 = one_sigma2;
-            if (mixture) {
-                const ds_x2 sig = ds_x2_add(
-                    own, ds_x2_load(g->radius + (size_t)st->cell[k] * CH_SLOTS + (size_t)h));
-                sig2 = ds_x2_mul(sig, sig);
-            }
-            const ds_x2 room = ds_x2_sub(sig2, ds_x2_mul(dv, dv));
-            const ds_x2 in_way = ds_x2_and(ds_x2_gt(du, zero), ds_x2_gt(room, zero));
-            const ds_x2 to_touch = ds_x2_sub(du, ds_x2_sqrt(ds_x2_max(room, zero)));
-            const ds_x2 d = ds_x2_select(in_way, to_touch, far);
-            const ds_x2 nearer = ds_x2_lt(d, best);
-            best = ds_x2_select(nearer, d, best);
-            which = ds_x2_select(nearer, ds_x2_make(4.0 * k + h, 4.0 * k + h + 1.0), which);
+    ch_scan sc;
+    sc.along_at = axis * CH_SLOTS;
+    sc.across_at = (axis ^ 1u) * CH_SLOTS;
+    sc.u = ds_x2_set1(f->u);
+    sc.v = ds_x2_set1(f->v);
+    sc.sign = ds_x2_set1(sign);
+    sc.zero = ds_x2_set1(0.0);
+    sc.far = ds_x2_set1((double)INFINITY);
+    sc.own = ds_x2_set1(f->r);
+    sc.sigma2 = ds_x2_set1(sigma2);
+    int third = 0;
+    for (int k = 0; k < 6; ++k)
+        third |= g->pos[(size_t)st->cell[k] * 2 * CH_SLOTS + 2] < INFINITY;
+    ds_x2 d[12];
+    if (!third) {
+        for (int k = 0; k < 6; ++k)
+            d[k] = to_touch_pair(g, st, &sc, k, 0, mixture);
+        nearest_of(g, st, &sc, d, 6, f, hit);
+    } else {
+        for (int k = 0; k < 6; ++k) {
+            d[2 * k] = to_touch_pair(g, st, &sc, k, 0, mixture);
+            d[2 * k + 1] = to_touch_pair(g, st, &sc, k, 2, mixture);
         }
+        nearest_of(g, st, &sc, d, 12, f, hit);
     }
-    const double b0 = ds_x2_first(best), b1 = ds_x2_first(ds_x2_high(best));
-    const double w0 = ds_x2_first(which), w1 = ds_x2_first(ds_x2_high(which));
-    const int second = b1 < b0;
-    hit->distance = second ? b1 : b0;
-    hit->disk = CH_NONE;
-    hit->across = 0.0;
-    if (!(hit->distance < INFINITY))
-        return;
-    const int place = (int)(second ? w1 : w0), k = place >> 2, slot = place & 3;
-    const size_t cell = st->cell[k];
-    hit->disk = g->who[cell * CH_SLOTS + (size_t)slot];
-    hit->across = (g->pos[cell * 2 * CH_SLOTS + across_at + (size_t)slot] - f->v) + st->sv[k];
 }
 
 /* The same test for the disks of the stencil's overflow lists (their
@@ -210,7 +267,7 @@ void ds_ch_new_chain(ds_chain *c)
     ++c->chains;
 }
 
-static void front_of(ds_chain *c, const ds_disks *d, double radius, ch_front *f)
+static DS_ALWAYS_INLINE void front_of(ds_chain *c, const ds_disks *d, double radius, ch_front *f)
 {
     const uint32_t k = c->chain.active, axis = c->chain.axis;
     const ch_disk *cd = &c->disk[k];
@@ -230,6 +287,11 @@ typedef struct ch_tally {
     double along[2]; /* separations along the chain at liftings: x chains, y chains */
     double across;   /* sign times the separation across (the xy part) */
 } ch_tally;
+
+/* The smaller and the larger of two numbers, neither a NaN: one
+ * instruction each, where fmin and fmax are calls (their NaN rules). */
+static inline double least(double a, double b) { return a < b ? a : b; }
+static inline double most(double a, double b) { return a > b ? a : b; }
 
 static DS_ALWAYS_INLINE void write_u(ds_disks *d, const ch_front *f, uint32_t axis)
 {
@@ -307,7 +369,7 @@ static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, in
     const ch_grid *g = &c->grid;
     ch_chain *ch = &c->chain;
     const double radius = sim->world.radius, sigma2 = 4.0 * radius * radius;
-    const uint64_t per_scan = brute ? (uint64_t)c->n : 6 * CH_SLOTS;
+    const uint64_t per_scan = brute ? (uint64_t)c->n : 6 * CH_SLOTS; /* every slot, read or not */
     double left = c->per_step;
     ch_tally t = {0, 0, {0.0, 0.0}, 0.0};
     ch_front f;
@@ -330,17 +392,17 @@ static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, in
         const uint32_t beyond = g->near[axis][2 * f.along + up];
         const double wall = up ? c->box.side[axis] - f.r : f.r;
         const double edge = beyond == CH_NONE ? wall : g->edge[axis][f.along + up];
-        const double to_edge = fmax(ch->sign * (edge - f.u), 0.0);
-        const double lim = fmin(fmin(to_edge, c->reach[axis]), fmin(ch->left, left));
+        const double to_edge = most(ch->sign * (edge - f.u), 0.0);
+        const double lim = least(least(to_edge, c->reach[axis]), least(ch->left, left));
         if (hit.distance < lim) { /* a lifting, the common event */
-            const double move = fmax(hit.distance, 0.0);
+            const double move = most(hit.distance, 0.0);
             f.u += ch->sign * move;
             write_u(d, &f, axis);
             ch->left -= move;
             left -= move;
             const double sigma = mixture ? f.r + d->r[hit.disk] : 2.0 * radius;
             ++t.lifts;
-            t.along[axis] += sqrt(fmax(sigma * sigma - hit.across * hit.across, 0.0));
+            t.along[axis] += sqrt(most(sigma * sigma - hit.across * hit.across, 0.0));
             t.across += ch->sign * hit.across;
             ch->stalled = move > 0.0 ? 0 : ch->stalled + 1;
             ch->active = hit.disk;
