@@ -13,7 +13,8 @@
  * not need a huge empty grid: its cells overflow instead), and at least
  * two along a periodic axis, so that a disk's own image is never in the
  * cells ahead of it (a periodic side is over two diameters, so half of it
- * is over one). One cell for brute force. */
+ * is over one). Brute force keeps the same grid, whose edges stop the
+ * chains at the same places: only its candidates differ. */
 static void grid_shape(const ds_world *w, size_t n, uint32_t count[2])
 {
     const double total = 4.0 * (double)n + 16.0, sx = w->box.side[0], sy = w->box.side[1];
@@ -21,8 +22,6 @@ static void grid_shape(const ds_world *w, size_t n, uint32_t count[2])
     for (int a = 0; a < 2; ++a) {
         size_t c = ds_grid_cells_along(w->box.side[a], 2.0 * w->radius_max,
                                        (size_t)fmin(cap[a], (double)CH_MAX_SIDE));
-        if (w->broadphase == DS_BROADPHASE_BRUTE)
-            c = 1;
         if (c < 2 && ds_box_periodic(&w->box, a))
             c = 2;
         count[a] = (uint32_t)c;

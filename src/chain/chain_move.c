@@ -218,10 +218,12 @@ static void scan_overflow(const ds_chain *c, const ds_disks *d, const ch_stencil
         }
 }
 
-/* Brute force, the reference: every disk, through the nearest image.
+/* Brute force, the reference: every disk, through the nearest image,
+ * with the same arithmetic as the cells (the nearest image's shift added
+ * after the subtraction), so the two find the same liftings to the bit.
  * The nearest image is the one ahead only within half a periodic side,
- * so run() moves a disk no more than half a side less a diameter before
- * it looks again (reach). */
+ * so a disk moves no more than half a side less a diameter before it
+ * looks again (reach). */
 static void scan_all(const ds_chain *c, const ds_disks *d, uint32_t axis, double sign,
                      const ch_front *f, double sigma2, ch_hit *hit)
 {
@@ -408,14 +410,18 @@ static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, in
             ch->active = hit.disk;
             /* Disks touching all along the chain's line (a rigid row
              * across a periodic box, a jammed packing) pass the motion
-             * round without moving; in exact arithmetic no displacement
-             * is possible that way, so the chain ends. */
-            if (ch->stalled > c->n)
-                ch->left = 0.0;
-            else {
-                front_of(c, d, radius, &f);
-                continue;
+             * round for ever without moving: past n such liftings the
+             * rest of the chain counts as used, nothing having moved
+             * (nothing can), so that the step ends. */
+            if (ch->stalled > c->n) {
+                const double rest = least(ch->left, left);
+                ch->left -= rest;
+                left -= rest;
+                ch->stalled = 0;
             }
+            front_of(c, d, radius, &f);
+            if (ch->left > 0.0)
+                continue;
         } else {
             f.u += ch->sign * lim;
             write_u(d, &f, axis);

@@ -78,7 +78,8 @@ typedef struct ch_chain {
     double sign;   /* +1 or -1 */
     double left;   /* of its length */
     /* Consecutive liftings that moved nothing (disks in contact all along
-     * the chain's line): past n the chain ends (chain_move.c). */
+     * the chain's line): past n the rest of the chain counts as moved
+     * (chain_move.c). */
     uint64_t stalled;
 } ch_chain;
 
