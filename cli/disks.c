@@ -239,13 +239,19 @@ static void print_report(const run *r, long asked)
             printf(", the packing of a growth that jammed at Z = %.4g", ds_sim_get_growth_z(sim));
         printf("\n");
     }
+    const ds_integrator in = ds_sim_get_integrator(sim);
     printf("collision processing time: %.6f s (%s over %llu steps)\n",
            ds_sim_get_collision_seconds(sim),
-           ds_sim_get_integrator(sim) == DS_INTEGRATOR_EVENT_DRIVEN
+           in == DS_INTEGRATOR_EVENT_DRIVEN
                ? "predicting and processing collisions, wall turns and cell crossings"
+           : in == DS_INTEGRATOR_EVENT_CHAIN
+               ? "moving the chains: their liftings, cell crossings and wall turns"
                : "sorting, pruning, testing and resolving pairs",
            (unsigned long long)ds_sim_get_steps(sim));
-    printf("disk-disk collisions: %llu, wall reflections: %llu\n",
+    /* Event chains have no collisions: a chain passes from disk to disk
+     * (a lifting) and turns at walls. */
+    printf(in == DS_INTEGRATOR_EVENT_CHAIN ? "liftings: %llu, wall turns: %llu\n"
+                                           : "disk-disk collisions: %llu, wall reflections: %llu\n",
            (unsigned long long)ds_sim_get_collision_count(sim),
            (unsigned long long)ds_sim_get_wall_count(sim));
     printf("simulation %.3f s, output %.3f s\n", r->sim_seconds, r->out_seconds);

@@ -48,7 +48,8 @@ static const char *const usage_text =
     "                       box (0 < ETA < 1; with --mixture, R of the small ones)\n"
     "  --speed V            every disk's starting speed (default 100)\n"
     "  --dt DT              the time step, and the time between frames' steps with\n"
-    "                       the event-driven integrator (default 0.001)\n"
+    "                       the event-driven integrator; with chain a step carries\n"
+    "                       N x speed x DT of chain displacement (default 0.001)\n"
     "  --mixture RATIO:FRACTION\n"
     "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
     "                       radius RATIO x R, the rest R (e.g. 1.4:0.5)\n"
@@ -61,10 +62,11 @@ static const char *const usage_text =
     "  --measure-after T    discard the start: the pressures and the wall counts of\n"
     "                       --stats and the report are averaged from the first frame\n"
     "                       at time >= T on\n"
-    "  --integrator I       step (the fixed time step, default) or event (exact\n"
-    "                       event-driven dynamics)\n"
-    "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
-    "                       or auto (default auto)\n"
+    "  --integrator I       step (the fixed time step, default), event (exact\n"
+    "                       event-driven dynamics) or chain (event-chain Monte Carlo:\n"
+    "                       equilibrium sampling without dynamics)\n"
+    "  --broadphase B       step: sap, strips, brute or auto; event and chain:\n"
+    "                       cells, brute or auto (default auto)\n"
     "  -q, --quiet          print nothing but errors and warnings\n"
     "  -h, --help           show this help and exit\n"
     "  --version            show the version and exit\n"
@@ -107,7 +109,7 @@ static void check_combination(const options *o, int npos, const char *system_opt
     /* Growth needs exact contact times and no walls; a checkpoint's
      * system is checked once it is read. */
     if (o->grow_rate > 0.0 && !o->restart_path && o->integrator != DS_INTEGRATOR_EVENT_DRIVEN)
-        die(EXIT_USAGE, "--grow needs --integrator event (the time step cannot grow disks)");
+        die(EXIT_USAGE, "--grow needs --integrator event (only exact dynamics grows disks)");
     if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
         die(EXIT_USAGE, "--grow needs --periodic (the compression runs in a periodic box)");
     /* Growth measures its own Z over windows of collisions, and its
