@@ -18,7 +18,7 @@ library_version: Final[str]
 
 # The names the arguments and properties take: the tuples below, as
 # Literal types (test_stubs.py holds each equal to its tuple).
-_Integrator = Literal["step", "event"]
+_Integrator = Literal["step", "event", "chain"]
 _Boundary = Literal["walls", "periodic", "channel"]
 _Placement = Literal["random", "lattice"]
 _Broadphase = Literal["auto", "sap", "strips", "cells", "brute"]

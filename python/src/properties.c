@@ -223,7 +223,7 @@ PyGetSetDef dspy_sim_getset[] = {
     REAL(box, "Width of the box."),
     REAL(box_y, "Height of the box (box when square)."),
     REAL(dt, "The time step: the simulated time one step() advances."),
-    NAME(integrator, "The integrator: 'step' or 'event'."),
+    NAME(integrator, "The integrator: 'step', 'event' or 'chain'."),
     NAME(boundary, "The boundary: 'walls' or 'periodic'."),
     NAME(placement, "How the disks were placed: 'random' or 'lattice' (None for a Sim from\n"
                     "load(), whose checkpoint does not say)."),
@@ -272,14 +272,17 @@ PyGetSetDef dspy_sim_getset[] = {
                "for a liquid. Computed when read, O(N). NaN for a periodic box narrower than\n"
                "2.8 d. Per disk: local_psi6()."),
     COUNT(collision_count,
-          "Disk-disk collisions resolved since creation (reset_observables keeps it)."),
-    COUNT(wall_count, "Wall reflections since the last reset."),
-    REAL(wall_impulse, "Momentum handed to the walls since the last reset: the sum of 2 |v_n|."),
+          "Disk-disk collisions resolved since creation (reset_observables keeps it); with\n"
+          "'chain', the chains' liftings."),
+    COUNT(wall_count, "Wall reflections since the last reset (with 'chain', wall turns)."),
+    REAL(wall_impulse, "Momentum handed to the walls since the last reset: the sum of 2 |v_n|\n"
+                       "(with 'chain', 4 kT / speed a wall turn: what the dynamics would hand)."),
     COUNT(pairs_tested, "Narrow-phase distance tests since creation."),
     REAL(collision_seconds,
          "Wall-clock seconds spent on collisions, summed over all steps: with 'step',\n"
          "sorting, pruning, testing and resolving pairs; with 'event', processing\n"
-         "events (collisions, wall turns, cell crossings) and their predictions."),
+         "events (collisions, wall turns, cell crossings) and their predictions; with\n"
+         "'chain', moving the chains."),
     NAME(growth_state,
          "Growth (set_growth): 'none' (never grown, stopped with rate 0, ended by\n"
          "set_state, or stopped by run() for want of memory, which raises\n"

@@ -20,7 +20,7 @@ def same(a, b):
             and a.pressure == b.pressure and a.pairs_tested == b.pairs_tested)
 
 
-KINDS = [dict(integrator=i, boundary=b) for i in ("step", "event") for b in ("walls", "periodic")]
+KINDS = [dict(integrator=i, boundary=b) for i in disksim.INTEGRATORS for b in ("walls", "periodic")]
 
 
 @pytest.mark.parametrize("kind", KINDS, ids=lambda k: "%(integrator)s-%(boundary)s" % k)
