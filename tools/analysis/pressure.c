@@ -3,7 +3,7 @@
  * an error bar from block averages. Public API only. The scripts
  * tools/analysis/pressure_vs_dt.sh and tools/analysis/eos.sh run it over parameter sweeps.
  *
- *   pressure N ETA [--integrator step|event] [--dt DT] [--periodic]
+ *   pressure N ETA [--integrator step|event|chain] [--dt DT] [--periodic]
  *            [--lattice] [--box-y H] [--relax T] [--blocks B] [--block T]
  *            [--seed S] [--memory]
  *
@@ -13,7 +13,8 @@
  * taking Z in each block from the collision virial, the canonical Z of
  * ds_sim_get_compressibility_factor (kT = K / N with walls, K_int / (N - 1) in a
  * periodic box, where the momentum is conserved: the Z of Monte Carlo at
- * the same N), and with walls also from the walls (ds_sim_get_pressure A / K),
+ * the same N; with event chains, from their liftings), and with walls also
+ * from the walls (ds_sim_get_pressure A / K; the chains' wall turns),
  * both with A the area the centres reach. Z is the mean over the blocks; its error is the
  * standard error of that mean, sqrt(var / (B - 1)), which is honest when
  * a block is much longer than the time over which the pressure stays
@@ -37,13 +38,14 @@
 #define PI 3.14159265358979323846
 
 static const char usage_text[] =
-    "usage: pressure N ETA [--integrator step|event] [--dt DT] [--periodic] [--lattice]\n"
+    "usage: pressure N ETA [--integrator step|event|chain] [--dt DT] [--periodic] [--lattice]\n"
     "                [--box-y H] [--relax T] [--blocks B] [--block T] [--seed S] [--memory]\n"
     "Prints Z = P A / (N kT) of N disks covering the area fraction ETA of the\n"
     "1000 x H box, with the standard error of its mean over B blocks, as one line\n"
     "  eta N integrator dt boundary Z_virial error Z_walls error collisions seconds\n"
-    "  --integrator I  step or event (default event)\n"
-    "  --dt DT         time step, and with events the interval between observations\n"
+    "  --integrator I  step, event or chain (default event)\n"
+    "  --dt DT         time step, and with events or chains the interval between\n"
+    "                  observations\n"
     "  --periodic      periodic box instead of walls\n"
     "  --lattice       start on a triangular lattice instead of random placement\n"
     "  --box-y H       height of the box (default 1000)\n"
