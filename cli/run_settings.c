@@ -98,7 +98,17 @@ static char *value_of(const char *v, size_t len)
 
 /* Reads what record_run_settings wrote; a key it does not know is
  * skipped (a later command's), a number that is not one refused. */
-static settings kept; /* its paths live as long as the run's options */
+/* The settings read: their paths are the run's options until the command
+ * ends, then freed (the leak checkers see every allocation go). */
+static settings kept;
+
+static void forget_settings(void)
+{
+    free(kept.out);
+    free(kept.stats);
+    free(kept.trajectory);
+    free(kept.checkpoint);
+}
 
 static settings read_settings(const char *meta, const char *path)
 {
@@ -150,6 +160,7 @@ static settings read_settings(const char *meta, const char *path)
         s.last_frame > MAX_FRAMES - 1 || !s.out)
         die(EXIT_RUN, "cannot restart from %s: its run settings are damaged", path);
     kept = s;
+    atexit(forget_settings);
     return s;
 }
 
