@@ -88,7 +88,7 @@ def dense_mixture(integrator):
 
 @pytest.mark.parametrize("how", COPIES, ids=COPY_IDS)
 @pytest.mark.parametrize("make", [dense_lattice, dense_mixture])
-@pytest.mark.parametrize("integrator", ["step", "event"])
+@pytest.mark.parametrize("integrator", disksim.INTEGRATORS)
 def test_a_copy_or_a_pickle_of_any_sim_is_its_checkpoint_to_the_byte(tmp_path, how, make,
                                                                       integrator):
     # A loaded Sim's params have no placement (its checkpoint does not say):
