@@ -2,10 +2,11 @@
 /* The disks command's one header: what its files share. options.c reads
  * the command line; start.c checks where the run starts (a new request,
  * --restart's checkpoint, --from's frame); outputs.c checks every path
- * and makes --out; files.c writes files so that no partial one is ever
- * seen, and decides what a signal does; checkpoint.c writes checkpoints;
- * report.c says what went wrong; disks.c runs. The command uses the
- * library only through disk_sim.h, and only it prints. */
+ * and makes --out; frames_json.c describes the run beside its frames;
+ * files.c writes files so that no partial one is ever seen, and decides
+ * what a signal does; checkpoint.c writes checkpoints; report.c says what
+ * went wrong; disks.c runs. The command uses the library only through
+ * disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H
 
@@ -121,8 +122,23 @@ long resume_run_settings(options *o, const ds_sim *sim);
 void check_paths(const options *o);
 int frame_number(const char *base); /* k of frame_kkkk.txt, else -1 */
 void make_out_dir(const char *path);
-void check_other_runs(const options *o, long last);
-void remove_other_runs(const options *o, long last);
+/* The frames in --out that are another run's: those numbered after last,
+ * or all of them when its frames.json describes another run (json is this
+ * run's). Refused unless --overwrite; a restart (first > 0) keeps the
+ * frames before first, so their frames.json must be its run's. Returns
+ * whether frames.json is another run's, for remove_other_runs. */
+int check_other_runs(const options *o, long first, long last, const char *json);
+void remove_other_runs(const options *o, long last, int other_json);
+
+/* frames_json.c: the run's description beside its frames, frames.json:
+ * its text (jammed_frame >= 0: the frame at which growth jammed, at
+ * ds_sim_get_time), written atomically into --out; and an existing
+ * frames.json in dir compared with json: 0 if none or the same run's, 1
+ * another run's, 2 not a disksim one, with why ("has box [1000, 500],
+ * this run's [1000, 1000]"). */
+char *frames_json_text(const ds_sim *sim, const options *o, long jammed_frame);
+void frames_json_write(const options *o, const char *json);
+int frames_json_compare(const char *dir, const char *json, char *why, size_t cap);
 
 /* files.c: signals */
 void catch_signals(void);

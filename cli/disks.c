@@ -50,6 +50,7 @@ typedef struct run {
     long first, last; /* the frames this run writes */
     char *frame_buf;
     size_t frame_cap;
+    char *json; /* frames.json, written with the first frame */
     output stats, trajectory;
     ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
@@ -79,8 +80,10 @@ static void stats_row(output *out, long frame, const ds_sim *sim)
 }
 
 /* The frame file, its trajectory frame and its stats row, with the
- * signals held: at any moment the three agree. */
-static void emit_frame(run *r, long frame)
+ * signals held: at any moment the three agree. The run's first frame
+ * puts frames.json beside it, and so does a frame at which growth jammed
+ * (its time is off the frames' spacing). */
+static void emit_frame(run *r, long frame, int jammed)
 {
     const options *o = r->o;
     sigset_t old;
@@ -94,6 +97,12 @@ static void emit_frame(run *r, long frame)
         progress_clear(&r->pr);
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, why);
     }
+    if (jammed) {
+        free(r->json);
+        r->json = frames_json_text(r->sim, o, frame);
+    }
+    if (frame == r->first || jammed)
+        frames_json_write(o, r->json);
     if (r->xyz) {
         errno = 0;
         if (ds_writer_write(r->xyz, r->sim, NULL) != DS_OK)
@@ -310,7 +319,7 @@ static void run_frames(run *r)
             r->sim_seconds += ds_timer_now() - t0;
         }
         double t0 = ds_timer_now();
-        emit_frame(r, frame);
+        emit_frame(r, frame, jammed);
         /* The frame at T closes the relaxation: its row holds the averages
          * from the start, the rows after it those from it on. Before the
          * checkpoint, so that a restart from it carries the reset. */
@@ -384,11 +393,16 @@ int main(int argc, char **argv)
     r.jammed_frame = -1;
     start_run(&r, &o);
     record_run_settings(r.sim, &o, r.last);
-    check_other_runs(&o, r.last);
+    /* A restart from a growth that jammed starts after the jammed frame,
+     * which is off the frames' spacing. */
+    const int off_spacing =
+        r.first > 0 && ds_sim_get_steps(r.sim) != (uint64_t)(r.first - 1) * o.steps_per_frame;
+    r.json = frames_json_text(r.sim, &o, off_spacing ? r.first - 1 : -1);
+    const int other_json = check_other_runs(&o, r.first, r.last, r.json);
 
     make_out_dir(o.out_dir);
     open_outputs(&r);
-    remove_other_runs(&o, r.last);
+    remove_other_runs(&o, r.last, other_json);
     r.frame_cap = ds_frame_get_size(r.sim, o.velocities);
     r.frame_buf = malloc(r.frame_cap ? r.frame_cap : 1);
     if (!r.frame_buf)
@@ -406,6 +420,7 @@ int main(int argc, char **argv)
     if (!o.quiet)
         print_report(&r, o.frames);
     free(r.frame_buf);
+    free(r.json);
     ds_sim_destroy(r.sim);
     /* The timing report is output too: `disks 400 5 > /dev/full` must not
      * succeed silently with it lost. */
