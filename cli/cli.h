@@ -31,6 +31,7 @@ typedef struct options {
     const char *out_dir;
     const char *stats_path;
     const char *trajectory_path;
+    const char *gsd_path;        /* --gsd FILE, or NULL */
     const char *checkpoint_path; /* NULL: none */
     long checkpoint_every;       /* 0: only at the end */
     const char *restart_path;    /* --restart FILE, or NULL */
@@ -57,9 +58,10 @@ typedef struct options {
     /* Which of the run's settings the command line gave: a restart takes
      * the others from its checkpoint (run_settings.c). */
     int frames_given, steps_given, out_given;
-    /* --stats, --trajectory: the file the checkpointed run wrote, which the
-     * restart goes on writing (its rows up to the checkpoint kept). */
-    int stats_continues, trajectory_continues;
+    /* --stats, --trajectory, --gsd: the file the checkpointed run wrote,
+     * which the restart goes on writing (its rows up to the checkpoint
+     * kept). */
+    int stats_continues, trajectory_continues, gsd_continues;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */
@@ -86,7 +88,7 @@ options parse_args(int argc, char **argv);
 int is_decimal_text(const char *s); /* digits, '.', 'e', signs only (no hex, nan, inf) */
 uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_t max);
 double radius_arg(const char *s);
-double side_arg(const char *option, const char *s); /* --box, --box-y */
+double side_arg(const char *option, const char *s);                  /* --box, --box-y */
 double positive_arg(const char *option, const char *s, double most); /* most 0: no bound */
 void mixture_arg(const char *s, options *o);
 void refuse_name(ds_status st, const ds_error *err); /* a name the library did not parse */
@@ -163,7 +165,7 @@ int write_file_atomic(const char *dir, const char *name, const void *data, size_
 int probe_dir(const char *dir, const char *name); /* 0, or why a file cannot be made there */
 int is_special_file(const char *path);
 int write_file_in_place(const char *path, const void *data, size_t len, const char **why);
-/* files.c: files that grow frame by frame (--stats, --trajectory) */
+/* files.c: files that grow frame by frame (--stats, --trajectory, --gsd) */
 typedef struct output {
     const char *option, *path;
     FILE *f;
@@ -179,9 +181,12 @@ void output_publish(output *out);
 
 /* carry_over.c: a restart going on with the --stats or --trajectory file
  * its run wrote copies its rows or frames up to frame `last` into out
- * (just opened); 1 if there was a file to go on with, 0 if none. */
+ * (just opened); 1 if there was a file to go on with, 0 if none. The
+ * --gsd file is copied whole, its frames after sim's step taken out of
+ * its index; its writer then goes on with it. */
 int carry_over_stats(output *out, const char *header, long last);
 int carry_over_trajectory(output *out, const ds_sim *sim, uint64_t steps_per_frame, long last);
+int carry_over_gsd(output *out, const ds_sim *sim);
 
 /* checkpoint.c */
 void checkpoint_write(const ds_sim *sim, const char *path);

@@ -51,8 +51,9 @@ typedef struct run {
     char *frame_buf;
     size_t frame_cap;
     char *json; /* frames.json, written with the first frame */
-    output stats, trajectory;
+    output stats, trajectory, gsd_file;
     ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
+    ds_writer *gsd;        /* --gsd's, into gsd_file.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
     long jammed_frame;     /* the frame in which growth jammed, -1 */
     progress pr;
@@ -79,10 +80,19 @@ static void stats_row(output *out, long frame, const ds_sim *sim)
     output_write(out, row, (size_t)l);
 }
 
-/* The frame file, its trajectory frame and its stats row, with the
- * signals held: at any moment the three agree. The run's first frame
- * puts frames.json beside it, and so does a frame at which growth jammed
- * (its time is off the frames' spacing). */
+/* A trajectory's frame: a write that fails ends the run. */
+static void trajectory_frame(ds_writer *w, const output *out, const ds_sim *sim)
+{
+    errno = 0;
+    if (w && ds_writer_write(w, sim, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+}
+
+/* The frame file, its trajectory frames and its stats row, with the
+ * signals held: at any moment they agree. The run's first frame puts
+ * frames.json beside it, and so does a frame at which growth jammed (its
+ * time is off the frames' spacing). */
 static void emit_frame(run *r, long frame, int jammed)
 {
     const options *o = r->o;
@@ -103,12 +113,8 @@ static void emit_frame(run *r, long frame, int jammed)
     }
     if (frame == r->first || jammed)
         frames_json_write(o, r->json);
-    if (r->xyz) {
-        errno = 0;
-        if (ds_writer_write(r->xyz, r->sim, NULL) != DS_OK)
-            die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path,
-                strerror(errno ? errno : EIO));
-    }
+    trajectory_frame(r->xyz, &r->trajectory, r->sim);
+    trajectory_frame(r->gsd, &r->gsd_file, r->sim);
     if (r->stats.f)
         stats_row(&r->stats, frame, r->sim);
     keep_created_dirs(); /* --out holds a frame now */
@@ -123,17 +129,26 @@ static void write_checkpoint(run *r, long frame)
         output_publish(&r->stats);
     if (r->trajectory.f)
         output_publish(&r->trajectory);
+    if (r->gsd_file.f)
+        output_publish(&r->gsd_file);
     checkpoint_write(r->sim, r->o->checkpoint_path);
     r->checkpoint_frame = frame;
 }
 
+/* A trajectory's writer finished, and its file put in place. */
+static void close_trajectory(ds_writer **w, output *out)
+{
+    if (*w && ds_writer_close(*w, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path, strerror(EIO));
+    *w = NULL;
+    if (out->f)
+        output_close(out);
+}
+
 static void close_outputs(run *r)
 {
-    if (r->xyz && ds_writer_close(r->xyz, NULL) != DS_OK)
-        die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path, strerror(EIO));
-    r->xyz = NULL;
-    if (r->trajectory.f)
-        output_close(&r->trajectory);
+    close_trajectory(&r->xyz, &r->trajectory);
+    close_trajectory(&r->gsd, &r->gsd_file);
     if (r->stats.f)
         output_close(&r->stats);
 }
@@ -159,8 +174,26 @@ static void stop_by_signal(run *r, int sig, long frame)
     end_by_signal(sig);
 }
 
-/* Opens --stats and --trajectory (their temporaries) and makes sure the
- * frames and the checkpoint can be written, before any disk is placed. */
+/* The writer of format on a trajectory's file (GSD writes its header
+ * here). A write that fails says its errno; a refusal the library's
+ * reason, which names its stream "out", here the option's file. */
+static ds_writer *writer_on(const output *out, ds_format format)
+{
+    ds_writer *w = NULL;
+    ds_error err;
+    errno = 0;
+    if (ds_writer_open(format, out->f, 0, &w, &err) == DS_OK)
+        return w;
+    if (err.status == DS_ERR_IO)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+    die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+        strncmp(err.message, "out: ", 5) == 0 ? err.message + 5 : err.message);
+}
+
+/* Opens --stats, --trajectory and --gsd (their temporaries) and makes
+ * sure the frames and the checkpoint can be written, before any disk is
+ * placed. */
 static void open_outputs(run *r)
 {
     const options *o = r->o;
@@ -175,9 +208,13 @@ static void open_outputs(run *r)
         output_open(&r->trajectory, "--trajectory", o->trajectory_path);
         if (o->trajectory_continues && r->trajectory.slot >= 0)
             carry_over_trajectory(&r->trajectory, r->sim, o->steps_per_frame, r->first - 1);
-        ds_error err;
-        if (ds_writer_open(DS_FORMAT_XYZ, r->trajectory.f, 0, &r->xyz, &err) != DS_OK)
-            die(EXIT_RUN, "cannot write --trajectory %s: %s", o->trajectory_path, err.message);
+        r->xyz = writer_on(&r->trajectory, DS_FORMAT_XYZ);
+    }
+    if (o->gsd_path) {
+        output_open(&r->gsd_file, "--gsd", o->gsd_path);
+        if (o->gsd_continues && r->gsd_file.slot >= 0)
+            carry_over_gsd(&r->gsd_file, r->sim);
+        r->gsd = writer_on(&r->gsd_file, DS_FORMAT_GSD);
     }
     if (o->stats_path) {
         output_open(&r->stats, "--stats", o->stats_path);

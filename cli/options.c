@@ -30,6 +30,7 @@ static const char *const usage_text =
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
     "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
+    "  --gsd FILE           also write every frame to FILE, one GSD trajectory (HOOMD)\n"
     "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
     "                       stopped by a signal (INT, TERM, HUP)\n"
     "  --checkpoint-every K also every K frames\n"
@@ -148,7 +149,8 @@ enum {
     BOX,
     DT,
     SPEED,
-    AREA_FRACTION
+    AREA_FRACTION,
+    GSD
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -177,7 +179,8 @@ static const struct {
              {"--box", 1},
              {"--dt", 1},
              {"--speed", 1},
-             {"--area-fraction", 1}};
+             {"--area-fraction", 1},
+             {"--gsd", 0}};
 
 /* The first option given that describes the system, the first that
  * describes the placement (see check_combination), and the boundary
@@ -222,6 +225,9 @@ static int set_run_option(options *o, int which, const char *value)
         return 1;
     case TRAJECTORY:
         o->trajectory_path = file_arg("--trajectory", value);
+        return 1;
+    case GSD:
+        o->gsd_path = file_arg("--gsd", value);
         return 1;
     case CHECKPOINT:
         o->checkpoint_path = file_arg("--checkpoint", value);

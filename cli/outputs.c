@@ -252,6 +252,7 @@ void check_paths(const options *o)
     resolve(o->out_dir, out_canon, sizeof out_canon);
     named files[] = {{"--stats", o->stats_path, 1, "", 0, 0, 0, 0},
                      {"--trajectory", o->trajectory_path, 1, "", 0, 0, 0, 0},
+                     {"--gsd", o->gsd_path, 1, "", 0, 0, 0, 0},
                      {"--checkpoint", o->checkpoint_path, 1, "", 0, 0, 0, 0},
                      {"--restart", o->restart_path, 0, "", 0, 0, 0, 0},
                      {"--from", o->from_path, 0, "", 0, 0, 0, 0}};
