@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Protocols: what acts on a running simulation from outside its dynamics
- * (growth today; a thermostat, a barostat, driving next). Each fills one
+ * (growth, a thermostat, a barostat; driving next). Each fills one
  * table of hooks; the integrators call the hooks through the inline
  * helpers below and hold no protocol's code. A protocol works in the
  * integrator's time (the time the integrator hands it), and changes the
@@ -19,8 +19,14 @@
 
 
 /* The kinds, one slot each; a new protocol is one enumerator here and
- * one line in sim/tables.c. */
-typedef enum ds_protocol_kind { DS_PROTOCOL_GROWTH = 0, DS_PROTOCOL_KIND_COUNT } ds_protocol_kind;
+ * one line in sim/tables.c. The hooks are called in this order: a heat
+ * bath's step's end before a barostat's move. */
+typedef enum ds_protocol_kind {
+    DS_PROTOCOL_GROWTH = 0,
+    DS_PROTOCOL_THERMOSTAT,
+    DS_PROTOCOL_BAROSTAT,
+    DS_PROTOCOL_KIND_COUNT
+} ds_protocol_kind;
 
 /* A collision as a protocol that watches them sees it: the pair (their
  * integrator records), its time, and the kinetic energy it added (0 for
