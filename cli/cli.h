@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* The disks command's one header: what its files share. options.c reads
- * the command line; start.c checks where the run starts (a new request,
- * --restart's checkpoint, --from's frame); outputs.c checks every path
- * and makes --out; files.c writes files so that no partial one is ever
- * seen, and decides what a signal does; checkpoint.c writes checkpoints;
- * report.c says what went wrong; disks.c runs. The command uses the
+ * the command line, usage.c says what it takes (--help); start.c checks
+ * where the run starts (a new request, --restart's checkpoint, --from's
+ * frame); outputs.c checks every path and makes --out; files.c writes
+ * files so that no partial one is ever seen, and decides what a signal
+ * does; checkpoint.c writes checkpoints; report.c says what went wrong;
+ * disks.c runs. The command uses the
  * library only through disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H
@@ -50,6 +51,15 @@ typedef struct options {
     /* --measure-after T: the observables reset at the first frame at t >=
      * T (0: never) */
     double measure_after;
+    /* --thermostat KIND (NONE: not given), --temperature KT,
+     * --thermostat-rate NU (0: not given, the library's default) */
+    ds_thermostat thermostat;
+    double temperature, thermostat_rate;
+    /* --pressure BP (0: none), --barostat-every K, --barostat-step D (0:
+     * the library's defaults), --barostat-aspect */
+    double pressure, barostat_step;
+    uint64_t barostat_every;
+    int barostat_aspect;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */
@@ -69,6 +79,9 @@ void die(int code, const char *fmt, ...) DIES;
  * out (cap bytes) holds it, or the library's sentence is returned. */
 const char *in_command_words(const ds_error *err, char *out, size_t cap);
 
+/* usage.c: the help, a printf format taking the default seed */
+extern const char usage_text[];
+
 /* options.c */
 options parse_args(int argc, char **argv);
 
@@ -82,6 +95,9 @@ ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture);
 /* --grow started, once the simulation exists (a new one, a checkpoint's
  * or a frame's), or refused with the library's reason. */
 void start_growth(const options *o, ds_sim *sim);
+/* --thermostat and --pressure set likewise (a checkpoint's go on unless
+ * given again). */
+void start_ensemble(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
 void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);
