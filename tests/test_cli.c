@@ -729,6 +729,12 @@ static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **stat
      * the slots' order, and its last bits moved). */
     restart_matches_one_run("--mixture 1.4:0.5");
     restart_matches_one_run("--mixture 1.4:0.5 --integrator event --periodic");
+    /* The checkpoint's heat bath and barostat go on (their random
+     * numbers, the box of the trajectory's Lattice) without the options
+     * given again. */
+    restart_matches_one_run("--integrator event --periodic --thermostat andersen --pressure 30 "
+                            "--barostat-every 2 --barostat-aspect");
+    restart_matches_one_run("--periodic --thermostat isokinetic --temperature 2000 --pressure 30");
 }
 
 /* Starts disks in dir with the given arguments and sends sig once
