@@ -166,8 +166,9 @@ static void two_disks_area(ds_integrator integrator, int aspect)
                s.area.error, want_a, s.inverse.mean, s.inverse.error, want_inv,
                ds_sim_get_barostat_acceptance(sim));
     /* 5 standard errors (a correct run fails with probability 6e-7), and
-     * errors that tell the overlaps' effect (10%) from none. */
-    assert_true(s.area.error < 0.02 * want_a);
+     * errors that tell the overlaps' effect (10%) from none (in the quick
+     * run, a tenth as long, three times larger). */
+    assert_true(s.area.error < (quick_mode() ? 0.06 : 0.02) * want_a);
     if (fabs(s.area.mean - want_a) > 5.0 * s.area.error ||
         fabs(s.inverse.mean - want_inv) > 5.0 * s.inverse.error)
         fail_msg("two disks, %s: <A> = %g +- %g (exact %g), <1 / A> = %g +- %g (exact %g)",
@@ -359,10 +360,8 @@ static void isobaric_meets_canonical(double eta, int compare_eta)
      * the area forgetting itself over some 600 moves (the configuration
      * must follow it), and 2^16 samples, each of a step between two
      * moves, whose collisions see the area of the sample: a move's new
-     * area is not the one its step's collisions saw. In the quick run
-     * (valgrind) the blocks are no longer than the area's memory and the
-     * errors come out up to half what they are: 10 of them there. */
-    const int samples = (int)long_run(65536), every = 2;
+     * area is not the one its step's collisions saw. */
+    const int samples = 65536, every = 2;
     double *x = malloc((size_t)samples * sizeof *x), *y = malloc((size_t)samples * sizeof *y);
     assert_true(x && y);
     for (int s = 0; s < samples / 64; ++s) {
@@ -395,7 +394,7 @@ static void isobaric_meets_canonical(double eta, int compare_eta)
                eta, canonical.mean, canonical.error, beta_p, isobaric.mean, isobaric.error, error,
                virial.mean, virial.error, ds_sim_get_barostat_acceptance(sim));
     /* 5 standard errors each: a correct run fails with probability 1e-6. */
-    const double k = quick_mode() ? 10.0 : 5.0;
+    const double k = 5.0;
     if (fabs(virial.mean - beta_p) > k * virial.error)
         fail_msg("eta %g: the isobaric run's virial beta P sigma^2 = %g +- %g, set %g", eta,
                  virial.mean, virial.error, beta_p);
@@ -407,6 +406,13 @@ static void isobaric_meets_canonical(double eta, int compare_eta)
 static void test_isobaric_and_canonical_runs_agree(void **state)
 {
     (void)state;
+    /* The area's memory is hundreds of moves, and at 0.70 the run visits
+     * both sides of the loop slowly: a tenth of the run (the valgrind
+     * run's) holds neither the canonical Z nor the isobaric means to its
+     * errors, so it checks nothing here (the other tests run the same
+     * code under valgrind). */
+    if (quick_mode())
+        skip();
     isobaric_meets_canonical(0.50, 1);
     isobaric_meets_canonical(0.70, 0);
 }
