@@ -509,13 +509,15 @@ $(PY_MODULE): $(PY_SRC) $(LIB_SRC) $(LIB_HDR) $(FLAGS_STAMP) | python-deps
 	    build_ext $(PY_WHERE) --force --parallel $(PY_JOBS) --build-temp $(BUILD)/python/temp
 	$(if $(filter 1,$(SANITIZE)),cp python/disksim/__init__.py $(PY_LIB)/disksim/)
 
-# The suite runs the disks of this build (test_frames compares its frames).
-python-test: $(DISKS) $(OUT)tools/pressure
+# The suite runs the disks of this build (test_frames compares its frames)
+# and its tools/pressure and tools/gr (test_example, test_rdf).
+python-test: $(DISKS) $(OUT)tools/pressure $(OUT)tools/gr
 	@missing=$(call PY_MISSING,test); if [ -n "$$missing" ]; then \
 	    echo "python tests skipped: $(PYTHON) lacks $$missing (Debian packages)"; exit 0; fi; \
 	$(MAKE) -s --no-print-directory python && echo "== pytest python/tests" && \
 	    PYTHONPATH=$(PY_LIB) DISKSIM_DISKS="$(CURDIR)/$(DISKS)" \
-	    DISKSIM_PRESSURE="$(CURDIR)/$(OUT)tools/pressure" $(PY_RUN) \
+	    DISKSIM_PRESSURE="$(CURDIR)/$(OUT)tools/pressure" DISKSIM_GR="$(CURDIR)/$(OUT)tools/gr" \
+	    $(PY_RUN) \
 	    $(PYTHON) -m pytest -q -p no:cacheprovider python/tests
 
 # The packaging, offline in a venv (tests/python_packaging.sh): pip install

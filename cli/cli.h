@@ -41,6 +41,9 @@ typedef struct options {
     ds_placement placement;
     ds_boundary boundary;
     double box_y; /* 0: square */
+    /* --box, --dt, --speed (0: the library's defaults); --area-fraction,
+     * from which R is worked out (0: R given) */
+    double box, dt, speed, area_fraction;
     /* --mixture RATIO:FRACTION: a FRACTION of the disks of radius RATIO R
      * (mix_fraction 0: one kind); --mass area|equal */
     double mix_ratio, mix_fraction;
@@ -60,6 +63,12 @@ typedef struct options {
     double pressure, barostat_step;
     uint64_t barostat_every;
     int barostat_aspect;
+    /* Which of the run's settings the command line gave: a restart takes
+     * the others from its checkpoint (run_settings.c). */
+    int frames_given, steps_given, out_given;
+    /* --stats, --trajectory: the file the checkpointed run wrote, which the
+     * restart goes on writing (its rows up to the checkpoint kept). */
+    int stats_continues, trajectory_continues;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */
@@ -79,11 +88,25 @@ void die(int code, const char *fmt, ...) DIES;
  * out (cap bytes) holds it, or the library's sentence is returned. */
 const char *in_command_words(const ds_error *err, char *out, size_t cap);
 
-/* usage.c: the help, a printf format taking the default seed */
-extern const char usage_text[];
+/* usage.c: the help (--help), on stdout */
+void print_usage(void);
 
 /* options.c */
 options parse_args(int argc, char **argv);
+
+/* arguments.c: a value of the command line, or a usage error naming it. */
+int is_decimal_text(const char *s); /* digits, '.', 'e', signs only (no hex, nan, inf) */
+uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_t max);
+double radius_arg(const char *s);
+double side_arg(const char *option, const char *s);                  /* --box, --box-y */
+double positive_arg(const char *option, const char *s, double most); /* most 0: no bound */
+void mixture_arg(const char *s, options *o);
+void refuse_name(ds_status st, const ds_error *err); /* a name the library did not parse */
+const char *file_arg(const char *option, const char *value);
+
+/* suggest.c: of names[0 .. count), the one nearest to typed (len bytes),
+ * if near enough to be a typo of it; else NULL. */
+const char *closest_option(const char *typed, size_t len, const char *const *names, size_t count);
 
 /* start.c: the request checked (with --from, as the frame's: from is its
  * path), a new simulation, or one from a checkpoint or a frame. */
@@ -102,6 +125,13 @@ ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
 void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);
 ds_sim *start_from_frame(options *o); /* sets o->n and o->radius */
+
+/* run_settings.c: the run's settings in its checkpoints (the library's
+ * metadata text), and a restart going on with them: the options the
+ * command line did not give come from the checkpoint, a contradiction is
+ * refused. resume_run_settings returns the checkpoint's frame. */
+void record_run_settings(ds_sim *sim, const options *o, long last);
+long resume_run_settings(options *o, const ds_sim *sim);
 
 /* outputs.c */
 void check_paths(const options *o);
@@ -142,6 +172,16 @@ typedef struct output {
 void output_open(output *out, const char *option, const char *path);
 void output_write(output *out, const void *data, size_t len);
 void output_close(output *out);
+/* The file so far put in place (its temporary renamed over the path), and
+ * written in place from then on: at a checkpoint, so that a run killed
+ * later keeps its rows up to there for the restart to go on with. */
+void output_publish(output *out);
+
+/* carry_over.c: a restart going on with the --stats or --trajectory file
+ * its run wrote copies its rows or frames up to frame `last` into out
+ * (just opened); 1 if there was a file to go on with, 0 if none. */
+int carry_over_stats(output *out, const char *header, long last);
+int carry_over_trajectory(output *out, const ds_sim *sim, uint64_t steps_per_frame, long last);
 
 /* checkpoint.c */
 void checkpoint_write(const ds_sim *sim, const char *path);

@@ -108,6 +108,12 @@ static void emit_frame(run *r, long frame)
 
 static void write_checkpoint(run *r, long frame)
 {
+    /* The outputs first: a checkpoint never holds a frame that the files
+     * beside it lack (a restart drops the rows past its checkpoint). */
+    if (r->stats.f)
+        output_publish(&r->stats);
+    if (r->trajectory.f)
+        output_publish(&r->trajectory);
     checkpoint_write(r->sim, r->o->checkpoint_path);
     r->checkpoint_frame = frame;
 }
@@ -158,13 +164,18 @@ static void open_outputs(run *r)
         checkpoint_probe(o->checkpoint_path);
     if (o->trajectory_path) {
         output_open(&r->trajectory, "--trajectory", o->trajectory_path);
+        if (o->trajectory_continues && r->trajectory.slot >= 0)
+            carry_over_trajectory(&r->trajectory, r->sim, o->steps_per_frame, r->first - 1);
         ds_error err;
         if (ds_writer_open(DS_FORMAT_XYZ, r->trajectory.f, 0, &r->xyz, &err) != DS_OK)
             die(EXIT_RUN, "cannot write --trajectory %s: %s", o->trajectory_path, err.message);
     }
     if (o->stats_path) {
         output_open(&r->stats, "--stats", o->stats_path);
-        output_write(&r->stats, stats_header, sizeof stats_header - 1);
+        /* A restart going on with its run's file keeps its header and rows. */
+        if (!(o->stats_continues && r->stats.slot >= 0 &&
+              carry_over_stats(&r->stats, stats_header, r->first - 1)))
+            output_write(&r->stats, stats_header, sizeof stats_header - 1);
     }
 }
 
@@ -339,7 +350,8 @@ static void start_run(run *r, options *o)
 {
     if (o->restart_path) {
         r->sim = restart_from(o->restart_path);
-        r->first = restart_frame(o, r->sim) + 1;
+        r->first = resume_run_settings(o, r->sim) + 1;
+        check_paths(o); /* again, with the paths the checkpoint gave */
         check_restart_frame_file(o, r->sim, r->first - 1);
     } else if (o->from_path) {
         r->sim = start_from_frame(o);
@@ -381,6 +393,7 @@ int main(int argc, char **argv)
     r.checkpoint_frame = -1;
     r.jammed_frame = -1;
     start_run(&r, &o);
+    record_run_settings(r.sim, &o, r.last);
     check_other_runs(&o, r.last);
 
     make_out_dir(o.out_dir);

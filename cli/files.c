@@ -311,6 +311,26 @@ void output_write(output *out, const void *data, size_t len)
             strerror(errno ? errno : EIO));
 }
 
+void output_publish(output *out)
+{
+    if (out->slot < 0)
+        return;
+    errno = 0;
+    int failed = fflush(out->f) != 0 || ferror(out->f);
+    sigset_t old;
+    hold_signals(&old);
+    if (!failed && rename(pending_tmp[out->slot], out->path) == 0) {
+        pending_used[out->slot] = 0;
+        out->slot = -1; /* written in place from now on */
+    } else {
+        failed = 1;
+    }
+    release_signals(&old);
+    if (failed)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+}
+
 void output_close(output *out)
 {
     errno = 0;

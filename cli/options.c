@@ -11,132 +11,6 @@
 
 #include "cli.h"
 
-/* strtod also reads hexadecimal ("0x10"), "nan" and "infinity": a number
- * on our command line is decimal, so anything else is refused up front. */
-static int is_decimal_text(const char *s)
-{
-    return *s && strspn(s, "0123456789.eE+-") == strlen(s);
-}
-
-/* A non-negative integer: digits only, or an exact integer in decimal
- * scientific notation (1e5), no sign, no trailing text. */
-static int parse_count(const char *s, uint64_t max, uint64_t *out)
-{
-    if (!is_decimal_text(s) || *s == '-' || *s == '+')
-        return 0;
-    char *end;
-    errno = 0;
-    unsigned long long v = strtoull(s, &end, 10);
-    if (*end == '\0' && end != s) {
-        if (errno == ERANGE || v > max)
-            return -1;
-        *out = v;
-        return 1;
-    }
-    double d = strtod(s, &end);
-    if (*end != '\0' || end == s || !isfinite(d) || d != floor(d) || d < 0.0)
-        return errno == ERANGE ? -1 : 0;
-    /* (double)UINT64_MAX rounds up to 2^64, and converting 2^64 to uint64_t
-     * is undefined: test against 2^64 itself, then compare as integers. */
-    if (!(d < 18446744073709551616.0) || (uint64_t)d > max)
-        return -1;
-    *out = (uint64_t)d;
-    return 1;
-}
-
-static uint64_t count_arg(const char *name, const char *s, uint64_t min, uint64_t max)
-{
-    uint64_t v = 0;
-    int ok = parse_count(s, max, &v);
-    if (ok == 0)
-        die(EXIT_USAGE, "%s must be a whole number, got '%s'", name, s);
-    if (ok < 0 || v < min)
-        die(EXIT_USAGE, "%s must be between %llu and %llu, got '%s'", name, (unsigned long long)min,
-            (unsigned long long)max, s);
-    return v;
-}
-
-static double radius_arg(const char *s)
-{
-    char *end;
-    errno = 0;
-    double r = strtod(s, &end);
-    if (end == s || *end != '\0')
-        die(EXIT_USAGE, "R must be a number, got '%s'", s);
-    /* ERANGE on underflow (1e-400) leaves r tiny: the range check below
-     * names it better than "not finite". */
-    if (!isfinite(r) || (errno == ERANGE && fabs(r) > 1.0))
-        die(EXIT_USAGE, "R must be a finite number, got '%s'", s);
-    if (!is_decimal_text(s))
-        die(EXIT_USAGE, "R must be a decimal number, got '%s'", s);
-    if (!(r > 0.0))
-        die(EXIT_USAGE, "R must be a number > 0, got '%s'", s);
-    return r;
-}
-
-static double box_y_arg(const char *s)
-{
-    char *end;
-    double h = strtod(s, &end);
-    if (!is_decimal_text(s) || end == s || *end != '\0' || !isfinite(h) || !(h > 0.0 && h <= 1e9))
-        die(EXIT_USAGE, "--box-y must be a number > 0 and <= 1e9, got '%s'", s);
-    return h;
-}
-
-/* A decimal number > 0 (and below a bound, when one is given). */
-static double positive_arg(const char *option, const char *s, double most)
-{
-    char *end;
-    double v = strtod(s, &end);
-    const int number = is_decimal_text(s) && end != s && *end == '\0' && isfinite(v);
-    if (!number || !(v > 0.0))
-        die(EXIT_USAGE, "%s must be a number > 0, got '%s'", option, s);
-    if (most > 0.0 && !(v <= most))
-        die(EXIT_USAGE, "%s must be a number > 0 and <= %g, got '%s'", option, most, s);
-    return v;
-}
-
-/* --mixture RATIO:FRACTION: two decimal numbers, RATIO > 0 (the library
- * holds the large disks to the box), 0 < FRACTION < 1. */
-static void mixture_arg(const char *s, options *o)
-{
-    const char *colon = strchr(s, ':');
-    char ratio[64];
-    if (!colon || (size_t)(colon - s) >= sizeof ratio)
-        die(EXIT_USAGE, "--mixture must be RATIO:FRACTION (e.g. 1.4:0.5), got '%s'", s);
-    memcpy(ratio, s, (size_t)(colon - s));
-    ratio[colon - s] = '\0';
-    char *end;
-    const double r = strtod(ratio, &end), f = strtod(colon + 1, &end);
-    if (!is_decimal_text(ratio) || !is_decimal_text(colon + 1) || *end != '\0' ||
-        !(isfinite(r) && r > 0.0) || !(f > 0.0 && f < 1.0))
-        die(EXIT_USAGE,
-            "--mixture must be RATIO:FRACTION, a radius ratio > 0 and a fraction between 0 "
-            "and 1 (e.g. 1.4:0.5), got '%s'",
-            s);
-    o->mix_ratio = r;
-    o->mix_fraction = f;
-    o->mixture_text = s;
-}
-
-/* A name the library does not know, in the command's words
- * ("--integrator 'exact' is not one of 'step', 'event'"). */
-static void refuse_name(ds_status st, const ds_error *err)
-{
-    if (st != DS_OK) {
-        char words[sizeof err->message + 16];
-        die(EXIT_USAGE, "%s", in_command_words(err, words, sizeof words));
-    }
-}
-
-/* A file name given to an option. */
-static const char *file_arg(const char *option, const char *value)
-{
-    if (!*value)
-        die(EXIT_USAGE, "%s needs a file name", option);
-    return value;
-}
-
 /* The combinations the command refuses: a checkpoint holds the system
  * (N, R, the box, the integrator and its broad phase, and the state the
  * seed and placement made), so --restart takes none of them; a frame holds
@@ -155,10 +29,18 @@ static void check_combination(const options *o, int npos, const char *system_opt
         die(EXIT_USAGE,
             "%s cannot be given with --from: the frame gives every position and velocity",
             placement_option);
-    if (o->checkpoint_every && !o->checkpoint_path)
+    /* (A restart's may come from its checkpoint: run_settings.c.) */
+    if (o->checkpoint_every && !o->checkpoint_path && !o->restart_path)
         die(EXIT_USAGE, "--checkpoint-every needs --checkpoint FILE");
     if (o->from_path && o->mixture_text)
         die(EXIT_USAGE, "--mixture cannot be given with --from: the frame gives every radius");
+    if (o->from_path && o->area_fraction > 0.0)
+        die(EXIT_USAGE,
+            "--area-fraction cannot be given with --from: the frame gives every radius");
+    if (o->from_path && o->speed > 0.0)
+        die(EXIT_USAGE, "--speed cannot be given with --from: the frame gives every velocity");
+    if (o->area_fraction > 0.0 && npos == 2)
+        die(EXIT_USAGE, "give R or --area-fraction, not both");
     if ((o->until_eta > 0.0 || o->until_z > 0.0) && !(o->grow_rate > 0.0))
         die(EXIT_USAGE, "%s needs --grow RATE", o->until_eta > 0.0 ? "--until-eta" : "--until-z");
     /* Growth needs exact contact times and no walls; a checkpoint's
@@ -189,9 +71,10 @@ static void check_combination(const options *o, int npos, const char *system_opt
     if (o->measure_after > 0.0 && o->grow_rate > 0.0)
         die(EXIT_USAGE, "--measure-after cannot be given with --grow: a growing packing has no "
                         "equilibrium to measure");
-    if (npos == 1 || (npos == 0 && !o->restart_path && !o->from_path))
+    if ((npos == 1 && !(o->area_fraction > 0.0)) ||
+        (npos == 0 && !o->restart_path && !o->from_path))
         die(EXIT_USAGE, "missing %s: usage: disks N R [options] (try --help)",
-            npos == 0 ? "N and R" : "R");
+            npos == 0 ? "N and R" : "R (or --area-fraction ETA)");
 }
 
 /* The options that take a value, in the order of their table, names[]. */
@@ -216,6 +99,10 @@ enum {
     UNTIL_Z,
     MEASURE_AFTER,
     BOUNDARY,
+    BOX,
+    DT,
+    SPEED,
+    AREA_FRACTION,
     THERMOSTAT,
     TEMPERATURE,
     THERMOSTAT_RATE,
@@ -247,6 +134,10 @@ static const struct {
              {"--until-z", 0},
              {"--measure-after", 0},
              {"--boundary", 1},
+             {"--box", 1},
+             {"--dt", 1},
+             {"--speed", 1},
+             {"--area-fraction", 1},
              {"--thermostat", 0},
              {"--temperature", 0},
              {"--thermostat-rate", 0},
@@ -299,29 +190,64 @@ static void ensemble_option(options *o, int which, const char *value)
     }
 }
 
-/* Option which (names[]) with its value. */
+/* Option which (names[]) with its value, if it is one of the run's: its
+ * frames, its files, where it starts; 0 if not. */
+static int set_run_option(options *o, int which, const char *value)
+{
+    switch (which) {
+    case FRAMES:
+        o->frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
+        o->frames_given = 1;
+        return 1;
+    case STEPS:
+        o->steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
+        o->steps_given = 1;
+        return 1;
+    case OUT:
+        if (!*value)
+            die(EXIT_USAGE, "--out needs a directory name");
+        o->out_dir = value;
+        o->out_given = 1;
+        return 1;
+    case STATS:
+        o->stats_path = file_arg("--stats", value);
+        return 1;
+    case TRAJECTORY:
+        o->trajectory_path = file_arg("--trajectory", value);
+        return 1;
+    case CHECKPOINT:
+        o->checkpoint_path = file_arg("--checkpoint", value);
+        return 1;
+    case CHECKPOINT_EVERY:
+        o->checkpoint_every = (long)count_arg("--checkpoint-every", value, 1, MAX_FRAMES);
+        return 1;
+    case RESTART:
+        o->restart_path = file_arg("--restart", value);
+        return 1;
+    case FROM:
+        o->from_path = file_arg("--from", value);
+        return 1;
+    case MEASURE_AFTER:
+        o->measure_after = positive_arg("--measure-after", value, 1e12);
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* Option which (names[]) with its value: the run's, or the system's and
+ * its protocols'. Numbers are held here to being numbers > 0, and to
+ * their bounds by the library (start.c), which says why in its words. */
 static void set_option(options *o, int which, const char *value, first_options *first)
 {
     ds_error err;
+    if (set_run_option(o, which, value))
+        return;
     switch (which) {
     case SEED:
         o->seed = count_arg("--seed", value, 0, UINT64_MAX);
         if (!first->placement)
             first->placement = "--seed";
-        break;
-    case FRAMES:
-        o->frames = (long)count_arg("--frames", value, 1, MAX_FRAMES);
-        break;
-    case STEPS:
-        o->steps_per_frame = count_arg("--steps-per-frame", value, 1, 1000000000u);
-        break;
-    case OUT:
-        if (!*value)
-            die(EXIT_USAGE, "--out needs a directory name");
-        o->out_dir = value;
-        break;
-    case STATS:
-        o->stats_path = file_arg("--stats", value);
         break;
     case BROADPHASE:
         refuse_name(ds_broadphase_parse(value, &o->broadphase, &err), &err);
@@ -329,23 +255,8 @@ static void set_option(options *o, int which, const char *value, first_options *
     case INTEGRATOR:
         refuse_name(ds_integrator_parse(value, &o->integrator, &err), &err);
         break;
-    case TRAJECTORY:
-        o->trajectory_path = file_arg("--trajectory", value);
-        break;
     case BOX_Y:
-        o->box_y = box_y_arg(value);
-        break;
-    case CHECKPOINT:
-        o->checkpoint_path = file_arg("--checkpoint", value);
-        break;
-    case CHECKPOINT_EVERY:
-        o->checkpoint_every = (long)count_arg("--checkpoint-every", value, 1, MAX_FRAMES);
-        break;
-    case RESTART:
-        o->restart_path = file_arg("--restart", value);
-        break;
-    case FROM:
-        o->from_path = file_arg("--from", value);
+        o->box_y = side_arg("--box-y", value);
         break;
     case MIXTURE:
         mixture_arg(value, o);
@@ -356,23 +267,52 @@ static void set_option(options *o, int which, const char *value, first_options *
     case GROW:
         o->grow_rate = positive_arg("--grow", value, 0.0);
         break;
-    /* The growth's targets: numbers > 0 here, held to their bounds by
-     * the library (start.c). */
     case UNTIL_ETA:
         o->until_eta = positive_arg("--until-eta", value, 0.0);
         break;
     case UNTIL_Z:
         o->until_z = positive_arg("--until-z", value, 0.0);
         break;
-    case MEASURE_AFTER:
-        o->measure_after = positive_arg("--measure-after", value, 1e12);
-        break;
     case BOUNDARY:
         boundary_arg(o, value, first);
+        break;
+    case BOX:
+        o->box = side_arg("--box", value);
+        break;
+    case DT:
+        o->dt = positive_arg("--dt", value, 0.0);
+        break;
+    case SPEED:
+        o->speed = positive_arg("--speed", value, 0.0);
+        break;
+    case AREA_FRACTION:
+        o->area_fraction = positive_arg("--area-fraction", value, 0.0);
+        if (!(o->area_fraction < 1.0))
+            die(EXIT_USAGE, "--area-fraction must be a number > 0 and < 1, got '%s'", value);
         break;
     default:
         ensemble_option(o, which, value);
     }
+}
+
+/* The options without a value (flag_option). */
+static const char *const flags[] = {"--help",       "-h",          "--version", "--quiet",   "-q",
+                                    "--velocities", "--overwrite", "--lattice", "--periodic"};
+
+/* An option the command does not know, and the one perhaps meant. */
+static void unknown_option(const char *typed, size_t len)
+{
+    const size_t count = sizeof names / sizeof names[0], nflags = sizeof flags / sizeof flags[0];
+    const char *all[sizeof names / sizeof names[0] + sizeof flags / sizeof flags[0]];
+    for (size_t k = 0; k < count; ++k)
+        all[k] = names[k].name;
+    for (size_t k = 0; k < nflags; ++k)
+        all[count + k] = flags[k];
+    const char *meant = closest_option(typed, len, all, count + nflags);
+    if (meant)
+        die(EXIT_USAGE, "unknown option '%.*s': did you mean %s? (try --help)", (int)len, typed,
+            meant);
+    die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, typed);
 }
 
 /* --name VALUE or --name=VALUE at argv[*i] (a, starting with "--"). */
@@ -387,7 +327,7 @@ static void value_option(options *o, int argc, char **argv, int *i, first_option
         if (strlen(names[k].name) == len && strncmp(a, names[k].name, len) == 0)
             which = k;
     if (which < 0)
-        die(EXIT_USAGE, "unknown option '%.*s' (try --help)", (int)len, a);
+        unknown_option(a, len);
     if (!value)
         die(EXIT_USAGE, "%s needs a value (try --help)", names[which].name);
     if (!eq)
@@ -402,7 +342,7 @@ static void value_option(options *o, int argc, char **argv, int *i, first_option
 static int flag_option(options *o, const char *a, first_options *first)
 {
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-        printf(usage_text, (unsigned)DS_DEFAULT_SEED);
+        print_usage();
         exit(0);
     }
     if (strcmp(a, "--version") == 0) {
@@ -430,6 +370,22 @@ static int flag_option(options *o, const char *a, first_options *first)
     return 1;
 }
 
+/* --area-fraction's R: N pi R^2 (the small kind's, and RATIO^2 R^2 for
+ * the large ones of a --mixture, counted as start.c counts them) over the
+ * box's area is ETA. */
+static double radius_of_area_fraction(const options *o)
+{
+    const double width = o->box > 0.0 ? o->box : 1000.0;
+    const double height = o->box_y > 0.0 ? o->box_y : width;
+    const double n = (double)o->n;
+    const double large = o->mixture_text ? floor(o->mix_fraction * n + 0.5) : 0.0;
+    const double weight = (n - large) + large * o->mix_ratio * o->mix_ratio;
+    const double r = sqrt(o->area_fraction * width * height / (3.14159265358979323846 * weight));
+    if (!(r > 0.0) || !isfinite(r))
+        die(EXIT_USAGE, "--area-fraction %g gives no radius for N = %zu", o->area_fraction, o->n);
+    return r;
+}
+
 options parse_args(int argc, char **argv)
 {
     options o;
@@ -455,16 +411,16 @@ options parse_args(int argc, char **argv)
         char *num_end;
         (void)strtod(a, &num_end);
         if (a[0] == '-' && a[1] != '\0' && num_end == a)
-            die(EXIT_USAGE, "unknown option '%s' (try --help)", a);
+            unknown_option(a, strlen(a));
         if (npos < 2)
             positional[npos++] = a;
         else
             die(EXIT_USAGE, "unexpected argument '%s': expected only N and R (try --help)", a);
     }
     check_combination(&o, npos, first.system, first.placement);
-    if (npos == 2) {
+    if (npos >= 1) {
         o.n = (size_t)count_arg("N", positional[0], 1, UINT64_MAX);
-        o.radius = radius_arg(positional[1]);
+        o.radius = npos == 2 ? radius_arg(positional[1]) : radius_of_area_fraction(&o);
         o.have_n = 1;
     }
     return o;

@@ -25,7 +25,10 @@ void die(int code, const char *fmt, ...)
 static const char *const command_names[][2] = {
     {"n", "N"},
     {"radius", "R"},
+    {"box", "--box"},
     {"box_y", "--box-y"},
+    {"dt", "--dt"},
+    {"speed", "--speed"},
     {"broadphase", "--broadphase"},
     {"integrator", "--integrator"},
     {"mass_rule", "--mass"},

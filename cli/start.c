@@ -59,9 +59,13 @@ void check_request(const ds_params *p, const ds_mixture *mixture, const char *fr
     if (st == DS_ERR_PLACEMENT && from)
         refuse(from, EXIT_RUN, "the library places the disks before setting them and refuses: %s",
                in_command_words(&why, words, sizeof words));
+    /* Random placement's limit is not the lattice's: say so. */
+    const int lattice_would = st == DS_ERR_PLACEMENT && p->placement == DS_PLACEMENT_RANDOM &&
+                              strstr(why.message, "random placement") != NULL;
     if (st != DS_OK)
-        refuse(from, st == DS_ERR_PLACEMENT ? EXIT_RUN : EXIT_USAGE, "%s",
-               in_command_words(&why, words, sizeof words));
+        refuse(from, st == DS_ERR_PLACEMENT ? EXIT_RUN : EXIT_USAGE, "%s%s",
+               in_command_words(&why, words, sizeof words),
+               lattice_would ? "; --lattice places them up to close packing (0.9069)" : "");
     /* The warning is about the radius (ds_params_check). */
     if (warnings) {
         ds_error warned = why;
@@ -80,6 +84,12 @@ ds_params params_of(const options *o)
     p.placement = o->placement;
     p.boundary = o->boundary;
     p.box_y = o->box_y;
+    if (o->box > 0.0)
+        p.box = o->box;
+    if (o->dt > 0.0)
+        p.dt = o->dt;
+    if (o->speed > 0.0)
+        p.speed = o->speed;
     return p;
 }
 
@@ -103,7 +113,10 @@ ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture)
     if (st == DS_ERR_PLACEMENT)
         die(EXIT_RUN, "could not place %zu disks of R = %g%s without overlap (seed %llu): %s", p->n,
             p->radius, mixture ? " and their mixture" : "", (unsigned long long)p->seed,
-            "try another --seed, or fewer or smaller disks");
+            p->placement == DS_PLACEMENT_RANDOM
+                ? "try another --seed, fewer or smaller disks, or --lattice (up to close packing, "
+                  "0.9069)"
+                : "try fewer or smaller disks");
     if (st != DS_OK)
         die(EXIT_RUN, "cannot create the simulation: %s", err.message);
     return sim;
@@ -223,6 +236,11 @@ ds_sim *start_from_frame(options *o)
     const char *path = o->from_path;
     size_t len = 0;
     char *text = read_input("--from", path, &len);
+    if (len >= 8 && memcmp(text, "DSIMSTAT", 8) == 0) { /* ds_checkpoint_save's first bytes */
+        free(text);
+        refuse(path, EXIT_RUN,
+               "it is a checkpoint, not a frame: continue its run with --restart %s", path);
+    }
     ds_frame frame;
     ds_error ferr;
     ds_status st = ds_frame_parse(text, len, &frame, &ferr);

@@ -4,14 +4,20 @@
  * man/disks.1 document the same options (tests/check_docs.sh compares
  * them with this text). */
 #define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+
 #include "cli.h"
 
-const char usage_text[] =
+/* Two strings: C99 promises a literal of 4095 characters only
+ * (-Woverlength-strings), and the help is longer. */
+static const char usage_first[] =
     "usage: disks N R [options]\n"
+    "       disks N --area-fraction ETA [options]\n"
     "       disks --restart FILE [options]\n"
     "       disks [N R] --from FRAME [options]\n"
-    "Simulates N hard disks of radius R in the box [0,1000]^2 and writes\n"
-    "frame_0000.txt, frame_0001.txt, ... with one line \"x y R\" per disk.\n"
+    "Simulates N hard disks of radius R in the box [0,L] x [0,H] (1000 x 1000\n"
+    "unless told) and writes frame_0000.txt, frame_0001.txt, ... with one line\n"
+    "\"x y R\" per disk.\n"
     "\n"
     "options:\n"
     "  --seed S             random seed, 0..2^64-1 (default %u)\n"
@@ -35,7 +41,13 @@ const char usage_text[] =
     "                       axes) or channel (periodic along x, walls at y = 0 and\n"
     "                       y = box_y)\n"
     "  --periodic           the same as --boundary periodic\n"
-    "  --box-y H            height of the box, 0 < H <= 1e9 (default 1000, square)\n"
+    "  --box L              width of the box, 0 < L <= 1e9 (default 1000)\n"
+    "  --box-y H            height of the box, 0 < H <= 1e9 (default L, square)\n"
+    "  --area-fraction ETA  instead of R: the R at which the disks cover ETA of the\n"
+    "                       box (0 < ETA < 1; with --mixture, R of the small ones)\n"
+    "  --speed V            every disk's starting speed (default 100)\n"
+    "  --dt DT              the time step, and the time between frames' steps with\n"
+    "                       the event-driven integrator (default 0.001)\n"
     "  --mixture RATIO:FRACTION\n"
     "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
     "                       radius RATIO x R, the rest R (e.g. 1.4:0.5)\n"
@@ -47,7 +59,8 @@ const char usage_text[] =
     "  --until-z Z          stop growing, and the run, once Z passes Z (1 < Z <= 1e9)\n"
     "  --measure-after T    discard the start: the pressures and the wall counts of\n"
     "                       --stats and the report are averaged from the first frame\n"
-    "                       at time >= T on\n"
+    "                       at time >= T on\n";
+static const char usage_rest[] =
     "  --thermostat KIND    a heat bath: andersen (each disk's velocity redrawn from\n"
     "                       Maxwell-Boltzmann at Poisson times: the canonical\n"
     "                       ensemble) or isokinetic (every velocity scaled to the\n"
@@ -72,3 +85,9 @@ const char usage_text[] =
     "\n"
     "exit status: 0 success, 1 run-time error (placement, I/O, a file that does not\n"
     "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n";
+
+void print_usage(void)
+{
+    printf(usage_first, (unsigned)DS_DEFAULT_SEED);
+    fputs(usage_rest, stdout);
+}

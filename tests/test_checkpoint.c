@@ -495,10 +495,11 @@ static size_t as_version_1(uint8_t *buf, size_t len)
     const size_t kinds_len = 4 + 16 * (size_t)count;
     memmove(buf + kinds, buf + kinds + kinds_len, len - kinds - kinds_len);
     len -= kinds_len;
-    /* Version 3's list of protocols (a count, 0 here) is the last thing
-     * before the checksum; version 1 had none. */
-    memmove(buf + len - 12, buf + len - 8, 8);
-    len -= 4;
+    /* Version 3's list of protocols (a count, 0 here) and its metadata (a
+     * length, 0 here) are the last things before the checksum; version 1
+     * had neither. */
+    memmove(buf + len - 16, buf + len - 8, 8);
+    len -= 8;
     buf[8] = 1;
     const uint64_t payload = len - 48;
     for (int b = 0; b < 8; ++b)
@@ -709,6 +710,64 @@ static void test_checkpoints_keep_the_broad_phase_numbers_of_2x(void **state)
     }
 }
 
+/* A caller's text goes into the checkpoint and comes back as it was; a
+ * simulation without one, or cleared, gives ""; a text past the limit is
+ * refused, the old one kept; a file whose text holds a NUL, or claims more
+ * bytes than the limit, is refused. */
+static void test_the_callers_metadata_rides_in_the_checkpoint(void **state)
+{
+    (void)state;
+    const combination c = {DS_INTEGRATOR_EVENT_DRIVEN, DS_BROADPHASE_CELLS, DS_BOUNDARY_PERIODIC};
+    ds_sim *a = make(&c);
+    assert_string_equal(ds_sim_get_metadata(a), "");
+    const char *text = "disks 1\nsteps_per_frame=1000\nout=dense\n";
+    assert_int_equal(ds_sim_set_metadata(a, text, NULL), DS_OK);
+    size_t len = 0;
+    uint8_t *buf = saved(a, &len);
+    ds_sim *b = NULL;
+    assert_int_equal(ds_checkpoint_parse(buf, len, &b, NULL), DS_OK);
+    assert_string_equal(ds_sim_get_metadata(b), text);
+    /* It goes on to the bit as without a text: the library does not read it. */
+    ds_sim_run(a, 50, NULL);
+    ds_sim_run(b, 50, NULL);
+    assert_int_equal(ds_sim_get_collision_count(a), ds_sim_get_collision_count(b));
+    /* The text is the payload's last field, before the checksum: a NUL in
+     * it, or a length past the limit, is refused. */
+    const size_t text_at = len - 8 - strlen(text);
+    buf[text_at + 3] = 0;
+    fix_checksum(buf, len);
+    ds_sim *bad = (ds_sim *)1;
+    ds_error why;
+    assert_int_equal(ds_checkpoint_parse(buf, len, &bad, &why), DS_ERR_FORMAT);
+    assert_null(bad);
+    assert_non_null(strstr(why.message, "NUL"));
+    buf[text_at + 3] = 's';
+    const uint32_t huge = DS_METADATA_MAX + 1;
+    for (int k = 0; k < 4; ++k)
+        buf[text_at - 4 + k] = (uint8_t)(huge >> (8 * k));
+    fix_checksum(buf, len);
+    assert_int_equal(ds_checkpoint_parse(buf, len, &bad, &why), DS_ERR_FORMAT);
+    /* Too long a text is refused, the old one kept; "" clears it. */
+    char *long_text = malloc(DS_METADATA_MAX + 2);
+    assert_non_null(long_text);
+    memset(long_text, 'x', DS_METADATA_MAX + 1);
+    long_text[DS_METADATA_MAX + 1] = '\0';
+    assert_int_equal(ds_sim_set_metadata(b, long_text, &why), DS_ERR_ARG);
+    assert_string_equal(why.field, "metadata");
+    assert_string_equal(ds_sim_get_metadata(b), text);
+    long_text[DS_METADATA_MAX] = '\0'; /* exactly the limit */
+    assert_int_equal(ds_sim_set_metadata(b, long_text, NULL), DS_OK);
+    assert_int_equal(strlen(ds_sim_get_metadata(b)), DS_METADATA_MAX);
+    assert_int_equal(ds_sim_set_metadata(b, "", NULL), DS_OK);
+    assert_string_equal(ds_sim_get_metadata(b), "");
+    assert_int_equal(ds_sim_set_metadata(NULL, "x", NULL), DS_ERR_ARG);
+    assert_null(ds_sim_get_metadata(NULL));
+    free(long_text);
+    free(buf);
+    ds_sim_destroy(a);
+    ds_sim_destroy(b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -727,6 +786,7 @@ int main(void)
         cmocka_unit_test(test_a_stream_without_end_is_refused_at_once),
         cmocka_unit_test(test_null_arguments_are_refused),
         cmocka_unit_test(test_checkpoints_keep_the_broad_phase_numbers_of_2x),
+        cmocka_unit_test(test_the_callers_metadata_rides_in_the_checkpoint),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

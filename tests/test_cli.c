@@ -965,6 +965,79 @@ static void test_a_killed_run_leaves_a_checkpoint_that_restarts(void **state)
     remove_tree(dir);
 }
 
+/* A restart needs nothing but its checkpoint: a run killed (SIGKILL,
+ * nothing of its own handled) after its 10th frame, with --steps-per-frame
+ * 200, --velocities, --stats, --trajectory and checkpoints every 4 frames,
+ * restarted as `disks --restart c.ckpt`, leaves the frames, the rows and
+ * the trajectory of the run that was never stopped, to the byte: the
+ * checkpoint gave the spacing, the frames still to write, the format and
+ * every path, and the outputs kept their rows up to the checkpoint's
+ * frame and dropped the later ones, which the restart wrote again. */
+static void test_a_restart_without_options_goes_on_with_the_run(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *run = "500 3 --periodic --frames 60 --steps-per-frame 200 --velocities --quiet";
+    char args[256];
+    snprintf(args, sizeof args,
+             "%s --out two --stats two.csv --trajectory two.xyz --checkpoint c.ckpt "
+             "--checkpoint-every 4",
+             run);
+    start_and_signal(dir, args, "two/frame_0010.txt", SIGKILL);
+    assert_false(exists_in(dir, "two/frame_0059.txt"));
+    must_run(dir, "--restart c.ckpt");
+    must_run(dir, "%s --out one --stats one.csv --trajectory one.xyz", run);
+    for (long k = 0; k < 60; ++k) {
+        char a[64], b[64];
+        frame_name(a, sizeof a, "one", k);
+        frame_name(b, sizeof b, "two", k);
+        assert_same_files(dir, a, b);
+    }
+    assert_false(exists_in(dir, "two/frame_0060.txt"));
+    assert_same_files(dir, "one.csv", "two.csv");
+    assert_same_files(dir, "one.xyz", "two.xyz");
+    /* The run is over: a restart now says so, and with --frames goes on. */
+    char err[512];
+    assert_int_equal(run_disks_in(dir, "--restart c.ckpt", err, sizeof err), 2); /* usage */
+    assert_non_null(strstr(err, "ended at frame 59, its last"));
+    must_run(dir, "--restart c.ckpt --frames 2");
+    assert_true(exists_in(dir, "two/frame_0061.txt"));
+    remove_tree(dir);
+}
+
+/* A checkpoint without the command's settings (written by the library for
+ * another program, or by disksim 2.x) restarts with the command's
+ * defaults, 100 steps a frame: one at step 30 is refused as no whole
+ * frame, and with --steps-per-frame 10 goes on after frame 3. */
+static void test_a_checkpoint_without_settings_restarts_with_the_defaults(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    ds_params p = ds_params_default(20, 5.0);
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    assert_int_equal(ds_sim_run(sim, 30, NULL), DS_OK);
+    char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/c.ckpt", dir);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(ds_checkpoint_save(sim, f, NULL), DS_OK);
+    fclose(f);
+    ds_sim_destroy(sim);
+    char err[512];
+    assert_int_equal(run_disks_in(dir, "--restart c.ckpt --quiet", err, sizeof err),
+                     1); /* run-time */
+    assert_non_null(strstr(err, "its step 30 is not a whole number of frames"));
+    must_run(dir, "--restart c.ckpt --steps-per-frame 10 --frames 2 --quiet --out o");
+    assert_false(exists_in(dir, "o/frame_0003.txt")); /* the checkpoint's own */
+    assert_true(exists_in(dir, "o/frame_0004.txt"));
+    assert_true(exists_in(dir, "o/frame_0005.txt"));
+    assert_false(exists_in(dir, "o/frame_0006.txt"));
+    remove_tree(dir);
+}
+
 /* --from takes a frame written with --velocities: the new run's frame 0
  * is that frame to the byte, at time 0 (a new run, not a continuation). */
 static void test_a_run_starts_from_a_frame_written_with_velocities(void **state)
@@ -1024,6 +1097,50 @@ static int last_row(char *csv, char *cols[], int most)
     for (char *c = strtok(row, ","); c && n < most; c = strtok(NULL, ","))
         cols[n++] = c;
     return n;
+}
+
+/* --box, --box-y, --speed, --dt and --area-fraction reach the
+ * simulation: 500 disks (and a 1.4:0.5 mixture) at area fraction 0.25 in a
+ * box of 600 x 450 cover 0.25 of it (to the rounding of a sum of 500
+ * areas, 1e-12), every centre inside it (frames print 6 decimals), the kinetic energy is N V^2 / 2
+ * for --speed 3 (equal masses; 1e-12 relative: the sum's rounding), and
+ * frames of 10 steps of --dt 0.01 are 0.1 apart. */
+static void test_the_box_speed_dt_and_area_fraction_options_reach_the_run(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *mixtures[2] = {"", "--mixture 1.4:0.5"};
+    for (int m = 0; m < 2; ++m) {
+        must_run(dir,
+                 "500 --area-fraction 0.25 %s --box 600 --box-y 450 --speed 3 --dt 0.01 "
+                 "--steps-per-frame 10 --frames 2 --quiet --overwrite --out o --stats s.csv",
+                 mixtures[m]);
+        size_t len;
+        char *csv = slurp_in(dir, "s.csv", &len);
+        assert_non_null(csv);
+        char *cols[16];
+        assert_int_equal(last_row(csv, cols, 16), 11);
+        assert_true(fabs(strtod(cols[1], NULL) - 0.1) < 1e-9);               /* time */
+        assert_true(fabs(strtod(cols[2], NULL) / (500 * 4.5) - 1.0) < 1e-12); /* K */
+        assert_true(fabs(strtod(cols[10], NULL) - 0.25) < 1e-12);             /* eta */
+        free(csv);
+        ds_frame f;
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/o/frame_0001.txt", dir);
+        assert_int_equal(ds_frame_read(path, &f, NULL), DS_OK);
+        assert_int_equal(f.count, 500);
+        for (size_t k = 0; k < f.count; ++k) {
+            const ds_frame_disk *d = &f.disks[k];
+            /* The time step turns a disk a step after it crossed its
+             * wall line: it may be up to V dt = 0.03 past it. */
+            const double past = 3.0 * 0.01 + 1e-6;
+            assert_true(d->x >= d->r - past && d->x <= 600 - d->r + past);
+            assert_true(d->y >= d->r - past && d->y <= 450 - d->r + past);
+        }
+        ds_frame_free(&f);
+    }
+    remove_tree(dir);
 }
 
 /* --mixture 1.4:0.3: 30 of 100 disks have radius 1.4 R, the rest R, in
@@ -1402,6 +1519,9 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_an_interrupted_run_keeps_its_trajectory_and_writes_its_checkpoint),
         cmocka_unit_test(test_a_second_signal_ends_the_run_at_once_keeping_the_trajectory),
         cmocka_unit_test(test_a_killed_run_leaves_a_checkpoint_that_restarts),
+        cmocka_unit_test(test_a_restart_without_options_goes_on_with_the_run),
+        cmocka_unit_test(test_the_box_speed_dt_and_area_fraction_options_reach_the_run),
+        cmocka_unit_test(test_a_checkpoint_without_settings_restarts_with_the_defaults),
         cmocka_unit_test(test_a_run_starts_from_a_frame_written_with_velocities),
         cmocka_unit_test(test_a_corrupted_checkpoint_is_refused_with_one_line),
         cmocka_unit_test(test_outputs_inside_a_new_out_directory_are_written),

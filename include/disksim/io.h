@@ -144,7 +144,8 @@ ds_status ds_writer_close(ds_writer *writer, ds_error *err);
  * moves between machines. This library writes version 3 and reads every
  * earlier one: 2.x wrote 2 and 1. Version 3 names a bit per disk column
  * written, adds the kinds of disk and their names after the disks, and a
- * list of protocols after the integrator's part (2.x kept a growth inside
+ * list of protocols after the integrator's part, then the caller's
+ * metadata text (ds_sim_set_metadata) (2.x kept a growth inside
  * the event-driven integrator's, which loads as the growth protocol; a
  * 2.x file loads as disks of one kind); version 1 lacks the
  * stress integral's parts (a run loaded from it starts

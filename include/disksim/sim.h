@@ -168,6 +168,22 @@ ds_status ds_sim_set_disks(ds_sim *sim, const ds_disk *disks, ds_error *err);
  * past DS_VELOCITY_MAX (err gives the factor and the largest it may be). */
 ds_status ds_sim_scale_velocities(ds_sim *sim, double factor, ds_error *err);
 
+/* ------------------------------------------------------------------ */
+/* A caller's notes                                                     */
+/* ------------------------------------------------------------------ */
+
+/* A text the caller keeps with the simulation, which checkpoints carry
+ * and give back on load (the disks command records its run's settings
+ * there, so that --restart goes on with them): up to DS_METADATA_MAX
+ * bytes, copied. "" (or NULL) clears it. DS_ERR_ARG, changing nothing,
+ * for a longer text; DS_ERR_NOMEM without memory for the copy. The
+ * library does not read it. */
+#define DS_METADATA_MAX 65536
+ds_status ds_sim_set_metadata(ds_sim *sim, const char *text, ds_error *err);
+/* The text, "" if none was set (NULL for sim NULL); valid until the next
+ * ds_sim_set_metadata or ds_sim_destroy. */
+const char *ds_sim_get_metadata(const ds_sim *sim);
+
 #ifdef __cplusplus
 }
 #endif

@@ -19,8 +19,9 @@ Sim           one simulation (help(disksim.Sim) for its arguments)
 read_frame    a frame file as arrays (Frame: positions, radii, velocities)
 load          a Sim from an exact checkpoint written by Sim.save (pickle
               and copy.copy use the same checkpoint)
-pair_histogram, local_psi6
-              g(r) pair counts and psi6 of any (n, 2) array of centres
+pair_histogram, rdf, local_psi6
+              g(r) pair counts, g(r) itself (normalised by the ideal gas in
+              the same box) and psi6 of any (n, 2) array of centres
 memory_needed the bytes a Sim would allocate
 Error         every failure the library reports; ArgumentError (also a
               ValueError), FormatError (ValueError), FileError (OSError),
@@ -58,6 +59,7 @@ from ._disksim import (
     local_psi6,
     memory_needed,
     pair_histogram,
+    rdf,
     read_frame,
 )
 
@@ -69,6 +71,7 @@ __all__ = [
     "load",
     "pair_histogram",
     "local_psi6",
+    "rdf",
     "memory_needed",
     "Frame",
     "Contacts",

@@ -146,7 +146,10 @@ PyObject *dspy_load(PyObject *module, PyObject *args, PyObject *kwargs)
 }
 
 /* pickle and copy: (disksim._disksim._restore, (type, checkpoint, params),
- * the instance's __dict__ for a subclass that has one). */
+ * the instance's __dict__ for a subclass that has one). The checkpoint is
+ * the simulation, to the byte; params only say what it was created with
+ * (for repr and Sim.params), and are compared with it, not judged again
+ * as a request to create (dspy_params_from_dict). */
 PyObject *dspy_sim_reduce(dspy_sim *self, PyObject *unused)
 {
     (void)unused;
@@ -201,6 +204,21 @@ static int keep_given(PyObject *mixture_args, PyObject *params)
     return 0;
 }
 
+/* Whether the pickle's arguments p (those not in unknown) are what the
+ * checkpoint's simulation says of itself. */
+static int same_arguments(const ds_params *p, unsigned unknown, const ds_sim *sim)
+{
+    ds_params q;
+    (void)dspy_params_of_sim(sim, &q);
+    const double height = p->box_y == 0.0 ? p->box : p->box_y;
+    return p->n == q.n && p->radius == q.radius && p->box == q.box &&
+           height == ds_sim_get_box_height(sim) && p->dt == q.dt && p->integrator == q.integrator &&
+           p->boundary == q.boundary &&
+           (p->broadphase == DS_BROADPHASE_AUTO || p->broadphase == q.broadphase) &&
+           (dspy_param_unknown(unknown, "seed") || p->seed == ds_sim_get_seed(sim)) &&
+           (dspy_param_unknown(unknown, "placement") || p->placement == ds_sim_get_placement(sim));
+}
+
 PyObject *dspy_restore(PyObject *module, PyObject *args)
 {
     (void)module;
@@ -223,7 +241,7 @@ PyObject *dspy_restore(PyObject *module, PyObject *args)
         Py_BEGIN_ALLOW_THREADS
         st = ds_checkpoint_parse(data.buf, (size_t)data.len, &sim, &err);
         Py_END_ALLOW_THREADS
-        if (st == DS_OK && (ds_sim_get_count(sim) != p.n || ds_sim_get_radius(sim) != p.radius)) {
+        if (st == DS_OK && !same_arguments(&p, unknown, sim)) {
             ds_sim_destroy(sim);
             dspy_raise(DS_ERR_ARG, NULL, "_restore: the parameters are not the checkpoint's");
         } else {

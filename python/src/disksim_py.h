@@ -7,9 +7,9 @@
  * parameters of a simulation from keyword arguments (params.c), the Sim
  * type (sim.c), its properties (properties.c), its state as arrays
  * (state.c), exact checkpoints and pickles (checkpoint.c), frames
- * (frames.c), the analysis functions (analysis.c) and ASE (ase.c). Only
- * the public header disk_sim.h is used: the module is a thin face over
- * the library.
+ * (frames.c), the analysis functions (analysis.c), ASE (ase.c) and freud
+ * and HOOMD-blue's view (freud.c). Only the public header disk_sim.h is
+ * used: the module is a thin face over the library.
  *
  * Internal names start with dspy_; the module is built with
  * -fvisibility=hidden, so none of them (nor the library's ds_*) leaves it.
@@ -169,8 +169,12 @@ PyObject *dspy_params_repr(const ds_params *params, unsigned unknown, PyObject *
  * does not (seed, speed, placement). */
 unsigned dspy_params_of_sim(const ds_sim *sim, ds_params *params);
 /* The parameters of a dict of Sim's keyword arguments (a pickle's),
- * checked as Sim checks them; unknown receives the mask of the arguments
- * the dict does not have. */
+ * converted as Sim converts them (TypeError, ArgumentError for a name or a
+ * mixture's shape) but not judged by ds_params_check: they describe the
+ * checkpoint beside them, not a simulation to create (dspy_restore
+ * compares them with it). unknown receives the mask of the arguments the
+ * dict does not have. On success the caller frees the mixture and owns
+ * mixture->args. */
 int dspy_params_from_dict(PyObject *dict, ds_params *params, dspy_mixture *mixture,
                           unsigned *unknown);
 /* Whether the argument name is in the unknown mask. */
@@ -206,6 +210,7 @@ ds_sim *dspy_sim_of(dspy_sim *self);
 PyObject *dspy_positions_property(dspy_sim *self, void *closure);
 PyObject *dspy_velocities_property(dspy_sim *self, void *closure);
 PyObject *dspy_unwrapped_property(dspy_sim *self, void *closure);
+PyObject *dspy_images_property(dspy_sim *self, void *closure);
 PyObject *dspy_sim_set_state(dspy_sim *self, PyObject *args, PyObject *kwargs);
 /* Every disk of sim (ds_sim_get_disks) into a new buffer; NULL with MemoryError. */
 ds_disk *dspy_get_all(const ds_sim *sim);
@@ -232,6 +237,8 @@ PyObject *dspy_pair_histogram(PyObject *module, PyObject *args, PyObject *kwargs
 PyObject *dspy_local_psi6(PyObject *module, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_pair_histogram(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_local_psi6(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_rdf(PyObject *module, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_rdf(dspy_sim *self, PyObject *args, PyObject *kwargs);
 
 /* checkpoint.c: exact checkpoints, files and pickles. */
 PyObject *dspy_sim_save(dspy_sim *self, PyObject *args, PyObject *kwargs);
@@ -247,9 +254,15 @@ int dspy_sim_adopt(dspy_sim *self, ds_sim *sim, const ds_params *params, unsigne
 /* ase.c */
 PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused);
 
+/* freud.c: the disks as freud and HOOMD-blue take a system. */
+PyObject *dspy_sim_freud_box(dspy_sim *self, PyObject *unused);
+PyObject *dspy_sim_freud_points(dspy_sim *self, PyObject *unused);
+extern const char dspy_freud_box_doc[], dspy_freud_points_doc[];
+
 /* The module functions' docstrings, beside their code. */
 extern const char dspy_read_frame_doc[];
 extern const char dspy_pair_histogram_doc[];
 extern const char dspy_local_psi6_doc[];
+extern const char dspy_rdf_doc[];
 
 #endif /* DISKSIM_PY_H */

@@ -28,6 +28,7 @@ static PyMethodDef module_functions[] = {
      METH_VARARGS | METH_KEYWORDS, dspy_pair_histogram_doc},
     {"local_psi6", (PyCFunction)(void (*)(void))dspy_local_psi6, METH_VARARGS | METH_KEYWORDS,
      dspy_local_psi6_doc},
+    {"rdf", (PyCFunction)(void (*)(void))dspy_rdf, METH_VARARGS | METH_KEYWORDS, dspy_rdf_doc},
     {"load", (PyCFunction)(void (*)(void))dspy_load, METH_VARARGS | METH_KEYWORDS, dspy_load_doc},
     {"_restore", (PyCFunction)dspy_restore, METH_VARARGS,
      "_restore(type, checkpoint, params, /)\n--\n\n"

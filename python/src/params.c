@@ -191,14 +191,21 @@ static int parse(PyObject *args, PyObject *kwargs, ds_params *p, dspy_mixture *m
     return 0;
 }
 
+/* The arguments converted, the defaults written out, not yet judged. */
+static int convert(PyObject *args, PyObject *kwargs, ds_params *p, dspy_mixture *mixture)
+{
+    *p = ds_params_default(0, 0.0);
+    for (size_t k = 0; k < PARAM_ARGS; ++k)
+        if (param_args[k].kind == ARG_LENGTH)
+            *(double *)member(p, &param_args[k]) = param_args[k].fallback;
+    return parse(args, kwargs, p, mixture) < 0 || dspy_mixture_convert(mixture, p->n) < 0 ? -1 : 0;
+}
+
 int dspy_params_from_args(PyObject *args, PyObject *kwargs, ds_params *params,
                           dspy_mixture *mixture, char warning[256])
 {
-    ds_params p = ds_params_default(0, 0.0);
-    for (size_t k = 0; k < PARAM_ARGS; ++k)
-        if (param_args[k].kind == ARG_LENGTH)
-            *(double *)member(&p, &param_args[k]) = param_args[k].fallback;
-    if (parse(args, kwargs, &p, mixture) < 0 || dspy_mixture_convert(mixture, p.n) < 0)
+    ds_params p;
+    if (convert(args, kwargs, &p, mixture) < 0)
         return -1;
     unsigned warnings = 0;
     ds_error err;
@@ -357,8 +364,14 @@ unsigned dspy_param_unknown(unsigned unknown, const char *name)
 
 int dspy_params_from_dict(PyObject *dict, ds_params *p, dspy_mixture *mixture, unsigned *unknown)
 {
+    /* Converted, not judged as a request to create: what a pickle's
+     * arguments describe is its checkpoint, which the library checks as it
+     * parses it. Judged as a request, a dict without placement (a loaded
+     * Sim's) was a random placement, which the library refuses above area
+     * fraction 0.54 for more than 1000 disks, and a loaded mixture's was
+     * disks of the reference radius alone: copies of dense Sims failed. */
     PyObject *empty = PyTuple_New(0);
-    const int r = empty ? dspy_params_from_args(empty, dict, p, mixture, NULL) : -1;
+    const int r = empty ? convert(empty, dict, p, mixture) : -1;
     Py_XDECREF(empty);
     *unknown = 0;
     for (size_t k = 0; r == 0 && k < PARAM_ARGS; ++k)

@@ -250,6 +250,14 @@ PyGetSetDef dspy_sim_getset[] = {
      "way since it was placed (set_state starts them again), so displacements over\n"
      "any time are differences of these; with walls, the positions.",
      NULL},
+    {"images", (getter)dspy_images_property, NULL,
+     "The periodic image counts as a new (n, 2) int32 array, row i disk i: how many\n"
+     "times disk i has crossed the box along x and along y since it was placed (+1\n"
+     "leaving through the far edge, -1 through 0; LAMMPS' ix iy, GSD's\n"
+     "particles/image), so unwrapped = positions + images * (box, box_y). set_state\n"
+     "sets them to 0; checkpoints and pickles carry them; with walls (and along a\n"
+     "channel's y) they are 0. They wrap past 2**31 crossings.",
+     NULL},
     REAL(kinetic_energy, "Kinetic energy, the sum of m v^2 / 2 (masses 1 unless a mixture's)."),
     {"momentum", (getter)momentum_property, NULL,
      "Total momentum (px, py), the sum of m v. Pairs conserve it; walls do not.", NULL},
@@ -311,7 +319,8 @@ PyGetSetDef dspy_sim_getset[] = {
     {"closed", (getter)closed_property, NULL, "Whether close() has freed this Sim.", NULL},
     {"running", (getter)running_property, NULL,
      "Whether a thread is inside this Sim's run() (or step(), set_state(),\n"
-     "write_frame()) now. Never raises.",
+     "write_frame()) now; not while run() calls its callback, when the Sim is free.\n"
+     "Never raises.",
      NULL},
     {NULL, NULL, NULL, NULL, NULL},
 };

@@ -6,6 +6,7 @@
 
 #include "disksim_py.h" /* first: Python.h sets the feature macros */
 
+#include <math.h>
 #include <string.h>
 
 /* run() gives the GIL back between chunks of steps, to take Ctrl-C
@@ -282,17 +283,111 @@ static int advance(dspy_sim *self, ds_sim *sim, uint64_t steps)
     return 0;
 }
 
+/* A time within this fraction of a step below until counts as reaching it:
+ * until / dt carries the rounding of dt (0.001 is not a binary fraction),
+ * and run(until=1.0) with dt = 0.001 should be 1000 steps, not 1001. */
+#define UNTIL_SLACK 1e-9
+
+/* The step count at which the time, steps * dt, first reaches until (up to
+ * UNTIL_SLACK of a step); 0 for an until at or before 0. */
+static int steps_until(double until, double dt, uint64_t *target)
+{
+    if (!isfinite(until)) {
+        dspy_raisef(DS_ERR_ARG, "until", "until = %g must be a finite time", until);
+        return -1;
+    }
+    const double k = ceil(until / dt - UNTIL_SLACK);
+    if (!(k < 18446744073709551616.0)) { /* 2^64 */
+        dspy_raisef(DS_ERR_ARG, "until",
+                    "until = %g is beyond 2**64 - 1 steps of dt = %g from time 0", until, dt);
+        return -1;
+    }
+    *target = k > 0.0 ? (uint64_t)k : 0;
+    return 0;
+}
+
+/* Calls callback(self) at each step count that is a multiple of every,
+ * until the step count reaches target. Between calls the Sim runs as
+ * advance() runs it (the GIL released, signals taken); during a call it
+ * is free, so the callback can read it, change it or even run it: the
+ * target is a step count, not a number of steps left. A callback that
+ * returns a false value other than None stops the run; one that raises
+ * stops it with its exception. The steps done stay done either way. */
+static int advance_calling(dspy_sim *self, ds_sim *sim, uint64_t target, PyObject *callback,
+                           uint64_t every)
+{
+    for (uint64_t now = ds_sim_get_steps(sim); now < target; now = ds_sim_get_steps(sim)) {
+        const uint64_t to_call = every - now % every, left = target - now;
+        if (advance(self, sim, to_call < left ? to_call : left) < 0)
+            return -1;
+        if (ds_sim_get_steps(sim) % every != 0)
+            continue; /* the target came first */
+        PyObject *said = PyObject_CallOneArg(callback, (PyObject *)self);
+        if (!said)
+            return -1;
+        const int go_on = said == Py_None ? 1 : PyObject_IsTrue(said);
+        Py_DECREF(said);
+        if (go_on <= 0)
+            return go_on;
+        /* The callback may have closed this Sim, re-created it, or left it
+         * running in another thread: each refuses to go on. */
+        ds_sim *again = dspy_sim_of(self);
+        if (!again)
+            return -1;
+        if (again != sim) {
+            PyErr_SetString(dspy_Error,
+                            "run(): the callback re-created this Sim (__init__): the run stops");
+            return -1;
+        }
+    }
+    return 0;
+}
+
 static PyObject *sim_run(dspy_sim *self, PyObject *args, PyObject *kwargs)
 {
-    static char *keywords[] = {"steps", NULL};
-    PyObject *steps_obj;
-    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "O:run", keywords, &steps_obj))
+    static char *keywords[] = {"steps", "until", "callback", "every", NULL};
+    PyObject *steps_obj = Py_None, *until_obj = Py_None, *callback = Py_None, *every_obj = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "|O$OOO:run", keywords, &steps_obj, &until_obj,
+                                     &callback, &every_obj))
         return NULL;
-    uint64_t steps;
-    if (dspy_uint64_arg(steps_obj, "steps", 0, &steps) < 0)
+    if ((steps_obj == Py_None) == (until_obj == Py_None)) {
+        PyErr_SetString(PyExc_TypeError, steps_obj == Py_None
+                                             ? "run() needs steps or until"
+                                             : "run() takes steps or until, not both");
         return NULL;
+    }
+    if (callback != Py_None && !PyCallable_Check(callback)) {
+        PyErr_Format(PyExc_TypeError, "callback must be callable, not %.100s",
+                     Py_TYPE(callback)->tp_name);
+        return NULL;
+    }
+    uint64_t steps = 0, every = 1;
+    double until = 0.0;
+    if ((steps_obj != Py_None && dspy_uint64_arg(steps_obj, "steps", 0, &steps) < 0) ||
+        (until_obj != Py_None && dspy_double_arg(until_obj, "until", &until) < 0) ||
+        (every_obj && dspy_uint64_arg(every_obj, "every", 0, &every) < 0))
+        return NULL;
+    if (every == 0)
+        return dspy_raise(DS_ERR_ARG, "every", "every = 0 must be >= 1 (steps between calls)");
+    /* Fetched after the conversions, which may run Python code. */
     ds_sim *sim = dspy_sim_of(self);
-    if (!sim || advance(self, sim, steps) < 0)
+    if (!sim)
+        return NULL;
+    const uint64_t now = ds_sim_get_steps(sim);
+    uint64_t target;
+    if (until_obj != Py_None) {
+        if (steps_until(until, ds_sim_get_dt(sim), &target) < 0)
+            return NULL;
+        steps = target > now ? target - now : 0;
+    } else if (steps > UINT64_MAX - now) {
+        return dspy_raisef(DS_ERR_ARG, "steps",
+                           "steps = %llu would take the step count, %llu, past 2**64 - 1",
+                           (unsigned long long)steps, (unsigned long long)now);
+    }
+    target = now + steps;
+    const int r = callback == Py_None ? advance(self, sim, steps)
+                                      : advance_calling(self, sim, target, callback, every);
+    if (r < 0)
         return NULL;
     Py_RETURN_NONE;
 }
@@ -316,6 +411,24 @@ static PyObject *sim_reset_observables(dspy_sim *self, PyObject *unused)
     Py_RETURN_NONE;
 }
 
+/* len(s) is s.n, as len() of a freud or HOOMD system is its particles'. */
+static Py_ssize_t sim_length(dspy_sim *self)
+{
+    ds_sim *sim = dspy_sim_of(self);
+    return sim ? (Py_ssize_t)ds_sim_get_count(sim) : -1;
+}
+
+/* Truth is not length: a Sim is true, closed or not, as any object is
+ * (with __len__ alone, `if s:` would raise for a closed one). */
+static int sim_bool(dspy_sim *self)
+{
+    (void)self;
+    return 1;
+}
+
+static PySequenceMethods sim_as_sequence = {.sq_length = (lenfunc)sim_length};
+static PyNumberMethods sim_as_number = {.nb_bool = (inquiry)sim_bool};
+
 /* ---------------------------------------------------------------- methods */
 
 static PyMethodDef sim_methods[] = {
@@ -326,11 +439,23 @@ static PyMethodDef sim_methods[] = {
      "event inside the interval in time order, then show every disk at the new time.\n"
      "Releases the GIL."},
     {"run", (PyCFunction)(void (*)(void))sim_run, METH_VARARGS | METH_KEYWORDS,
-     "run($self, /, steps)\n--\n\n"
+     "run($self, /, steps=None, *, until=None, callback=None, every=1)\n--\n\n"
      "Advance by steps steps (an int >= 0; 0 does nothing): the same, to the bit, as\n"
-     "calling step() that many times. Releases the GIL, so threads with one Sim each\n"
-     "run in parallel; Ctrl-C (KeyboardInterrupt) stops it between steps, keeping\n"
-     "the steps done."},
+     "calling step() that many times. Or, with until instead of steps, advance to\n"
+     "the first step at which the time (steps * dt) reaches until, a time short of it\n"
+     "by less than a billionth of a step counting as reaching it (so until=1.0 with\n"
+     "dt=0.001 is step 1000, whatever the rounding of 0.001); nothing if the time is\n"
+     "already there. Releases the GIL, so threads with one Sim each run in parallel;\n"
+     "Ctrl-C (KeyboardInterrupt) stops it between steps, keeping the steps done.\n"
+     "\n"
+     "callback(sim) is called after every step that brings the step count to a\n"
+     "multiple of every (an int >= 1), as HOOMD's periodic trigger: run(1000,\n"
+     "callback=f, every=100) calls f 10 times from step 0, and the same again\n"
+     "from step 1000. The Sim is free while it runs (running is False): it can\n"
+     "read the Sim, change it (set_state, scale_velocities) or save it. It stops\n"
+     "the run by returning a false value other than None (False, 0), or by raising,\n"
+     "the exception passing through run(); the steps done stay done. Calls cut the\n"
+     "run into pieces, which give the same disks to the bit as one run."},
     {"reset_observables", (PyCFunction)sim_reset_observables, METH_NOARGS,
      "reset_observables($self, /)\n--\n\n"
      "Zero the wall impulse, wall count, collision virial and pressure clock (not\n"
@@ -369,6 +494,13 @@ static PyMethodDef sim_methods[] = {
      "pair_histogram($self, /, dr, bins)\n--\n\n"
      "disksim.pair_histogram() of this Sim's disks in its box and boundary: the\n"
      "number of pairs at each distance, in bins of width dr, for g(r)."},
+    {"rdf", (PyCFunction)(void (*)(void))dspy_sim_rdf, METH_VARARGS | METH_KEYWORDS,
+     "rdf($self, /, r_max, bins)\n--\n\n"
+     "disksim.rdf() of this Sim's disks in its box and boundary: (r, g), g(r) in bins\n"
+     "of width r_max / bins, normalised by an ideal gas of n centres in the same box\n"
+     "(with walls, in the rectangle the centres reach, box - 2R by box_y - 2R, with\n"
+     "the partners a wall takes away; a mixture's R is its mean radius, which is\n"
+     "exact to first order in the radii over the box)."},
     {"local_psi6", (PyCFunction)(void (*)(void))dspy_sim_local_psi6, METH_VARARGS | METH_KEYWORDS,
      "local_psi6($self, /, cutoff=None)\n--\n\n"
      "disksim.local_psi6() of this Sim's disks in its box and boundary: psi6 of\n"
@@ -392,6 +524,8 @@ static PyMethodDef sim_methods[] = {
      "periodic box, else all False, arrays 'radius' (n,) and 'velo' (n, 3), info\n"
      "'Time'; dummy atoms 'X' (atomic number 0, mass 1). ImportError without ASE\n"
      "(Debian: python3-ase)."},
+    {"freud_box", (PyCFunction)dspy_sim_freud_box, METH_NOARGS, dspy_freud_box_doc},
+    {"freud_points", (PyCFunction)dspy_sim_freud_points, METH_NOARGS, dspy_freud_points_doc},
     {"close", (PyCFunction)sim_close, METH_NOARGS,
      "close($self, /)\n--\n\n"
      "Free the simulation's memory now; afterwards every use raises Error. Calling\n"
@@ -407,6 +541,8 @@ PyTypeObject dspy_SimType = {
     .tp_basicsize = sizeof(dspy_sim),
     .tp_dealloc = (destructor)sim_dealloc,
     .tp_repr = (reprfunc)sim_repr,
+    .tp_as_sequence = &sim_as_sequence,
+    .tp_as_number = &sim_as_number,
     .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE,
     .tp_doc = sim_doc,
     .tp_methods = sim_methods,

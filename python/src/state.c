@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* A Sim's state as arrays: positions, velocities and unwrapped centres out
- * (ds_sim_get_disks, ds_sim_get_unwrapped, a fresh copy each time), and set_state in
+/* A Sim's state as arrays: positions, velocities, unwrapped centres and
+ * image counts out (ds_sim_get_disks, ds_sim_get_unwrapped,
+ * ds_sim_get_images, a fresh copy each time), and set_state in
  * (ds_sim_set_disks, which checks the whole state before anything changes).
  *
  * Converting an argument can run Python code (an object's __array__ or
@@ -66,6 +67,22 @@ PyObject *dspy_unwrapped_property(dspy_sim *self, void *closure)
     PyArrayObject *a = dspy_new_xy(ds_sim_get_count(sim));
     if (a)
         ds_sim_get_unwrapped(sim, (double *)PyArray_DATA(a), NULL);
+    return (PyObject *)a;
+}
+
+PyObject *dspy_images_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    npy_intp dims[2] = {(npy_intp)ds_sim_get_count(sim), 2};
+    PyArrayObject *a = (PyArrayObject *)PyArray_SimpleNew(2, dims, NPY_INT32);
+    ds_error err;
+    if (a && ds_sim_get_images(sim, (int32_t *)PyArray_DATA(a), &err) != DS_OK) {
+        Py_DECREF(a);
+        return dspy_raise_error(&err);
+    }
     return (PyObject *)a;
 }
 

@@ -24,7 +24,7 @@ def test_everything_public_has_a_docstring():
 
 def test_help_reads_like_the_header():
     text = pydoc.render_doc(disksim.Sim, renderer=pydoc.plaintext)
-    for words in ("N hard disks of one radius", "'event': exact event-driven", "run(self, /, steps)",
+    for words in ("N hard disks of one radius", "'event': exact event-driven", "run(self, /, steps=None, *, until=None, callback=None, every=1)",
                   "virial_pressure", "Pressure from the collision virial", "releases the GIL",
                   "species     [(count, radius), ...]", "mass        the rule for the masses",
                   "set_growth(self, /, rate, until_eta=0.0, until_z=0.0)",
@@ -107,6 +107,16 @@ def test_a_sim_is_a_context_manager():
     with disksim.Sim(10, 1) as s:
         s.run(3)
     assert s.closed
+
+
+def test_len_of_a_sim_is_its_number_of_disks_and_a_sim_is_always_true():
+    s = disksim.Sim(400, 5)
+    assert len(s) == s.n == 400
+    assert len(disksim.Sim(7, 5, species=[(3, 5), (4, 7)])) == 7
+    s.close()
+    with pytest.raises(disksim.Error, match="closed"):
+        len(s)  # as s.n
+    assert s  # truth is not length: `if s:` never raises
 
 
 def test_sim_can_be_subclassed():

@@ -271,13 +271,14 @@ def test_a_closed_sim_refuses_everything_and_says_so():
              lambda: s.to_ase(), lambda: s.reset_observables(), lambda: s.pair_histogram(1, 2),
              lambda: s.local_psi6(), lambda: s.params, lambda: s.__enter__(),
              lambda: s.save("x"), lambda: s.__reduce__(), lambda: s.set_growth(1.0),
-             lambda: s.scale_velocities(2.0), lambda: s.contacts()]
+             lambda: s.scale_velocities(2.0), lambda: s.contacts(), lambda: s.rdf(10.0, 2),
+             lambda: s.freud_box(), lambda: s.freud_points(), lambda: len(s)]
     calls += [lambda name=name: getattr(s, name) for name in (
         "n", "radius", "box", "box_y", "dt", "time", "steps", "integrator", "boundary",
         "placement", "broadphase", "kinetic_energy", "momentum", "pressure", "virial_pressure",
         "psi6", "collision_count", "wall_count", "wall_impulse", "pairs_tested",
         "collision_seconds", "radii", "masses", "radius_max", "area_fraction", "growth_state",
-        "growth_z")]
+        "growth_z", "images", "unwrapped")]
     for call in calls:
         with pytest.raises(Error, match="this Sim is closed"):
             call()

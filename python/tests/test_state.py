@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: MIT
 """The state as arrays: copies out, copies in, checked before anything
 changes."""
+import pickle
+
 import numpy as np
 import pytest
 
@@ -125,6 +127,36 @@ def test_unwrapped_centres_follow_a_free_disk_across_the_seams():
         assert np.array_equal(u[1], [5.0, 2.5])
         assert 0 <= s.positions[0, 0] < 10 and 0 <= s.positions[0, 1] < 10
         assert s.collision_count == 0
+
+
+def test_image_counts_are_the_crossings_of_each_disk_and_unwrap_it():
+    # The free disk above, x from 8 at speed 1 in a box of 10: it crosses x
+    # = 10 at t = 2, 12 and 22 (images +3 at t = 25); y from 7.5 at -0.5
+    # crosses y = 0 at t = 15 (images -1). The other rests.
+    for integrator in ("step", "event"):
+        s = disksim.Sim(2, 0.5, box=10, boundary="periodic", integrator=integrator,
+                        dt=0.01, speed=1)
+        s.set_state([[8.0, 7.5], [5.0, 2.5]], [[1.0, -0.5], [0.0, 0.0]])
+        assert np.array_equal(s.images, [[0, 0], [0, 0]])
+        s.run(2500)
+        images = s.images
+        assert images.dtype == np.int32 and images.shape == (2, 2)
+        assert np.array_equal(images, [[3, -1], [0, 0]])
+        # unwrapped is position + images * box, one rounding of the sum
+        assert np.array_equal(s.unwrapped, s.positions + images * [s.box, s.box_y])
+        t = pickle.loads(pickle.dumps(s))  # checkpoints carry them
+        assert np.array_equal(t.images, images)
+        s.set_state(s.positions)  # a new state starts in the box
+        assert not s.images.any()
+
+
+def test_image_counts_are_zero_with_walls_and_along_a_channels_y():
+    s = disksim.Sim(100, 5)
+    s.run(300)
+    assert np.array_equal(s.images, np.zeros((100, 2), np.int32))
+    c = disksim.Sim(100, 5, boundary="channel", speed=1000)
+    c.run(2000)  # 2 time units: a disk crosses the box twice at speed 1000
+    assert c.images[:, 0].any() and not c.images[:, 1].any()
 
 
 def test_unwrapped_is_the_position_with_walls():

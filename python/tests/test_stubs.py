@@ -91,10 +91,14 @@ def test_the_stub_has_every_public_name_of_the_module_and_no_other():
 
 def test_the_stub_has_every_method_and_property_of_sim_and_no_other():
     methods, properties = members(stub_class("Sim"))
-    # The method table (step, run, ... and __enter__, __exit__, __reduce__)
-    # and the getters: a property typed as a method would be called by a
-    # type checker's user, and fail.
-    assert set(methods) - {"__init__"} == sim_runtime_names(types.MethodDescriptorType)
+    # The method table (step, run, ... and __enter__, __exit__, __reduce__),
+    # the type's slots that a type checker must know of (__len__, __bool__:
+    # len(s) and truth; __init__ is declared, __repr__ is object's) and the
+    # getters: a property typed as a method would be called by a type
+    # checker's user, and fail.
+    slots = sim_runtime_names(types.WrapperDescriptorType) - {"__init__", "__repr__"}
+    assert slots == {"__len__", "__bool__"}
+    assert set(methods) - {"__init__"} == sim_runtime_names(types.MethodDescriptorType) | slots
     assert set(properties) == sim_runtime_names(types.GetSetDescriptorType)
     assert public(methods) | public(properties) == public(dir(disksim.Sim))
 

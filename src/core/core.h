@@ -112,6 +112,8 @@ struct ds_sim {
      * disk's kind is its column kind (absent: 0). */
     size_t kind_count;
     char (*kind_names)[DS_KIND_NAME_MAX];
+    /* A caller's text (ds_sim_set_metadata), NULL for none. */
+    char *metadata;
     /* What acts on the run from outside its dynamics (core/protocol.h):
      * installed by their setters, their hooks called by the integrator. */
     ds_protocols protocols;

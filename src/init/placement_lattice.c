@@ -88,9 +88,7 @@ static lattice best_lattice(size_t n, double radius, const ds_box *box)
     const uint64_t most = rows_wanted < (double)n + 1.0 ? (uint64_t)rows_wanted : (uint64_t)n + 1;
     for (uint64_t rows = py ? 2 : 1; rows <= most && rows <= n + 1; rows += py ? 2 : 1) {
         const uint64_t columns = (n + rows - 1) / rows;
-        lattice l;
-        l.columns = columns;
-        l.rows = rows;
+        lattice l = {columns, rows, 0.0, 0.0, 0.0, 0.0, 0.0};
         site_spacing(&l, box, radius);
         l.closest = closest_sites(l.dx, l.dy, columns, rows, px, py);
         if (l.closest > best.closest ||

@@ -99,6 +99,7 @@ static void put_payload(const ds_sim *sim, ds_state_writer *w)
     ds_kinds_save(sim, w);
     sim->integrator->save(sim, w);
     ds_protocols_save(sim, w);
+    ds_metadata_save(sim, w);
 }
 
 /* The whole file into w: header, payload, checksum. */
@@ -432,6 +433,8 @@ ds_status ds_checkpoint_parse(const void *data, size_t len, ds_sim **out, ds_err
         st = ds_kinds_load(sim, &r, version, err);
     if (st == DS_OK)
         st = load_parts(sim, &r, version, err);
+    if (st == DS_OK)
+        st = ds_metadata_load(sim, &r, version, err);
     if (st == DS_OK && ds_left(&r) != 0)
         st = ds_state_refuse(err, DS_ERR_FORMAT, "%zu bytes of the state were not read",
                              ds_left(&r));

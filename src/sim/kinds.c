@@ -73,7 +73,8 @@ ds_status ds_kinds_check(const ds_mixture *m, ds_error *err)
 ds_status ds_kinds_make(ds_sim *sim, const ds_mixture *m)
 {
     const size_t count = m && m->kinds ? m->species : 1;
-    char(*names)[DS_KIND_NAME_MAX] = malloc(count * sizeof *names);
+    /* Zeroed past each name: checkpoints write all 16 bytes. */
+    char(*names)[DS_KIND_NAME_MAX] = calloc(count, sizeof *names);
     if (!names)
         return DS_ERR_NOMEM;
     for (size_t k = 0; k < count; ++k) {

@@ -102,6 +102,7 @@ void ds_sim_destroy(ds_sim *sim)
         sim->integrator->destroy(sim);
     ds_disks_free(&sim->disks);
     free(sim->kind_names);
+    free(sim->metadata);
     free(sim);
 }
 

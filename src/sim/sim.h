@@ -21,6 +21,11 @@ ds_status ds_kinds_make(ds_sim *sim, const ds_mixture *m);
 void ds_kinds_save(const ds_sim *sim, ds_state_writer *w);
 ds_status ds_kinds_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_error *err);
 
+/* metadata.c: the caller's text in a checkpoint (format 3: a length and
+ * the bytes, after the protocols; earlier formats had none). */
+void ds_metadata_save(const ds_sim *sim, ds_state_writer *w);
+ds_status ds_metadata_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_error *err);
+
 /* The world params describe, defaults resolved (broadphase as given,
  * maybe DS_BROADPHASE_AUTO). No checks. */
 ds_world ds_world_of(const ds_params *params);
