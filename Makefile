@@ -226,9 +226,10 @@ $(OUT)tools/pressure: tools/analysis/pressure.c tools/analysis/analysis_util.h $
 # tools/gr: g(r) of one frame file (public API only), plotted by
 # tools/analysis/plot_gr.plt. Built by `make`.
 all: $(OUT)tools/gr
-$(OUT)tools/gr: tools/analysis/gr.c $(LIB) $(PUB_HDR)
+$(OUT)tools/gr: tools/analysis/gr.c $(BUILD)/tools/frames_json.o $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
-	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(WARN) -Iinclude -Itools/common $(CFLAGS) $(LDFLAGS) -o $@ $< \
+	    $(BUILD)/tools/frames_json.o $(LIB) $(LDLIBS)
 
 # tools/transport: diffusion, mean-squared displacement and velocity
 # autocorrelation of one periodic system (public API only), plotted by
@@ -413,12 +414,12 @@ RENDER_BACKENDS := $(if $(HAVE_PKG_CONFIG),$(strip $(foreach b,osmesa egl,$(if $
 BACKEND ?= $(firstword $(RENDER_BACKENDS))
 RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
 RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png \
-                 render_movie
+                 render_movie render_request render_inputs render_xyz frames_json
 RENDER_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null))
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)
 .SECONDARY: $(RENDER_OBJ) # kept between builds, not intermediate
-RENDER_DEPS := $(PUB_HDR) $(wildcard tools/renderer/*.h)
+RENDER_DEPS := $(PUB_HDR) $(wildcard tools/renderer/*.h) tools/common/frames_json.h
 
 .PHONY: render render-skipped clean-render
 ifneq ($(RENDER_BACKENDS),)
@@ -432,7 +433,12 @@ endif
 
 $(BUILD)/tools/%.o: tools/renderer/%.c $(RENDER_DEPS)
 	@mkdir -p $(BUILD)/tools
-	$(CC) $(WARN) -Iinclude $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
+	$(CC) $(WARN) -Iinclude -Itools/common $(RENDER_CFLAGS) $(CFLAGS) -c $< -o $@
+
+# What the tools share: frames.json's reader (render, gr).
+$(BUILD)/tools/frames_json.o: tools/common/frames_json.c tools/common/frames_json.h $(PUB_HDR)
+	@mkdir -p $(BUILD)/tools
+	$(CC) $(WARN) -Iinclude $(CFLAGS) -c $< -o $@
 
 $(BUILD)/tools/render-%: $(RENDER_COMMON:%=$(BUILD)/tools/%.o) $(BUILD)/tools/render_%.o $(LIB)
 	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(shell $(PKG_CONFIG) --libs $(RENDER_PKGS_$*)) -lpthread $(LDLIBS)
@@ -457,12 +463,13 @@ render-skipped:
 # The test runs each backend's binary (their paths are compiled in) and
 # links the GL-free parts (colour map, layout) to compute expected pixels.
 $(BUILD)/tests/test_render: tests/test_render.c tests/test_util.h $(LIB) $(RENDER_DEPS) \
-                            $(BUILD)/tools/render_colormap.o $(BUILD)/tools/render_layout.o
+                            $(BUILD)/tools/render_colormap.o $(BUILD)/tools/render_layout.o \
+                            $(BUILD)/tools/render_font.o
 	@mkdir -p $(BUILD)/tests
 	$(CC) $(WARN) $(CPPFLAGS) -Itools/renderer $(RENDER_CFLAGS) $(CMOCKA_CFLAGS) $(CFLAGS) $(LDFLAGS) \
 	    $(foreach b,$(RENDER_BACKENDS),-DRENDER_$(b)='"$(BUILD)/tools/render-$(b)"') \
 	    -DRENDER_DISKS='"./$(DISKS)"' -o $@ $< $(BUILD)/tools/render_colormap.o \
-	    $(BUILD)/tools/render_layout.o $(LIB) $(CMOCKA_LIBS) \
+	    $(BUILD)/tools/render_layout.o $(BUILD)/tools/render_font.o $(LIB) $(CMOCKA_LIBS) \
 	    $(shell $(PKG_CONFIG) --libs libpng 2>/dev/null) $(LDLIBS)
 
 # ---------------------------------------------------------------- python

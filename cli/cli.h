@@ -2,11 +2,11 @@
 /* The disks command's one header: what its files share. options.c reads
  * the command line, usage.c says what it takes (--help); start.c checks
  * where the run starts (a new request, --restart's checkpoint, --from's
- * frame); outputs.c checks every path and makes --out; files.c writes
- * files so that no partial one is ever seen, and decides what a signal
- * does; checkpoint.c writes checkpoints; report.c says what went wrong;
- * disks.c runs. The command uses the
- * library only through disk_sim.h, and only it prints. */
+ * frame); outputs.c checks every path and makes --out; frames_json.c
+ * describes the run beside its frames; files.c writes files so that no
+ * partial one is ever seen, and decides what a signal does; checkpoint.c
+ * writes checkpoints; report.c says what went wrong; disks.c runs. The
+ * command uses the library only through disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H
 
@@ -31,6 +31,7 @@ typedef struct options {
     const char *out_dir;
     const char *stats_path;
     const char *trajectory_path;
+    const char *gsd_path;        /* --gsd FILE, or NULL */
     const char *checkpoint_path; /* NULL: none */
     long checkpoint_every;       /* 0: only at the end */
     const char *restart_path;    /* --restart FILE, or NULL */
@@ -66,9 +67,10 @@ typedef struct options {
     /* Which of the run's settings the command line gave: a restart takes
      * the others from its checkpoint (run_settings.c). */
     int frames_given, steps_given, out_given;
-    /* --stats, --trajectory: the file the checkpointed run wrote, which the
-     * restart goes on writing (its rows up to the checkpoint kept). */
-    int stats_continues, trajectory_continues;
+    /* --stats, --trajectory, --gsd: the file the checkpointed run wrote,
+     * which the restart goes on writing (its rows up to the checkpoint
+     * kept). */
+    int stats_continues, trajectory_continues, gsd_continues;
 } options;
 
 /* gcc and clang check die's format and know it does not return. */
@@ -137,8 +139,23 @@ long resume_run_settings(options *o, const ds_sim *sim);
 void check_paths(const options *o);
 int frame_number(const char *base); /* k of frame_kkkk.txt, else -1 */
 void make_out_dir(const char *path);
-void check_other_runs(const options *o, long last);
-void remove_other_runs(const options *o, long last);
+/* The frames in --out that are another run's: those numbered after last,
+ * or all of them when its frames.json describes another run (json is this
+ * run's). Refused unless --overwrite; a restart (first > 0) keeps the
+ * frames before first, so their frames.json must be its run's. Returns
+ * whether frames.json is another run's, for remove_other_runs. */
+int check_other_runs(const options *o, long first, long last, const char *json);
+void remove_other_runs(const options *o, long last, int other_json);
+
+/* frames_json.c: the run's description beside its frames, frames.json:
+ * its text (jammed_frame >= 0: the frame at which growth jammed, at
+ * ds_sim_get_time), written atomically into --out; and an existing
+ * frames.json in dir compared with json: 0 if none or the same run's, 1
+ * another run's, 2 not a disksim one, with why ("has box [1000, 500],
+ * this run's [1000, 1000]"). */
+char *frames_json_text(const ds_sim *sim, const options *o, long jammed_frame);
+void frames_json_write(const options *o, const char *json);
+int frames_json_compare(const char *dir, const char *json, char *why, size_t cap);
 
 /* files.c: signals */
 void catch_signals(void);
@@ -163,7 +180,7 @@ int write_file_atomic(const char *dir, const char *name, const void *data, size_
 int probe_dir(const char *dir, const char *name); /* 0, or why a file cannot be made there */
 int is_special_file(const char *path);
 int write_file_in_place(const char *path, const void *data, size_t len, const char **why);
-/* files.c: files that grow frame by frame (--stats, --trajectory) */
+/* files.c: files that grow frame by frame (--stats, --trajectory, --gsd) */
 typedef struct output {
     const char *option, *path;
     FILE *f;
@@ -179,9 +196,12 @@ void output_publish(output *out);
 
 /* carry_over.c: a restart going on with the --stats or --trajectory file
  * its run wrote copies its rows or frames up to frame `last` into out
- * (just opened); 1 if there was a file to go on with, 0 if none. */
+ * (just opened); 1 if there was a file to go on with, 0 if none. The
+ * --gsd file is copied whole, its frames after sim's step taken out of
+ * its index; its writer then goes on with it. */
 int carry_over_stats(output *out, const char *header, long last);
 int carry_over_trajectory(output *out, const ds_sim *sim, uint64_t steps_per_frame, long last);
+int carry_over_gsd(output *out, const ds_sim *sim);
 
 /* checkpoint.c */
 void checkpoint_write(const ds_sim *sim, const char *path);

@@ -50,8 +50,10 @@ typedef struct run {
     long first, last; /* the frames this run writes */
     char *frame_buf;
     size_t frame_cap;
-    output stats, trajectory;
+    char *json; /* frames.json, written with the first frame */
+    output stats, trajectory, gsd_file;
     ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
+    ds_writer *gsd;        /* --gsd's, into gsd_file.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
     long jammed_frame;     /* the frame in which growth jammed, -1 */
     progress pr;
@@ -78,9 +80,20 @@ static void stats_row(output *out, long frame, const ds_sim *sim)
     output_write(out, row, (size_t)l);
 }
 
-/* The frame file, its trajectory frame and its stats row, with the
- * signals held: at any moment the three agree. */
-static void emit_frame(run *r, long frame)
+/* A trajectory's frame: a write that fails ends the run. */
+static void trajectory_frame(ds_writer *w, const output *out, const ds_sim *sim)
+{
+    errno = 0;
+    if (w && ds_writer_write(w, sim, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+}
+
+/* The frame file, its trajectory frames and its stats row, with the
+ * signals held: at any moment they agree. The run's first frame puts
+ * frames.json beside it, and so does a frame at which growth jammed (its
+ * time is off the frames' spacing). */
+static void emit_frame(run *r, long frame, int jammed)
 {
     const options *o = r->o;
     sigset_t old;
@@ -94,12 +107,14 @@ static void emit_frame(run *r, long frame)
         progress_clear(&r->pr);
         die(EXIT_RUN, "cannot write %s/%s: %s", o->out_dir, name, why);
     }
-    if (r->xyz) {
-        errno = 0;
-        if (ds_writer_write(r->xyz, r->sim, NULL) != DS_OK)
-            die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path,
-                strerror(errno ? errno : EIO));
+    if (jammed) {
+        free(r->json);
+        r->json = frames_json_text(r->sim, o, frame);
     }
+    if (frame == r->first || jammed)
+        frames_json_write(o, r->json);
+    trajectory_frame(r->xyz, &r->trajectory, r->sim);
+    trajectory_frame(r->gsd, &r->gsd_file, r->sim);
     if (r->stats.f)
         stats_row(&r->stats, frame, r->sim);
     keep_created_dirs(); /* --out holds a frame now */
@@ -114,17 +129,26 @@ static void write_checkpoint(run *r, long frame)
         output_publish(&r->stats);
     if (r->trajectory.f)
         output_publish(&r->trajectory);
+    if (r->gsd_file.f)
+        output_publish(&r->gsd_file);
     checkpoint_write(r->sim, r->o->checkpoint_path);
     r->checkpoint_frame = frame;
 }
 
+/* A trajectory's writer finished, and its file put in place. */
+static void close_trajectory(ds_writer **w, output *out)
+{
+    if (*w && ds_writer_close(*w, NULL) != DS_OK)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path, strerror(EIO));
+    *w = NULL;
+    if (out->f)
+        output_close(out);
+}
+
 static void close_outputs(run *r)
 {
-    if (r->xyz && ds_writer_close(r->xyz, NULL) != DS_OK)
-        die(EXIT_RUN, "cannot write --trajectory %s: %s", r->trajectory.path, strerror(EIO));
-    r->xyz = NULL;
-    if (r->trajectory.f)
-        output_close(&r->trajectory);
+    close_trajectory(&r->xyz, &r->trajectory);
+    close_trajectory(&r->gsd, &r->gsd_file);
     if (r->stats.f)
         output_close(&r->stats);
 }
@@ -150,8 +174,26 @@ static void stop_by_signal(run *r, int sig, long frame)
     end_by_signal(sig);
 }
 
-/* Opens --stats and --trajectory (their temporaries) and makes sure the
- * frames and the checkpoint can be written, before any disk is placed. */
+/* The writer of format on a trajectory's file (GSD writes its header
+ * here). A write that fails says its errno; a refusal the library's
+ * reason, which names its stream "out", here the option's file. */
+static ds_writer *writer_on(const output *out, ds_format format)
+{
+    ds_writer *w = NULL;
+    ds_error err;
+    errno = 0;
+    if (ds_writer_open(format, out->f, 0, &w, &err) == DS_OK)
+        return w;
+    if (err.status == DS_ERR_IO)
+        die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+            strerror(errno ? errno : EIO));
+    die(EXIT_RUN, "cannot write %s %s: %s", out->option, out->path,
+        strncmp(err.message, "out: ", 5) == 0 ? err.message + 5 : err.message);
+}
+
+/* Opens --stats, --trajectory and --gsd (their temporaries) and makes
+ * sure the frames and the checkpoint can be written, before any disk is
+ * placed. */
 static void open_outputs(run *r)
 {
     const options *o = r->o;
@@ -166,9 +208,13 @@ static void open_outputs(run *r)
         output_open(&r->trajectory, "--trajectory", o->trajectory_path);
         if (o->trajectory_continues && r->trajectory.slot >= 0)
             carry_over_trajectory(&r->trajectory, r->sim, o->steps_per_frame, r->first - 1);
-        ds_error err;
-        if (ds_writer_open(DS_FORMAT_XYZ, r->trajectory.f, 0, &r->xyz, &err) != DS_OK)
-            die(EXIT_RUN, "cannot write --trajectory %s: %s", o->trajectory_path, err.message);
+        r->xyz = writer_on(&r->trajectory, DS_FORMAT_XYZ);
+    }
+    if (o->gsd_path) {
+        output_open(&r->gsd_file, "--gsd", o->gsd_path);
+        if (o->gsd_continues && r->gsd_file.slot >= 0)
+            carry_over_gsd(&r->gsd_file, r->sim);
+        r->gsd = writer_on(&r->gsd_file, DS_FORMAT_GSD);
     }
     if (o->stats_path) {
         output_open(&r->stats, "--stats", o->stats_path);
@@ -319,7 +365,7 @@ static void run_frames(run *r)
             r->sim_seconds += ds_timer_now() - t0;
         }
         double t0 = ds_timer_now();
-        emit_frame(r, frame);
+        emit_frame(r, frame, jammed);
         /* The frame at T closes the relaxation: its row holds the averages
          * from the start, the rows after it those from it on. Before the
          * checkpoint, so that a restart from it carries the reset. */
@@ -394,11 +440,16 @@ int main(int argc, char **argv)
     r.jammed_frame = -1;
     start_run(&r, &o);
     record_run_settings(r.sim, &o, r.last);
-    check_other_runs(&o, r.last);
+    /* A restart from a growth that jammed starts after the jammed frame,
+     * which is off the frames' spacing. */
+    const int off_spacing =
+        r.first > 0 && ds_sim_get_steps(r.sim) != (uint64_t)(r.first - 1) * o.steps_per_frame;
+    r.json = frames_json_text(r.sim, &o, off_spacing ? r.first - 1 : -1);
+    const int other_json = check_other_runs(&o, r.first, r.last, r.json);
 
     make_out_dir(o.out_dir);
     open_outputs(&r);
-    remove_other_runs(&o, r.last);
+    remove_other_runs(&o, r.last, other_json);
     r.frame_cap = ds_frame_get_size(r.sim, o.velocities);
     r.frame_buf = malloc(r.frame_cap ? r.frame_cap : 1);
     if (!r.frame_buf)
@@ -416,6 +467,7 @@ int main(int argc, char **argv)
     if (!o.quiet)
         print_report(&r, o.frames);
     free(r.frame_buf);
+    free(r.json);
     ds_sim_destroy(r.sim);
     /* The timing report is output too: `disks 400 5 > /dev/full` must not
      * succeed silently with it lost. */

@@ -4,9 +4,10 @@
  *
  * A frame or a checkpoint is written whole to a temporary in its own
  * directory, checked and renamed over its name (a checkpoint also reaches
- * the disk, fsync, before and after the rename). --stats and --trajectory
- * grow frame by frame in a temporary, "pending" until it is renamed into
- * place at the end. A device, pipe or symbolic link is written in place.
+ * the disk, fsync, before and after the rename). --stats, --trajectory
+ * and --gsd grow frame by frame in a temporary, "pending" until it is
+ * renamed into place at the end. A device, pipe or symbolic link is
+ * written in place.
  *
  * Signals (SIGINT, SIGTERM, SIGHUP) are held while a file is written, so
  * they land between files. Before the frames begin one ends the command
@@ -29,7 +30,7 @@
 
 #include "cli.h"
 
-#define PENDING_MAX 4 /* --stats and --trajectory, with room */
+#define PENDING_MAX 4 /* --stats, --trajectory and --gsd, with room */
 #define CREATED_MAX 32
 
 /* Written only with the signals held, read by the handler. */
@@ -297,7 +298,8 @@ void output_open(output *out, const char *option, const char *path)
         die(EXIT_RUN, "cannot write %s %s: %s", option, path, strerror(errno));
     out->slot = slot;
     fchmod(fd, 0644);
-    if (!(out->f = fdopen(fd, "wb")))
+    /* Read back too: a GSD writer reads the file a restart goes on with. */
+    if (!(out->f = fdopen(fd, "w+b")))
         die(EXIT_RUN, "cannot write %s %s: %s", option, path, strerror(errno));
 }
 

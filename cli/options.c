@@ -103,6 +103,7 @@ enum {
     DT,
     SPEED,
     AREA_FRACTION,
+    GSD,
     THERMOSTAT,
     TEMPERATURE,
     THERMOSTAT_RATE,
@@ -138,6 +139,7 @@ static const struct {
              {"--dt", 1},
              {"--speed", 1},
              {"--area-fraction", 1},
+             {"--gsd", 0},
              {"--thermostat", 0},
              {"--temperature", 0},
              {"--thermostat-rate", 0},
@@ -214,6 +216,9 @@ static int set_run_option(options *o, int which, const char *value)
         return 1;
     case TRAJECTORY:
         o->trajectory_path = file_arg("--trajectory", value);
+        return 1;
+    case GSD:
+        o->gsd_path = file_arg("--gsd", value);
         return 1;
     case CHECKPOINT:
         o->checkpoint_path = file_arg("--checkpoint", value);

@@ -208,6 +208,15 @@ static int names_a_frame(const named *f, const char *out_dir, const char *out_ca
     return found;
 }
 
+/* f is the frames.json the run writes beside its frames. */
+static int names_frames_json(const named *f, const char *out_canon)
+{
+    char dir[PATH_CAP];
+    const char *base;
+    split_path(f->canon, dir, sizeof dir, &base);
+    return strcmp(dir, out_canon) == 0 && strcmp(base, "frames.json") == 0;
+}
+
 /* An output's directory exists, or --out makes it: it is --out or one of
  * the parents --out creates. */
 static int dir_usable(const char *dir, const char *dir_canon, const char *out_canon)
@@ -243,6 +252,7 @@ void check_paths(const options *o)
     resolve(o->out_dir, out_canon, sizeof out_canon);
     named files[] = {{"--stats", o->stats_path, 1, "", 0, 0, 0, 0},
                      {"--trajectory", o->trajectory_path, 1, "", 0, 0, 0, 0},
+                     {"--gsd", o->gsd_path, 1, "", 0, 0, 0, 0},
                      {"--checkpoint", o->checkpoint_path, 1, "", 0, 0, 0, 0},
                      {"--restart", o->restart_path, 0, "", 0, 0, 0, 0},
                      {"--from", o->from_path, 0, "", 0, 0, 0, 0}};
@@ -257,6 +267,11 @@ void check_paths(const options *o)
         if (strcmp(f->canon, out_canon) == 0)
             die(EXIT_USAGE, "%s %s is the --out directory: give it a file name", f->option,
                 f->path);
+        if (f->output && names_frames_json(f, out_canon))
+            die(EXIT_USAGE,
+                "%s %s would replace the run's frames.json in the --out directory '%s': choose "
+                "another name",
+                f->option, f->path, o->out_dir);
         if (!names_a_frame(f, o->out_dir, out_canon, frame, sizeof frame))
             continue;
         if (f->output)
@@ -315,7 +330,7 @@ void make_out_dir(const char *path)
 
 /* Frame files numbered after last: another run's (a run writes frames
  * 0 .. last, a restart its checkpoint's frame + 1 .. last after the
- * frames before, which are its own). */
+ * frames before, which are its own); last -1: every frame file. */
 static long other_frames(const char *dir, long last, long *lo, long *hi, int remove)
 {
     DIR *d = opendir(dir);
@@ -344,40 +359,63 @@ static long other_frames(const char *dir, long last, long *lo, long *hi, int rem
     return count;
 }
 
-void check_other_runs(const options *o, long last)
+/* "out/", or "the current directory". */
+static void dir_words(const char *dir, char *where, size_t cap)
 {
-    long lo = 0, hi = 0;
-    long count = other_frames(o->out_dir, last, &lo, &hi, 0);
-    if (count == 0 || o->overwrite)
-        return;
-    char where[PATH_CAP];
-    const char *dir = o->out_dir;
     if (strcmp(dir, ".") == 0)
-        snprintf(where, sizeof where, "the current directory");
+        snprintf(where, cap, "the current directory");
     else
-        path_printf(where, sizeof where, "%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/");
-    if (count == 1)
-        die(EXIT_RUN, "%s holds frame_%04ld.txt from another run; remove it or pass --overwrite",
-            where, lo);
-    if (count == 2)
-        die(EXIT_RUN,
-            "%s holds frame_%04ld.txt and frame_%04ld.txt from another run; remove them or pass "
-            "--overwrite",
-            where, lo, hi);
-    if (count == hi - lo + 1)
-        die(EXIT_RUN,
-            "%s holds frame_%04ld.txt ... frame_%04ld.txt from another run; remove them or pass "
-            "--overwrite",
-            where, lo, hi);
-    die(EXIT_RUN,
-        "%s holds %ld frame files from another run, frame_%04ld.txt ... frame_%04ld.txt; remove "
-        "them or pass --overwrite",
-        where, count, lo, hi);
+        path_printf(where, cap, "%s%s", dir, dir[strlen(dir) - 1] == '/' ? "" : "/");
 }
 
-void remove_other_runs(const options *o, long last)
+int check_other_runs(const options *o, long first, long last, const char *json)
+{
+    char where[PATH_CAP], why[256], reason[300] = "";
+    const char *dir = o->out_dir;
+    dir_words(dir, where, sizeof where);
+    const int other = frames_json_compare(dir, json, why, sizeof why);
+    if (other && first > 0)
+        die(EXIT_RUN, "cannot restart from %s into %s: its frames.json %s: give another --out",
+            o->restart_path, where, why);
+    long lo = 0, hi = 0;
+    /* Another run's frames.json: every frame beside it is that run's. */
+    long count = other_frames(dir, other ? -1 : last, &lo, &hi, 0);
+    if (o->overwrite)
+        return other;
+    if (other == 2 && count == 0)
+        die(EXIT_RUN, "%sframes.json %s; move it or pass --overwrite",
+            strcmp(dir, ".") == 0 ? "" : where, why);
+    if (count == 0)
+        return other;
+    if (other)
+        snprintf(reason, sizeof reason, " (its frames.json %s)", why);
+    if (count == 1)
+        die(EXIT_RUN, "%s holds frame_%04ld.txt from another run%s; remove it or pass --overwrite",
+            where, lo, reason);
+    if (count == 2)
+        die(EXIT_RUN,
+            "%s holds frame_%04ld.txt and frame_%04ld.txt from another run%s; remove them or pass "
+            "--overwrite",
+            where, lo, hi, reason);
+    if (count == hi - lo + 1)
+        die(EXIT_RUN,
+            "%s holds frame_%04ld.txt ... frame_%04ld.txt from another run%s; remove them or pass "
+            "--overwrite",
+            where, lo, hi, reason);
+    die(EXIT_RUN,
+        "%s holds %ld frame files from another run, frame_%04ld.txt ... frame_%04ld.txt%s; remove "
+        "them or pass --overwrite",
+        where, count, lo, hi, reason);
+}
+
+void remove_other_runs(const options *o, long last, int other_json)
 {
     long lo = 0, hi = 0;
-    if (o->overwrite)
-        (void)other_frames(o->out_dir, last, &lo, &hi, 1);
+    if (!o->overwrite)
+        return;
+    (void)other_frames(o->out_dir, other_json ? -1 : last, &lo, &hi, 1);
+    char path[PATH_CAP];
+    join(path, sizeof path, o->out_dir, "frames.json");
+    if (other_json && unlink(path) != 0 && errno != ENOENT)
+        die(EXIT_RUN, "cannot remove %s (--overwrite): %s", path, strerror(errno));
 }

@@ -26,7 +26,7 @@ typedef struct settings {
     uint64_t steps_per_frame;
     long last_frame;
     int velocities;
-    char *out, *stats, *trajectory, *checkpoint; /* NULL: none */
+    char *out, *stats, *trajectory, *gsd, *checkpoint; /* NULL: none */
     long checkpoint_every;
     double measure_after;
 } settings;
@@ -69,6 +69,8 @@ void record_run_settings(ds_sim *sim, const options *o, long last)
         put_line(&t, "stats", o->stats_path);
     if (o->trajectory_path)
         put_line(&t, "trajectory", o->trajectory_path);
+    if (o->gsd_path)
+        put_line(&t, "gsd", o->gsd_path);
     if (o->checkpoint_path) {
         put_line(&t, "checkpoint", o->checkpoint_path);
         snprintf(number, sizeof number, "%ld", o->checkpoint_every);
@@ -107,6 +109,7 @@ static void forget_settings(void)
     free(kept.out);
     free(kept.stats);
     free(kept.trajectory);
+    free(kept.gsd);
     free(kept.checkpoint);
 }
 
@@ -147,6 +150,7 @@ static settings read_settings(const char *meta, const char *path)
             char **path_field = strncmp(line, "out ", 4) == 0           ? &s.out
                                 : strncmp(line, "stats ", 6) == 0       ? &s.stats
                                 : strncmp(line, "trajectory ", 11) == 0 ? &s.trajectory
+                                : strncmp(line, "gsd ", 4) == 0         ? &s.gsd
                                 : strncmp(line, "checkpoint ", 11) == 0 ? &s.checkpoint
                                                                         : NULL;
             if (path_field)
@@ -202,6 +206,7 @@ long resume_run_settings(options *o, const ds_sim *sim)
             o->out_dir = s.out;
         go_on_with(&o->stats_path, &o->stats_continues, s.stats);
         go_on_with(&o->trajectory_path, &o->trajectory_continues, s.trajectory);
+        go_on_with(&o->gsd_path, &o->gsd_continues, s.gsd);
         if (!o->checkpoint_path && s.checkpoint) {
             o->checkpoint_path = s.checkpoint;
             if (!o->checkpoint_every)

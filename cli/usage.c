@@ -29,6 +29,7 @@ static const char usage_first[] =
     "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
     "  --stats FILE         write one CSV row of observables per frame to FILE\n"
     "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
+    "  --gsd FILE           also write every frame to FILE, one GSD trajectory (HOOMD)\n"
     "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
     "                       stopped by a signal (INT, TERM, HUP)\n"
     "  --checkpoint-every K also every K frames\n"

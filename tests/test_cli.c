@@ -328,6 +328,20 @@ static int is_frame_name(const char *base)
            strlen(base) == strlen("frame_0000.txt");
 }
 
+/* A whole frames.json, the run's description beside its frames: what
+ * disks writes begins and ends so (docs/cli.md, "Frame files"). */
+static int is_whole_frames_json(const char *path)
+{
+    static const char head[] = "{\n  \"disksim_frames\": 1,\n", tail[] = "\n}\n";
+    char text[8192];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(text, 1, sizeof text, f) : 0;
+    if (f)
+        fclose(f);
+    return n > sizeof head && n < sizeof text && memcmp(text, head, sizeof head - 1) == 0 &&
+           memcmp(text + n - (sizeof tail - 1), tail, sizeof tail - 1) == 0;
+}
+
 /* Judges what the run left in dir beyond the setup's entries. */
 static void check_leftovers(const cli_case *c, const char *dir, char before[][PATH_MAX],
                             size_t nbefore, outcome *o)
@@ -347,16 +361,14 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
         struct stat st;
         snprintf(full, sizeof full, "%s/%s", dir, after[i]);
         if (lstat(full, &st) == 0 && S_ISDIR(st.st_mode)) {
-            /* A failed disks may leave the --out it made, holding frames
-             * (the renderer's promise is only about files). */
+            /* A failed disks may leave the --out it made holding frames,
+             * the renderer holding PNGs: never an empty one. */
             DIR *d = opendir(full);
             int entries = 0;
             for (struct dirent *e; d && (e = readdir(d));)
                 entries += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
             if (d)
                 closedir(d);
-            if (strncmp(c->command, "disks", 5) != 0)
-                continue;
             if (c->exit_code == 2)
                 snprintf(o->problem, sizeof o->problem, "a usage error made directory '%s'",
                          after[i]);
@@ -372,6 +384,11 @@ static void check_leftovers(const cli_case *c, const char *dir, char before[][PA
             snprintf(o->problem, sizeof o->problem, "temporary file '%s' left behind", after[i]);
         else if (c->exit_code == 2)
             snprintf(o->problem, sizeof o->problem, "a usage error wrote '%s'", after[i]);
+        else if (strcmp(base, "frames.json") == 0 && !is_whole_frames_json(full))
+            snprintf(o->problem, sizeof o->problem, "partial frames.json '%s' left behind",
+                     after[i]);
+        else if (strcmp(base, "frames.json") == 0)
+            continue;
         else if (!is_frame_name(base))
             snprintf(o->problem, sizeof o->problem, "unexpected file '%s' left behind", after[i]);
         else if (ds_frame_read(full, &frame, NULL) != DS_OK)
@@ -638,6 +655,21 @@ static char *slurp_in(const char *dir, const char *name, size_t *len)
     return slurp(path, len);
 }
 
+static const char *path_in_dir(const char *dir, const char *name)
+{
+    static char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return path;
+}
+
+static void write_text_in(const char *dir, const char *name, const char *text)
+{
+    FILE *f = fopen(path_in_dir(dir, name), "wb");
+    assert_non_null(f);
+    assert_int_equal(fputs(text, f) >= 0, 1);
+    assert_int_equal(fclose(f), 0);
+}
+
 static int exists_in(const char *dir, const char *name)
 {
     char path[PATH_MAX];
@@ -816,7 +848,7 @@ static long complete_frames(const char *dir)
         const char *base = slash ? slash + 1 : names[i];
         if (base[0] == '.')
             fail_msg("temporary file '%s' left behind", names[i]);
-        if (strncmp(names[i], "out/", 4) == 0)
+        if (strncmp(names[i], "out/", 4) == 0 && strcmp(base, "frames.json") != 0)
             ++n;
     }
     for (long k = 0; k < n; ++k) {
@@ -851,7 +883,7 @@ static void assert_trajectory_holds_the_frames(const char *dir, long n)
         for (size_t i = 0; i < count; ++i) {
             line = strtok_r(NULL, "\n", &save);
             char xs[32], ys[32], fx[32], fy[32];
-            if (!line || !fline || sscanf(line, "X %31s %31s", xs, ys) != 2 ||
+            if (!line || !fline || sscanf(line, "%*s %31s %31s", xs, ys) != 2 ||
                 sscanf(fline, "%31s %31s", fx, fy) != 2 || strcmp(xs, fx) != 0 ||
                 strcmp(ys, fy) != 0)
                 fail_msg("t.xyz frame %ld disk %zu is not %s's", frames, i, name);
@@ -997,6 +1029,7 @@ static void test_a_restart_without_options_goes_on_with_the_run(void **state)
     assert_false(exists_in(dir, "two/frame_0060.txt"));
     assert_same_files(dir, "one.csv", "two.csv");
     assert_same_files(dir, "one.xyz", "two.xyz");
+    assert_same_files(dir, "one/frames.json", "two/frames.json");
     /* The run is over: a restart now says so, and with --frames goes on. */
     char err[512];
     assert_int_equal(run_disks_in(dir, "--restart c.ckpt", err, sizeof err), 2); /* usage */
@@ -1284,6 +1317,16 @@ static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
     const double jammed_at = strtod(cols[1], NULL);
     assert_true(jammed_at > 0.1 * (double)(last - 1) && jammed_at <= 0.1 * (double)last);
     free(csv);
+    /* frames.json gives that frame's time, off the frames' spacing. */
+    char *json = slurp_in(dir, "j/frames.json", NULL), want[64];
+    assert_non_null(json);
+    snprintf(want, sizeof want, "\"jammed_frame\": %ld,\n  \"jammed_time\": ", last);
+    const char *at = strstr(json, want);
+    if (!at)
+        fail_msg("j/frames.json has no \"%s\": %s", want, json);
+    /* The CSV's time has 6 decimals, frames.json all the digits. */
+    assert_true(fabs(strtod(at + strlen(want), NULL) - jammed_at) <= 5e-7);
+    free(json);
     /* The restart gets back onto the frames' times. */
     must_run(dir, "--restart j.ckpt --frames 2 --quiet --out j --stats r.csv");
     snprintf(name, sizeof name, "j/frame_%04ld.txt", last + 2);
@@ -1380,6 +1423,84 @@ static void test_frames_of_another_run_are_refused_unless_overwrite(void **state
     assert_true(exists_in(dir, "out/frame_0001.txt"));
     assert_false(exists_in(dir, "out/frame_0002.txt"));
     assert_false(exists_in(dir, "out/frame_0004.txt"));
+    remove_tree(dir);
+}
+
+/* frames.json beside the frames says what the frames do not: the box,
+ * the boundary, the frame spacing in time, the frame format and the
+ * kinds, in the documented text (docs/cli.md). The frames themselves are
+ * the same with it. */
+static void test_a_run_describes_itself_in_frames_json(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "20 5 --frames 2 --steps-per-frame 7 --dt 0.002 --box-y 500 --periodic "
+                  "--mixture 1.4:0.5 --velocities --quiet --out out");
+    char *json = slurp_in(dir, "out/frames.json", NULL);
+    assert_non_null(json);
+    assert_string_equal(json, "{\n"
+                              "  \"disksim_frames\": 1,\n"
+                              "  \"n\": 20,\n"
+                              "  \"radius\": 5,\n"
+                              "  \"box\": [1000, 500],\n"
+                              "  \"boundary\": \"periodic\",\n"
+                              "  \"dt\": 0.002,\n"
+                              "  \"steps_per_frame\": 7,\n"
+                              "  \"integrator\": \"step\",\n"
+                              "  \"velocities\": true,\n"
+                              "  \"kinds\": [\"A\", \"B\"]\n"
+                              "}\n");
+    free(json);
+    must_run(dir, "10 5 --frames 1 --boundary channel --integrator event --quiet --out two");
+    json = slurp_in(dir, "two/frames.json", NULL);
+    assert_non_null(json);
+    assert_non_null(strstr(json, "\"boundary\": \"channel\",\n"));
+    assert_non_null(strstr(json, "\"integrator\": \"event\",\n  \"velocities\": false\n}\n"));
+    free(json);
+    remove_tree(dir);
+}
+
+/* A directory whose frames.json describes another run holds that run's
+ * frames, all of them: refused (not replaced one by one, mixing two runs
+ * until the last is written), or removed with --overwrite; a restart into
+ * it is refused. A frames.json that is not disksim's is not replaced. */
+static void test_frames_described_as_another_runs_are_refused_unless_overwrite(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX", err[4096];
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "20 5 --frames 5 --box-y 500 --quiet --out out");
+    int status = run_disks_in(dir, "20 5 --frames 5 --quiet --out out", err, sizeof err);
+    assert_int_equal(status, 1);
+    assert_string_equal(err, "disks: out/ holds frame_0000.txt ... frame_0004.txt from another run "
+                             "(its frames.json has box [1000, 500], this run's [1000, 1000]); "
+                             "remove them or pass --overwrite\n");
+    must_run(dir, "20 5 --frames 2 --quiet --out out --overwrite");
+    assert_true(exists_in(dir, "out/frame_0001.txt"));
+    assert_false(exists_in(dir, "out/frame_0002.txt"));
+    char *json = slurp_in(dir, "out/frames.json", NULL);
+    assert_non_null(strstr(json, "\"box\": [1000, 1000],"));
+    free(json);
+    /* A restart goes on only beside its own run's frames. */
+    must_run(dir, "20 5 --frames 4 --quiet --out a --checkpoint c.ckpt");
+    status = run_disks_in(dir, "--restart c.ckpt --frames 1 --quiet --out out", err, sizeof err);
+    assert_int_equal(status, 0);
+    must_run(dir, "20 5 --frames 2 --velocities --quiet --out b");
+    status = run_disks_in(dir, "--restart c.ckpt --frames 1 --quiet --out b", err, sizeof err);
+    assert_int_equal(status, 1);
+    assert_string_equal(err, "disks: cannot restart from c.ckpt into b/: its frames.json has "
+                             "velocities true, this run's false: give another --out\n");
+    /* Someone else's frames.json. */
+    assert_int_equal(mkdir(path_in_dir(dir, "mine"), 0755), 0);
+    write_text_in(dir, "mine/frames.json", "{\"not\": \"disksim\"}\n");
+    status = run_disks_in(dir, "20 5 --frames 1 --quiet --out mine", err, sizeof err);
+    assert_int_equal(status, 1);
+    assert_string_equal(err, "disks: mine/frames.json is not a disksim run's description; move it "
+                             "or pass --overwrite\n");
+    json = slurp_in(dir, "mine/frames.json", NULL);
+    assert_string_equal(json, "{\"not\": \"disksim\"}\n");
+    free(json);
     remove_tree(dir);
 }
 
@@ -1526,6 +1647,8 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_a_corrupted_checkpoint_is_refused_with_one_line),
         cmocka_unit_test(test_outputs_inside_a_new_out_directory_are_written),
         cmocka_unit_test(test_frames_of_another_run_are_refused_unless_overwrite),
+        cmocka_unit_test(test_a_run_describes_itself_in_frames_json),
+        cmocka_unit_test(test_frames_described_as_another_runs_are_refused_unless_overwrite),
         cmocka_unit_test(test_a_mixture_run_writes_its_two_radii),
         cmocka_unit_test(test_a_growth_stops_at_its_target_area_fraction),
         cmocka_unit_test(test_a_growth_that_jams_ends_the_run_with_the_packing),

@@ -8,6 +8,7 @@
 #define _XOPEN_SOURCE 700
 #include "test_util.h"
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -73,38 +74,83 @@ static void write_frame(const char *name, size_t n, const double *x, const doubl
     assert_int_equal(fclose(f), 0);
 }
 
-static void test_a_square_lattice_has_its_exact_neighbour_shells(void **state)
+enum { SIDE = 20, N = SIDE * SIDE };
+#define SPACING 10.0
+
+/* A square lattice of spacing SPACING filling a SIDE SPACING periodic box. */
+static void write_square_lattice(const char *name)
 {
-    (void)state;
-    enum { SIDE = 20, N = SIDE * SIDE };
-    const double a = 10.0, box = SIDE * a;
     static double x[N], y[N];
     for (size_t j = 0; j < N; ++j) {
-        x[j] = 5.0 + a * (double)(j % SIDE);
-        y[j] = 5.0 + a * (double)(j / SIDE);
+        x[j] = 5.0 + SPACING * (double)(j % SIDE);
+        y[j] = 5.0 + SPACING * (double)(j / SIDE);
     }
-    write_frame("square.txt", N, x, y, 2.0);
-    static result res;
-    char args[256];
-    snprintf(args, sizeof args, "--periodic --box %g --dr 0.3 --rmax 25 '%s/square.txt'", box, dir);
-    run_gr(args, &res);
-    assert_int_equal(res.status, 0);
-    assert_int_equal(res.bins, 83); /* whole bins of 0.3 up to 25 */
+    write_frame(name, N, x, y, 2.0);
+}
+
+/* g(r) of that lattice, bins of 0.3 up to 25. */
+static void assert_square_lattice_shells(const result *res)
+{
+    const double a = SPACING, box = SIDE * a;
+    assert_int_equal(res->status, 0);
+    assert_int_equal(res->bins, 83); /* whole bins of 0.3 up to 25 */
     /* Every disk has 4 neighbours at a, 4 at a sqrt 2, 4 at 2a, 8 at a
      * sqrt 5: unordered pairs 2N, 2N, 2N, 4N. Over the ideal gas's
      * N (N - 1) / 2 pi (r1^2 - r0^2) / A pairs in the bin. */
     const double shells[][2] = {
         {a, 4.0}, {a * sqrt(2.0), 4.0}, {2.0 * a, 4.0}, {a * sqrt(5.0), 8.0}};
-    for (size_t b = 0; b < res.bins; ++b) {
+    for (size_t b = 0; b < res->bins; ++b) {
         const double r0 = 0.3 * (double)b, r1 = r0 + 0.3;
         double want = 0.0;
         for (size_t s = 0; s < 4; ++s)
             if (shells[s][0] >= r0 && shells[s][0] < r1)
                 want = shells[s][1] * box * box / ((N - 1.0) * PI * (r1 * r1 - r0 * r0));
         /* Printed with 9 significant digits. */
-        assert_true(fabs(res.g[b] - want) <= 1e-8 * want);
-        assert_true(fabs(res.r[b] - (r0 + 0.15)) < 1e-9);
+        assert_true(fabs(res->g[b] - want) <= 1e-8 * want);
+        assert_true(fabs(res->r[b] - (r0 + 0.15)) < 1e-9);
     }
+}
+
+static void test_a_square_lattice_has_its_exact_neighbour_shells(void **state)
+{
+    (void)state;
+    write_square_lattice("square.txt");
+    static result res;
+    char args[256];
+    snprintf(args, sizeof args, "--periodic --box %g --dr 0.3 --rmax 25 '%s/square.txt'",
+             SIDE * SPACING, dir);
+    run_gr(args, &res);
+    assert_square_lattice_shells(&res);
+}
+
+/* Without options the box and boundary are the run's, from the
+ * frames.json disks writes beside its frames: the lattice above in a
+ * directory whose frames.json says 200 x 200 periodic has the same exact
+ * shells. Options still win, and the contradiction is said. */
+static void test_the_box_comes_from_the_runs_frames_json(void **state)
+{
+    (void)state;
+    char path[128], args[256];
+    path_in_dir(path, sizeof path, "run");
+    assert_int_equal(mkdir(path, 0755), 0);
+    write_square_lattice("run/frame_0000.txt");
+    path_in_dir(path, sizeof path, "run/frames.json");
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("{\n  \"disksim_frames\": 1,\n  \"n\": 400,\n  \"box\": [200, 200],\n"
+          "  \"boundary\": \"periodic\",\n  \"future_key\": {\"a\": [1, \"b\"]}\n}\n",
+          f);
+    assert_int_equal(fclose(f), 0);
+    static result res;
+    snprintf(args, sizeof args, "--dr 0.3 --rmax 25 '%s/run/frame_0000.txt'", dir);
+    run_gr(args, &res);
+    assert_int_equal(res.err_lines, 0);
+    assert_square_lattice_shells(&res);
+    snprintf(args, sizeof args, "--boundary walls --dr 0.3 --rmax 25 '%s/run/frame_0000.txt'", dir);
+    run_gr(args, &res);
+    assert_int_equal(res.status, 0);
+    if (res.err_lines != 1 || !strstr(res.err, "gives the boundary periodic; taken walls"))
+        fail_msg("stderr: %s", res.err);
 }
 
 static void test_a_dilute_random_gas_is_empty_inside_contact_and_ideal_beyond(void **state)
@@ -202,9 +248,18 @@ static void test_bad_input_gets_one_line_and_the_documented_status(void **state)
         {"--dr 5 --rmax 1 two.txt", 2, "--dr"},
         {"missing.txt", 1, "missing.txt"},
         {"--box 15 two.txt", 1, "outside the 15 x 15 box"},
+        {"--boundary ring two.txt", 2, "'ring'"},
+        {"--boundary channel --box 100 --rmax 60 two.txt", 2, "half the width (50)"},
+        {"bad/two.txt", 1, "bad/frames.json:3: \"box\" must be [width, height]"},
     };
     if (chdir(dir) != 0)
         fail_msg("cannot enter %s", dir);
+    assert_int_equal(mkdir("bad", 0755), 0);
+    write_frame("bad/two.txt", 2, x, y, 1.0);
+    FILE *f = fopen("bad/frames.json", "w");
+    assert_non_null(f);
+    fputs("{\n  \"n\": 2,\n  \"box\": [1000],\n}\n", f);
+    assert_int_equal(fclose(f), 0);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
         static result res;
         run_gr(cases[i].args, &res);
@@ -226,6 +281,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_a_square_lattice_has_its_exact_neighbour_shells),
+        cmocka_unit_test(test_the_box_comes_from_the_runs_frames_json),
         cmocka_unit_test(test_a_dilute_random_gas_is_empty_inside_contact_and_ideal_beyond),
         cmocka_unit_test(test_a_walled_frame_from_the_library_has_nothing_inside_contact),
         cmocka_unit_test(test_bad_input_gets_one_line_and_the_documented_status),

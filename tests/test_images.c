@@ -254,7 +254,7 @@ static void test_walls_have_no_images(void **state)
     assert_int_equal(ds_xyz_format(sim, text, cap, &len, NULL), DS_OK);
     assert_true(len <= cap);
     text[len] = '\0';
-    assert_null(strstr(text, "image"));
+    assert_null(strstr(text, "map_shift"));
     free(text);
     assert_int_equal(ds_sim_get_images(NULL, image, NULL), DS_ERR_ARG);
     assert_int_equal(ds_sim_get_images(sim, NULL, NULL), DS_ERR_ARG);
@@ -263,9 +263,10 @@ static void test_walls_have_no_images(void **state)
     ds_sim_destroy(sim);
 }
 
-/* The trajectory's image column is the counts; ASE (Debian's python3,
- * if it has ase) reads it as an (N, 2) integer array, and pos + image
- * cell is the unwrapped centre. */
+/* The trajectory's image column (map_shift, OVITO's Periodic Image) is
+ * the counts and 0 along z; ASE (Debian's python3, if it has ase) reads
+ * it as an (N, 3) integer array, and pos + image cell is the unwrapped
+ * centre. */
 static void test_xyz_image_column_reads_back_in_ase(void **state)
 {
     (void)state;
@@ -283,8 +284,8 @@ static void test_xyz_image_column_reads_back_in_ase(void **state)
     size_t len = fread(text, 1, sizeof text - 1, in);
     fclose(in);
     text[len] = '\0';
-    assert_non_null(strstr(text, "Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3:image:I:2 "));
-    assert_non_null(strstr(text, " 4 -2\n"));
+    assert_non_null(strstr(text, ":masses:R:1:map_shift:I:3 "));
+    assert_non_null(strstr(text, " 4 -2 0\n"));
     ds_sim_destroy(sim);
     if (system("/usr/bin/python3 -c 'import ase.io' >/dev/null 2>&1") != 0) {
         unlink(path);
@@ -294,10 +295,10 @@ static void test_xyz_image_column_reads_back_in_ase(void **state)
     char cmd[1024];
     snprintf(cmd, sizeof cmd,
              "/usr/bin/python3 -c \"import ase.io, numpy as np; a = ase.io.read('%s'); "
-             "i = a.arrays['image']; "
-             "assert i.shape == (2, 2) and i.dtype.kind == 'i', (i.shape, i.dtype); "
-             "assert i.tolist() == [[4, -2], [0, 0]], i; "
-             "u = a.positions[:, :2] + i * np.diag(a.cell)[:2]; "
+             "i = a.arrays['map_shift']; "
+             "assert i.shape == (2, 3) and i.dtype.kind == 'i', (i.shape, i.dtype); "
+             "assert i.tolist() == [[4, -2, 0], [0, 0, 0]], i; "
+             "u = a.positions[:, :2] + i[:, :2] * np.diag(a.cell)[:2]; "
              "assert abs(u[0, 0] - 48.0) < 1e-5 and abs(u[0, 1] - (-12.5)) < 1e-5, u\"",
              path);
     const int rc = system(cmd);

@@ -111,6 +111,7 @@ static void test_the_names_are_the_front_ends_names(void **state)
     assert_string_equal(ds_growth_state_name(DS_GROWTH_JAMMED), "jammed");
     assert_string_equal(ds_format_name(DS_FORMAT_FRAME), "frame");
     assert_string_equal(ds_format_name(DS_FORMAT_XYZ), "xyz");
+    assert_string_equal(ds_format_name(DS_FORMAT_GSD), "gsd");
 }
 
 /* Each default is 0, so a zeroed ds_params asks for every default. */

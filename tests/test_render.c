@@ -14,6 +14,7 @@
 #include <png.h>
 
 #include "render_colormap.h"
+#include "render_font.h"
 #include "render_layout.h"
 
 /* ------------------------------------------------------------------ */
@@ -341,10 +342,10 @@ static void test_dir_renders_every_frame_of_a_disks_run(void **state)
         assert_int_equal(img.width, 64);
         free(img.rgb);
     }
-    /* Without --out the PNGs go next to the frames. */
+    /* Without --out the PNGs go next to the frames (and frames.json). */
     snprintf(args, sizeof args, "--quiet --size 64 --dir %s", frames);
     assert_int_equal(run(*state, args), 0);
-    assert_int_equal(count_files(frames), 12);
+    assert_int_equal(count_files(frames), 13);
 }
 
 static void test_version_names_the_backend_and_the_gl_renderer(void **state)
@@ -358,6 +359,289 @@ static void test_version_names_the_backend_and_the_gl_renderer(void **state)
     text[n] = '\0';
     assert_non_null(strstr(text, "backend"));
     assert_non_null(strstr(text, "GL renderer: "));
+}
+
+/* ------------------------------------------------------------------ */
+/* One backend: the run's box, periodic images, labels                 */
+/* ------------------------------------------------------------------ */
+
+/* A fresh directory whose path stays (path_in's buffers are reused). */
+static const char *kept_dir(char *keep, size_t cap, const char *name)
+{
+    snprintf(keep, cap, "%s", fresh_dir(name));
+    return keep;
+}
+
+/* Runs disks with args in a fresh directory dir/name; its path. */
+static const char *disks_run(const char *name, const char *args)
+{
+    static char dir[512];
+    snprintf(dir, sizeof dir, "%s", fresh_dir(name));
+    char full[1200];
+    snprintf(full, sizeof full, "%s --quiet --out %s", args, dir);
+    if (run(RENDER_DISKS, full) != 0)
+        fail_msg("disks %s: %s", full, last_stderr());
+    return dir;
+}
+
+/* Renders args (which name the frames) at size px into the PNG out. */
+static image render_png(const char *binary, const char *args, int size, const char *out)
+{
+    char full[2048];
+    snprintf(full, sizeof full, "--quiet --size %d %s", size, args);
+    int st = run(binary, full);
+    if (st != 0)
+        fail_msg("render %s exited with %d: %s", full, st, last_stderr());
+    return read_png(out);
+}
+
+/* The outline crosses the middle of the box's top edge (within half its
+ * width of the edge), and the image is background half an outline and a
+ * pixel beyond it. */
+static void assert_top_edge(const image *img, const rl_layout *l, const char *what)
+{
+    const double x = rl_px(l, 0.5 * l->box), y = rl_py(l, l->box_y);
+    if (!near(pixel(img, x, y - 0.25 * l->outline + 0.01), to8(RC_OUTLINE)) ||
+        !near(pixel(img, x, y + 0.5 * l->outline + 1.0), to8(RC_BACKGROUND)))
+        fail_msg("%s: no box edge at y = %g px", what, y);
+}
+
+/* disks --box-y 500 writes frames.json; the renderer draws that box with
+ * no option: the edge at height 500, nothing where a square box's top
+ * half would be. */
+static void test_a_run_is_drawn_in_its_own_box_from_frames_json(void **state)
+{
+    const char *dir = disks_run("rect", "40 5 --box-y 500 --frames 1");
+    char args[1200], out[600];
+    snprintf(out, sizeof out, "%s", path_in(dir, "frame_0000.png"));
+    snprintf(args, sizeof args, "--dir %s", dir);
+    image img = render_png(*state, args, 200, out);
+    assert_string_equal(last_stderr(), "");
+    rl_layout l, square;
+    rl_make_rect(&l, 200, 1000.0, 500.0, 0);
+    rl_make(&square, 200, 1000.0, 0);
+    assert_top_edge(&img, &l, "the run's 1000 x 500 box");
+    assert_colour(pixel(&img, rl_px(&square, 500), rl_py(&square, 1000) - 0.5 * square.outline),
+                  RC_BACKGROUND, "where a square box's top edge would be");
+    free(img.rgb);
+    /* Options still win, and the contradiction is said. */
+    snprintf(args, sizeof args, "--box-y 1000 --dir %s", dir);
+    img = render_png(*state, args, 200, out);
+    assert_top_edge(&img, &square, "--box-y 1000");
+    if (!strstr(last_stderr(), "frames.json gives the box 1000 x 500; drawn 1000 x 1000 as the "
+                               "options say"))
+        fail_msg("stderr: %s", last_stderr());
+    free(img.rgb);
+}
+
+/* A frame whose frames.json is another run's is refused, not drawn in
+ * that run's box. */
+static void test_a_frame_that_is_not_its_frames_json_runs_is_refused(void **state)
+{
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "foreign");
+    write_text(path_in(dir, "frames.json"), "{\"n\": 3, \"box\": [1000, 500]}\n");
+    write_text(path_in(dir, "frame_0000.txt"), "100 100 5\n200 200 5\n");
+    char args[600];
+    snprintf(args, sizeof args, "--quiet %s", path_in(dir, "frame_0000.txt"));
+    assert_int_equal(run(*state, args), 1);
+    if (!strstr(last_stderr(), "frame_0000.txt: 2 disks, but ") ||
+        !strstr(last_stderr(), "frames.json says n = 3: not that run's frame"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(dir), 2); /* no PNG */
+}
+
+/* In a periodic box a disk across an edge is drawn on both sides and
+ * clipped to the box; in a channel only across the x edges; with walls
+ * it hangs over the edge as before. Disk 1 crosses the left edge, disk 2
+ * the top edge, disk 3 the corner. */
+static void test_a_disk_across_a_periodic_edge_is_drawn_on_both_sides(void **state)
+{
+    const char *text = "15 500 40\n500 985 40\n10 10 40\n";
+    rl_layout l;
+    rl_make(&l, 400, 1000.0, 0);
+    const rgb8 disk = to8(RC_DISK), bg = to8(RC_BACKGROUND);
+#define AT(x, y) near(pixel(&img, rl_px(&l, x), rl_py(&l, y)), disk)
+#define OFF(x, y) near(pixel(&img, rl_px(&l, x), rl_py(&l, y)), bg)
+    image img = render_text(*state, text, 400, "--periodic");
+    assert_true(AT(15, 500) && AT(990, 500) && OFF(-15, 500));             /* across x, clipped */
+    assert_true(AT(500, 985) && AT(500, 10) && OFF(500, 1015));            /* across y, clipped */
+    assert_true(AT(10, 10) && AT(990, 10) && AT(10, 990) && AT(990, 990)); /* the corner */
+    free(img.rgb);
+    /* The same from a frames.json that says so, with no option. */
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "periodic");
+    write_text(path_in(dir, "frames.json"), "{\"box\": [1000, 1000], \"boundary\": \"periodic\"}");
+    write_text(path_in(dir, "frame_0000.txt"), text);
+    char args[600], out[600];
+    snprintf(args, sizeof args, "%s", path_in(dir, "frame_0000.txt"));
+    snprintf(out, sizeof out, "%s", path_in(dir, "frame_0000.png"));
+    img = render_png(*state, args, 400, out);
+    assert_true(AT(990, 500) && OFF(-15, 500) && AT(500, 10) && AT(990, 990));
+    free(img.rgb);
+    img = render_text(*state, text, 400, "--boundary channel");
+    assert_true(AT(990, 500) && OFF(-15, 500));                  /* periodic along x */
+    assert_true(OFF(500, 10) && AT(500, 1015) && OFF(990, 990)); /* walls along y */
+    free(img.rgb);
+    img = render_text(*state, text, 400, NULL);
+    assert_true(OFF(990, 500) && AT(-15, 500) && OFF(500, 10) && AT(500, 1015));
+    free(img.rgb);
+#undef AT
+#undef OFF
+}
+
+/* disks --trajectory writes extended XYZ: one PNG per frame, named from
+ * the file and the frame's index, in the box its Lattice gives, periodic
+ * by its pbc (the image column is not drawn). */
+static void test_an_extended_xyz_trajectory_gives_a_png_per_frame(void **state)
+{
+    const char *pngs = fresh_dir("xyz-pngs");
+    char out[600], xyz[600], args[1400];
+    snprintf(out, sizeof out, "%s", pngs);
+    snprintf(xyz, sizeof xyz, "%s", path_in(scratch, "run.xyz"));
+    snprintf(args, sizeof args, "30 5 --periodic --box-y 500 --frames 3 --trajectory %s", xyz);
+    disks_run("xyz-frames", args);
+    snprintf(args, sizeof args, "--out %s %s", out, xyz);
+    image img = render_png(*state, args, 200, path_in(out, "run_0002.png"));
+    assert_int_equal(count_files(out), 3); /* run_0000.png ... run_0002.png */
+    rl_layout l;
+    rl_make_rect(&l, 200, 1000.0, 500.0, 1); /* velo: speed colours and their legend */
+    assert_top_edge(&img, &l, "the Lattice's 1000 x 500 box");
+    free(img.rgb);
+}
+
+/* The columns are found by the Properties= header, in any order: a file
+ * as ASE writes it (momenta, not drawn) and one with velo before pos. */
+static void test_an_xyz_file_is_read_by_its_properties_header(void **state)
+{
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "ase");
+    /* Written by ase.io.write (ASE 3.22.1) from Atoms with a radius array
+     * and velocities, one disk across the left edge of a periodic box. */
+    write_text(path_in(dir, "ase.xyz"),
+               "2\n"
+               "Lattice=\"1000.0 0.0 0.0 0.0 500.0 0.0 0.0 0.0 10.0\" "
+               "Properties=species:S:1:pos:R:3:radius:R:1:momenta:R:3 Time=1.5 pbc=\"T T F\"\n"
+               "X       10.00000000     250.00000000       0.00000000      40.00000000       "
+               "1.00000000       2.00000000       0.00000000\n"
+               "X      700.00000000     300.00000000       0.00000000      25.00000000       "
+               "3.00000000       4.00000000       0.00000000\n");
+    char args[600];
+    snprintf(args, sizeof args, "%s", path_in(dir, "ase.xyz"));
+    image img = render_png(*state, args, 400, path_in(dir, "ase_0000.png"));
+    rl_layout l;
+    rl_make_rect(&l, 400, 1000.0, 500.0, 0);
+    assert_colour(pixel(&img, rl_px(&l, 700), rl_py(&l, 300)), RC_DISK, "disk 2");
+    assert_colour(pixel(&img, rl_px(&l, 990), rl_py(&l, 250)), RC_DISK, "disk 1's image");
+    assert_colour(pixel(&img, rl_px(&l, 500), rl_py(&l, 250)), RC_BACKGROUND, "between");
+    free(img.rgb);
+    write_text(path_in(dir, "order.xyz"),
+               "2\n"
+               "Properties=velo:R:2:species:S:1:radius:R:1:pos:R:2 pbc=\"F F F\" "
+               "Lattice=\"1000 0 0 0 1000 0 0 0 1\"\n"
+               "10 0 X 60 300 500\n"
+               "0 -240 X 60 700 500\n");
+    snprintf(args, sizeof args, "--vmax 250 %s", path_in(dir, "order.xyz"));
+    img = render_png(*state, args, 400, path_in(dir, "order_0000.png"));
+    rl_make(&l, 400, 1000.0, 1);
+    assert_colour(pixel(&img, rl_px(&l, 300), rl_py(&l, 500)), rc_viridis(10.0 / 250.0), "slow");
+    assert_colour(pixel(&img, rl_px(&l, 700), rl_py(&l, 500)), rc_viridis(240.0 / 250.0), "fast");
+    free(img.rgb);
+}
+
+/* The label's text as drawn: every font pixel of every character is the
+ * outline's colour where the glyph has it and the background elsewhere. */
+static void assert_label(const image *img, const rl_layout *l, const char *want)
+{
+    const double px = l->text_px;
+    for (size_t k = 0; want[k]; ++k) {
+        const unsigned char *rows = rf_glyph(want[k]);
+        for (int row = 0; row < RF_HEIGHT; ++row)
+            for (int col = 0; col < RF_WIDTH; ++col) {
+                const int on = rows[row] & (1u << (RF_WIDTH - 1 - col));
+                const double x = l->label_x + ((double)k * (RF_WIDTH + 1) + col + 0.5) * px;
+                const double y = l->label_y + (RF_HEIGHT - 1 - row + 0.5) * px;
+                if (!near(pixel(img, x, y), to8(on ? RC_OUTLINE : RC_BACKGROUND)))
+                    fail_msg("label \"%s\": character %zu, row %d, column %d is not %s", want, k,
+                             row, col, on ? "drawn" : "blank");
+            }
+    }
+}
+
+/* --label time: k steps_per_frame dt from frames.json (or an XYZ Time=);
+ * --label frame: the frame's number. */
+static void test_a_label_shows_the_time_or_the_frame_number(void **state)
+{
+    const char *dir = disks_run("label", "10 5 --frames 4 --steps-per-frame 50 --dt 0.002");
+    char args[1200], out[600];
+    snprintf(out, sizeof out, "%s", path_in(dir, "frame_0003.png"));
+    rl_layout l;
+    rl_make_view(&l, 400, 1000.0, 1000.0, 0, 1);
+    snprintf(args, sizeof args, "--label time %s", path_in(dir, "frame_0003.txt"));
+    image img = render_png(*state, args, 400, out);
+    assert_label(&img, &l, "t = 0.3");
+    free(img.rgb);
+    snprintf(args, sizeof args, "--label frame %s", path_in(dir, "frame_0003.txt"));
+    img = render_png(*state, args, 400, out);
+    assert_label(&img, &l, "frame 3");
+    free(img.rgb);
+    /* Without a label nothing is there. */
+    snprintf(args, sizeof args, "%s", path_in(dir, "frame_0003.txt"));
+    img = render_png(*state, args, 400, out);
+    rl_layout plain;
+    rl_make(&plain, 400, 1000.0, 0);
+    assert_colour(pixel(&img, plain.x0 + 0.5, plain.size - 0.5), RC_BACKGROUND, "no label");
+    free(img.rgb);
+    /* An XYZ frame's Time=. */
+    char xyz[512];
+    snprintf(xyz, sizeof xyz, "%s", path_in(scratch, "label.xyz"));
+    write_text(xyz,
+               "1\nLattice=\"1000 0 0 0 1000 0 0 0 1\" Properties=species:S:1:pos:R:3:radius:R:1 "
+               "Time=12.5 pbc=\"F F F\"\nX 500 500 0 20\n");
+    snprintf(args, sizeof args, "--label time %s", xyz);
+    img = render_png(*state, args, 400, path_in(scratch, "label_0000.png"));
+    assert_label(&img, &l, "t = 12.5");
+    free(img.rgb);
+    /* A frame with no time is refused before anything is drawn. */
+    char keep[512];
+    const char *bare = kept_dir(keep, sizeof keep, "label-bare");
+    write_text(path_in(bare, "frame_0001.txt"), "500 500 20\n");
+    snprintf(args, sizeof args, "--label time %s", path_in(bare, "frame_0001.txt"));
+    assert_int_equal(run(*state, args), 1);
+    if (!strstr(last_stderr(), "--label time: ") || !strstr(last_stderr(), "use --label frame"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(bare), 1);
+}
+
+/* --out F.png writes that one file for one frame, and with more frames
+ * is refused, making nothing; a failed render leaves no directory it
+ * made. */
+static void test_out_names_one_png_or_a_directory(void **state)
+{
+    char keep[512];
+    const char *dir = kept_dir(keep, sizeof keep, "out-png");
+    char one[600], args[1600];
+    write_text(path_in(dir, "frame_0000.txt"), "500 500 20\n");
+    write_text(path_in(dir, "frame_0001.txt"), "500 500 20\n");
+    snprintf(one, sizeof one, "%s", path_in(dir, "one.png"));
+    snprintf(args, sizeof args, "--out %s %s", one, path_in(dir, "frame_0000.txt"));
+    image img = render_png(*state, args, 64, one);
+    assert_int_equal(img.width, 64);
+    free(img.rgb);
+    struct stat st;
+    assert_int_equal(stat(one, &st), 0);
+    assert_true(S_ISREG(st.st_mode));
+    snprintf(args, sizeof args, "--quiet --out %s --dir %s", path_in(dir, "two.png"), dir);
+    assert_int_equal(run(*state, args), 2);
+    if (!strstr(last_stderr(), "names one PNG, but there are 2 frames: give --out a directory"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(dir), 3); /* the frames and one.png: no two.png */
+    /* A render that fails removes the --out directory it made. */
+    write_text(path_in(dir, "bad.txt"), "1 2 -3\n");
+    snprintf(args, sizeof args, "--quiet --out %s %s", path_in(dir, "made"),
+             path_in(dir, "bad.txt"));
+    assert_int_equal(run(*state, args), 1);
+    assert_int_not_equal(stat(path_in(dir, "made"), &st), 0);
 }
 
 /* ------------------------------------------------------------------ */
@@ -677,7 +961,7 @@ static void test_a_movie_is_h264_yuv420p_with_every_frame(void **state)
     assert_int_equal(pr.width, 96);
     assert_int_equal(pr.height, 96);
     assert_int_equal(count_files(out), 1);     /* the movie, no temporary */
-    assert_int_equal(count_files(frames), 12); /* and no PNG beside the frames */
+    assert_int_equal(count_files(frames), 13); /* the frames and frames.json: no PNG */
 }
 
 /* yuv420p stores colour for 2 x 2 pixel blocks: an odd size is padded. */
@@ -741,6 +1025,48 @@ static void test_movie_frames_keep_their_order_with_many_workers(void **state)
     }
     assert_int_equal(fread(rgb, 1, 1, p), 0); /* no frame more */
     assert_int_equal(pclose(p), 0);
+}
+
+/* The name says the format: .gif a GIF, .mp4 an MP4; any other name is
+ * refused before anything is rendered. */
+static void test_a_movie_is_the_format_its_name_says(void **state)
+{
+    SKIP_WITHOUT_FFMPEG();
+    const char *dir = fresh_dir("movie-kinds");
+    char dir_copy[512], args[1400];
+    snprintf(dir_copy, sizeof dir_copy, "%s", dir);
+    for (int k = 0; k < 3; ++k) {
+        char name[32], text[32];
+        snprintf(name, sizeof name, "frame_%04d.txt", k);
+        snprintf(text, sizeof text, "%d 500 60\n", 200 + 300 * k);
+        write_text(path_in(dir_copy, name), text);
+    }
+    const struct {
+        const char *name, *magic;
+        size_t at;
+    } kinds[] = {{"m.gif", "GIF89a", 0}, {"m.GIF", "GIF89a", 0}, {"m.mp4", "ftyp", 4}};
+    for (size_t k = 0; k < 3; ++k) {
+        snprintf(args, sizeof args, "--quiet --size 96 --movie %s --dir %s",
+                 path_in(dir_copy, kinds[k].name), dir_copy);
+        if (run(*state, args) != 0)
+            fail_msg("render --movie %s: %s", kinds[k].name, last_stderr());
+        FILE *f = fopen(path_in(dir_copy, kinds[k].name), "rb");
+        assert_non_null(f);
+        char head[16] = "";
+        assert_int_equal(fread(head, 1, sizeof head, f), sizeof head);
+        fclose(f);
+        if (memcmp(head + kinds[k].at, kinds[k].magic, strlen(kinds[k].magic)) != 0)
+            fail_msg("%s does not hold \"%s\" at byte %zu", kinds[k].name, kinds[k].magic,
+                     kinds[k].at);
+        assert_int_equal(ffprobe(path_in(dir_copy, kinds[k].name)).frames, 3);
+    }
+    assert_int_equal(count_files(dir_copy), 6);
+    snprintf(args, sizeof args, "--quiet --movie %s --dir %s", path_in(dir_copy, "m.avi"),
+             dir_copy);
+    assert_int_equal(run(*state, args), 2);
+    if (!strstr(last_stderr(), "m.avi: the name must end in .mp4 (H.264) or .gif"))
+        fail_msg("stderr: %s", last_stderr());
+    assert_int_equal(count_files(dir_copy), 6); /* no m.avi, no temporary */
 }
 
 /* Runs the renderer with PATH holding only an empty directory. */
@@ -854,14 +1180,24 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
         cmocka_unit_test_prestate(test_a_missing_file_is_refused, binary),                         \
         cmocka_unit_test_prestate(test_a_bad_frame_among_good_ones_fails_the_run, binary),         \
         cmocka_unit_test_prestate(test_directories_that_cannot_be_read_are_refused, binary),       \
-        cmocka_unit_test_prestate(test_an_output_directory_that_is_a_file_is_refused, binary)
+        cmocka_unit_test_prestate(test_an_output_directory_that_is_a_file_is_refused, binary),     \
+        cmocka_unit_test_prestate(test_a_run_is_drawn_in_its_own_box_from_frames_json, binary),    \
+        cmocka_unit_test_prestate(test_a_frame_that_is_not_its_frames_json_runs_is_refused,        \
+                                  binary),                                                         \
+        cmocka_unit_test_prestate(test_a_disk_across_a_periodic_edge_is_drawn_on_both_sides,       \
+                                  binary),                                                         \
+        cmocka_unit_test_prestate(test_an_extended_xyz_trajectory_gives_a_png_per_frame, binary),  \
+        cmocka_unit_test_prestate(test_an_xyz_file_is_read_by_its_properties_header, binary),      \
+        cmocka_unit_test_prestate(test_a_label_shows_the_time_or_the_frame_number, binary),        \
+        cmocka_unit_test_prestate(test_out_names_one_png_or_a_directory, binary)
 
 #define MOVIE_TESTS(binary)                                                                        \
     cmocka_unit_test_prestate(test_a_movie_is_h264_yuv420p_with_every_frame, binary),              \
         cmocka_unit_test_prestate(test_an_odd_size_makes_an_even_movie, binary),                   \
         cmocka_unit_test_prestate(test_movie_frames_keep_their_order_with_many_workers, binary),   \
         cmocka_unit_test_prestate(test_a_movie_without_ffmpeg_names_the_package, binary),          \
-        cmocka_unit_test_prestate(test_a_bad_frame_leaves_no_movie, binary)
+        cmocka_unit_test_prestate(test_a_bad_frame_leaves_no_movie, binary),                       \
+        cmocka_unit_test_prestate(test_a_movie_is_the_format_its_name_says, binary)
 
 /* The movie code is the same in every backend's binary: tested with one. */
 #ifdef RENDER_osmesa

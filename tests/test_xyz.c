@@ -2,9 +2,9 @@
 /* Extended XYZ trajectories: what ds_xyz_format writes reads back as
  * the simulation (parsed here, in C, always), `disks --trajectory` holds
  * exactly the frames it writes as text, and a third-party reader, ASE's
- * ase.io.read, sees the same frames, positions, radii and velocities when
- * a python3 with ASE is installed (Debian: python3-ase). Run from the top
- * directory (make test does). */
+ * ase.io.read, sees the same frames, kinds, positions, radii, velocities
+ * and masses when a python3 with ASE is installed (Debian: python3-ase).
+ * Run from the top directory (make test does). */
 #include "test_util.h"
 
 #include <dirent.h>
@@ -26,6 +26,9 @@ typedef struct xyz_frame {
     int periodic;         /* pbc="T T F" or "T F F" (a channel), and lines end with ix iy */
     int periodic_y;       /* pbc="T T F" */
     ds_frame_disk *disks; /* x, y, r, vx, vy */
+    double *momenta;      /* px, py of each disk */
+    double *mass;         /* of each disk (the two mass columns agree) */
+    char (*kind)[16];     /* each disk's kind's name */
     long *image;          /* ix, iy of each disk when periodic, else NULL */
 } xyz_frame;
 
@@ -80,8 +83,9 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
         f->box_y = number(&p);
         expect(&p, "0 0 0 ");
         f->height = number(&p);
-        expect(&p, "\" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3");
-        const int images = next_is(&p, ":image:I:2");
+        expect(&p, "\" Properties=type:S:1:pos:R:3:radius:R:1:velo:R:3:momenta:R:3:mass:R:1:"
+                   "masses:R:1");
+        const int images = next_is(&p, ":map_shift:I:3");
         expect(&p, " Time=");
         f->time = number(&p);
         expect(&p, "pbc=\"");
@@ -92,12 +96,19 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
         expect(&p, "\"\n");
         assert_int_equal(images, f->periodic); /* the image column iff periodic */
         f->disks = malloc(f->count * sizeof *f->disks);
-        assert_non_null(f->disks);
+        f->momenta = malloc(2 * f->count * sizeof *f->momenta);
+        f->mass = malloc(f->count * sizeof *f->mass);
+        f->kind = malloc(f->count * sizeof *f->kind);
+        assert_true(f->disks && f->momenta && f->mass && f->kind);
         f->image = f->periodic ? malloc(2 * f->count * sizeof *f->image) : NULL;
         assert_true(!f->periodic || f->image);
         for (size_t i = 0; i < f->count; ++i) {
             ds_frame_disk *d = &f->disks[i];
-            expect(&p, "X ");
+            const size_t name = strcspn(p, " \n");
+            assert_true(name > 0 && name < 16 && p[name] == ' ');
+            memcpy(f->kind[i], p, name);
+            f->kind[i][name] = '\0';
+            p += name + 1;
             d->x = number(&p);
             d->y = number(&p);
             assert_true(number(&p) == 0.0); /* z */
@@ -105,9 +116,15 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
             d->vx = number(&p);
             d->vy = number(&p);
             assert_true(number(&p) == 0.0); /* vz */
+            f->momenta[2 * i] = number(&p);
+            f->momenta[2 * i + 1] = number(&p);
+            assert_true(number(&p) == 0.0); /* pz */
+            f->mass[i] = number(&p);
+            assert_true(number(&p) == f->mass[i]); /* mass and masses */
             if (f->periodic) {
                 f->image[2 * i] = integer(&p);
                 f->image[2 * i + 1] = integer(&p);
+                assert_true(integer(&p) == 0); /* along z */
             }
             assert_true(p[-1] == '\n');
         }
@@ -119,6 +136,9 @@ static void free_frames(xyz_frame *frames, size_t n)
 {
     for (size_t k = 0; k < n; ++k) {
         free(frames[k].disks);
+        free(frames[k].momenta);
+        free(frames[k].mass);
+        free(frames[k].kind);
         free(frames[k].image);
     }
 }
@@ -174,6 +194,8 @@ static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
         assert_true(within_six_decimals(f.disks[i].vx, want[i].vx));
         assert_true(within_six_decimals(f.disks[i].vy, want[i].vy));
         assert_true(f.disks[i].r == 4.0);
+        assert_string_equal(f.kind[i], "A"); /* one kind, the default name */
+        assert_true(f.mass[i] == 1.0);
     }
     free_frames(&f, 1);
     free(buf);
@@ -181,15 +203,16 @@ static void test_an_xyz_frame_reads_back_as_the_simulation(void **state)
 }
 
 /* The header's comment on ds_xyz_format, claim by claim, on what
- * it must describe beyond one square box of one radius: a mixture in a
- * box taller than wide, with walls and periodic, after the disks have
- * crossed the periodic box's sides. The parser above accepts only the
- * documented form; here each number is checked against the simulation. */
+ * it must describe beyond one square box of one radius: a mixture of
+ * named kinds, masses by area, in a box taller than wide, with walls and
+ * periodic, after the disks have crossed the periodic box's sides. The
+ * parser above accepts only the documented form; here each number is
+ * checked against the simulation. */
 static void test_the_documented_xyz_form_is_what_is_written(void **state)
 {
     (void)state;
     enum { N = 24 };
-    const ds_species kinds[2] = {{12, 3.0, 0.0, NULL}, {12, 4.5, 0.0, NULL}};
+    const ds_species kinds[2] = {{12, 3.0, 0.0, "small"}, {12, 4.5, 0.0, "large"}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
     for (int b = 0; b < DS_BOUNDARY_COUNT; ++b) {
         /* Along x a channel is periodic too: images along x, 0 along y. */
@@ -218,11 +241,20 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
         assert_true(within_six_decimals(f.time, ds_sim_get_time(sim)));
         ds_disk want[N];
         int32_t image[2 * N];
+        double mass[N];
+        uint32_t kind[N];
         assert_int_equal(ds_sim_get_disks(sim, want, NULL), DS_OK);
         assert_int_equal(ds_sim_get_images(sim, image, NULL), DS_OK);
+        assert_int_equal(ds_sim_get_masses(sim, mass, NULL), DS_OK);
+        assert_int_equal(ds_sim_get_kinds(sim, kind, NULL), DS_OK);
         int crossed = 0;
         for (size_t i = 0; i < N; ++i) {
             assert_true(f.disks[i].r == radius_of(sim, i)); /* each its own, exactly */
+            assert_true(f.mass[i] == mass[i] && (i < 12 ? mass[i] == 1.0 : mass[i] == 2.25));
+            assert_string_equal(f.kind[i], ds_sim_get_kind_name(sim, kind[i]));
+            assert_string_equal(f.kind[i], i < 12 ? "small" : "large");
+            assert_true(within_six_decimals(f.momenta[2 * i], mass[i] * want[i].vx));
+            assert_true(within_six_decimals(f.momenta[2 * i + 1], mass[i] * want[i].vy));
             assert_true(within_six_decimals(f.disks[i].x, want[i].x));
             assert_true(within_six_decimals(f.disks[i].y, want[i].y));
             assert_true(within_six_decimals(f.disks[i].vx, want[i].vx));
@@ -396,7 +428,9 @@ static const char *python_with_ase(void)
 }
 
 /* Prints what ase.io.read(path, index=':') found, one line per frame and
- * per atom, every float with repr (the shortest text that reads back). */
+ * per atom, every float with repr (the shortest text that reads back):
+ * the symbol, the kind, the position, radius, mass and velocity as ASE
+ * has them (get_masses(), get_velocities()). */
 static const char ase_script[] =
     "import sys, ase.io\n"
     "frames = ase.io.read(sys.argv[1], index=':')\n"
@@ -404,9 +438,9 @@ static const char ase_script[] =
     "for a in frames:\n"
     "    print(repr(float(a.info['Time'])), len(a), *(repr(float(v)) for v in a.cell.lengths()),\n"
     "          ''.join('T' if p else 'F' for p in a.pbc))\n"
-    "    for s, p, r, v in zip(a.get_chemical_symbols(), a.positions, a.arrays['radius'],\n"
-    "                          a.arrays['velo']):\n"
-    "        print(s, *(repr(float(x)) for x in (p[0], p[1], p[2], r, v[0], v[1], v[2])))\n";
+    "    for s, k, p, r, m, v in zip(a.get_chemical_symbols(), a.arrays['type'], a.positions,\n"
+    "                                a.arrays['radius'], a.get_masses(), a.get_velocities()):\n"
+    "        print(s, k, *(repr(float(x)) for x in (p[0], p[1], p[2], r, m, v[0], v[1], v[2])))\n";
 
 static void test_ase_reads_the_trajectory_disks_writes(void **state)
 {
@@ -448,16 +482,18 @@ static void test_ase_reads_the_trajectory_disks_writes(void **state)
         assert_true(lx == 1000.0 && ly == 1000.0 && lz == 10.0);
         assert_string_equal(pbc, "FFF");
         for (size_t i = 0; i < count; ++i) {
-            char species[8];
-            double x, y, z, r, vx, vy, vz;
+            char species[8], kind[16];
+            double x, y, z, r, m, vx, vy, vz;
             assert_non_null(fgets(line, sizeof line, p));
-            assert_int_equal(sscanf(line, "%7s %lf %lf %lf %lf %lf %lf %lf", species, &x, &y, &z,
-                                    &r, &vx, &vy, &vz),
-                             8);
+            assert_int_equal(sscanf(line, "%7s %15s %lf %lf %lf %lf %lf %lf %lf %lf", species, kind,
+                                    &x, &y, &z, &r, &m, &vx, &vy, &vz),
+                             10);
             const ds_frame_disk *d = &f[k].disks[i];
             assert_string_equal(species, "X");
+            assert_string_equal(kind, "A");
             assert_true(x == d->x && y == d->y && z == 0.0);
-            assert_true(r == 5.0);
+            assert_true(r == 5.0 && m == 1.0);
+            /* get_velocities() is momenta / masses: m = 1, the same text. */
             assert_true(vx == d->vx && vy == d->vy && vz == 0.0);
         }
     }

@@ -63,28 +63,33 @@ void ds_frame_free(ds_frame *frame);
 /* One frame of an extended XYZ trajectory; frames written one after
  * another to the same file make the trajectory. A frame is the disk count
  * on a line, the comment line
- *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3
- *   Time=T pbc="F F F"
- * with walls, or in a periodic box
- *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=species:S:1:pos:R:3:radius:R:1:velo:R:3:image:I:2
- *   Time=T pbc="T T F"
- * (one line; Lx and Ly the box's sides, ds_sim_get_box_width and
- * ds_sim_get_box_height, and H twice the largest radius,
- * ds_sim_get_radius_max, each in the shortest form that reads back
- * exactly; T the simulated time with 6 decimals), then one line per disk
- * in generation order,
- *   X x y 0 r vx vy 0         with walls
- *   X x y 0 r vx vy 0 ix iy   in a periodic box
- * with x, y, vx, vy written like frames (6 decimals), r the disk's own
- * radius (ds_sim_get_radii) in the shortest form that reads back exactly,
- * and ix, iy its image counts (ds_sim_get_images), so x + ix Lx, y + iy Ly
- * is its unwrapped centre. The 2D box is written as a cell of height H
- * with every disk at z = 0, periodic along x and y only; "X" is a dummy
- * species. ASE reads positions, cell and pbc, arrays "radius", "velo" and
- * "image" and info "Time"; OVITO maps the columns to Particle Type,
- * Position, Radius and Velocity. ds_xyz_format works like
- * ds_frame_format (ds_xyz_get_size is always enough); ds_xyz_write writes
- * one frame to out, flushed (DS_ERR_IO if the write fails). */
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 H" Properties=P Time=T pbc="F F F"
+ * with walls (pbc="T T F" in a periodic box, "T F F" in a channel), P
+ *   type:S:1:pos:R:3:radius:R:1:velo:R:3:momenta:R:3:mass:R:1:masses:R:1
+ * and outside walls P:map_shift:I:3 (one line; Lx and Ly the box's sides,
+ * ds_sim_get_box_width and ds_sim_get_box_height, and H twice the
+ * largest radius, ds_sim_get_radius_max, each in the shortest form that
+ * reads back exactly; T the simulated time with 6 decimals), then one
+ * line per disk in generation order,
+ *   K x y 0 r vx vy 0 px py 0 m m           with walls
+ *   K x y 0 r vx vy 0 px py 0 m m ix iy 0   in a periodic box or channel
+ * with K the name of the disk's kind (ds_sim_get_kind_name), x, y, vx, vy
+ * and its momentum px = m vx, py = m vy written like frames (6
+ * decimals), r its own radius (ds_sim_get_radii) and m its mass
+ * (ds_sim_get_masses) in the shortest form that reads back exactly, and
+ * ix, iy its image counts (ds_sim_get_images), so x + ix Lx, y + iy Ly is
+ * its unwrapped centre. The 2D box is written as a cell of height H with
+ * every disk at z = 0, periodic along x and y only. The columns are named
+ * for the two readers: OVITO maps type, pos, radius, velo, mass and
+ * map_shift to Particle Type, Position, Radius, Velocity, Mass and
+ * Periodic Image; ASE (ase.io.read) maps pos to positions and keeps the
+ * rest as per-atom arrays of their names, reading momenta and masses as
+ * its momenta and masses (so get_velocities() is vx, vy, 0), its atoms
+ * the dummy "X" (no species column: a kind's name is no chemical symbol),
+ * with cell, pbc and info "Time". OVITO takes a cell as 2D only without a
+ * z column, which ASE needs: it sees a flat 3D cell. ds_xyz_format works
+ * like ds_frame_format (ds_xyz_get_size is always enough); ds_xyz_write
+ * writes one frame to out, flushed (DS_ERR_IO if the write fails). */
 size_t ds_xyz_get_size(const ds_sim *sim);
 ds_status ds_xyz_format(const ds_sim *sim, char *buf, size_t cap, size_t *len, ds_error *err);
 ds_status ds_xyz_write(const ds_sim *sim, FILE *out, ds_error *err);
@@ -96,14 +101,56 @@ ds_status ds_xyz_write(const ds_sim *sim, FILE *out, ds_error *err);
 typedef enum ds_format {
     DS_FORMAT_FRAME = 0, /* "frame": a text frame a write, lines "x y R [vx vy]" */
     DS_FORMAT_XYZ,       /* "xyz": extended XYZ, a frame a write */
+    DS_FORMAT_GSD,       /* "gsd": a GSD file (HOOMD schema), a frame a write */
     DS_FORMAT_COUNT
 } ds_format;
-const char *ds_format_name(ds_format format); /* "frame", "xyz"; "unknown" */
+const char *ds_format_name(ds_format format); /* "frame", "xyz", "gsd"; "unknown" */
 ds_status ds_format_parse(const char *name, ds_format *out, ds_error *err);
 
+/* "gsd" writes GSD 2.0 files in the HOOMD schema 1.4, the trajectory
+ * format HOOMD-blue writes and OVITO, VMD, freud, MDAnalysis and the gsd
+ * Python package read (gsd.hoomd.open). Each write is a frame holding:
+ *   configuration/step        uint64  sim's step count (ds_sim_get_steps)
+ *   configuration/dimensions  uint8   2
+ *   configuration/box         float   Lx Ly 0 0 0 0 (a 2D box has Lz 0)
+ *   particles/N               uint32  the disk count
+ *   particles/types           int8    the kinds' names (ds_sim_get_kind_name)
+ *   particles/typeid          uint32  each disk's kind (ds_sim_get_kinds)
+ *   particles/mass            float   each disk's mass
+ *   particles/diameter        float   each disk's 2 r
+ *   particles/position        float   x - Lx/2, y - Ly/2, 0: the box centred
+ *                                     on the origin, as HOOMD places it
+ *   particles/velocity        float   vx, vy, 0
+ *   particles/image           int32   ix, iy, 0 (ds_sim_get_images)
+ *   log/disksim/NAME          the command's --stats columns after frame: time,
+ *                             kinetic_energy, px, py, pressure,
+ *                             virial_pressure, psi6 (NaN where the library
+ *                             has none), area_fraction (float64) and
+ *                             collisions, wall_reflections (uint64)
+ * in generation order (HOOMD's tag order), every number little-endian.
+ * Frame 0 holds every chunk; a later frame holds the step, positions,
+ * velocities and log, and the other chunks only where they differ from
+ * frame 0's (the schema reads a missing chunk from frame 0): the
+ * diameters of a growth, the images of a periodic box. A centre that
+ * float rounding puts on the box's +L/2 side of a periodic axis is
+ * written at -L/2 with its image one more, as HOOMD requires -L/2 <= x <
+ * L/2 (so x + ix Lx is the unwrapped centre to float rounding). GSD has
+ * no walls: every HOOMD box is periodic, and a box with walls is written
+ * with its sides and images 0. After every write the file is a valid
+ * GSD file of the frames written: a frame's chunks are written before the
+ * index entries that point at them, and the index is flushed with them.
+ * The stream must be able to seek (DS_ERR_ARG otherwise: a pipe cannot
+ * hold a GSD file). Empty, ds_writer_open writes the header, the chunks'
+ * names and an empty index there (DS_ERR_IO if that fails); holding a GSD
+ * file this writer wrote, it goes on with it: its frames are kept and
+ * each write appends one (frame 0's chunks still decide what a frame
+ * leaves out), which needs a stream it can read too, opened "r+b" or
+ * "w+b" (DS_ERR_ARG otherwise); holding anything else, DS_ERR_FORMAT.
+ * Offsets past LONG_MAX (2 GiB where long has 32 bits) are DS_ERR_IO. */
+
 /* What a writer writes beyond positions and radii, where its format can
- * (bits of flags): velocities (a frame's vx vy columns; XYZ always has
- * them). */
+ * (bits of flags): velocities (a frame's vx vy columns; XYZ and GSD always
+ * have them). */
 #define DS_WRITE_VELOCITIES 1u
 
 typedef struct ds_writer ds_writer; /* opaque */

@@ -16,6 +16,8 @@ and frames. Everything runs in the library; the arrays are numpy copies.
     s.kinetic_energy, s.momentum, s.pressure
 
 Sim           one simulation (help(disksim.Sim) for its arguments)
+Writer        a trajectory file written a frame at a time: GSD (HOOMD's, which
+              OVITO, VMD, freud and gsd.hoomd read), extended XYZ or frames
 read_frame    a frame file as arrays (Frame: positions, radii, velocities)
 load          a Sim from an exact checkpoint written by Sim.save (pickle
               and copy.copy use the same checkpoint)
@@ -27,8 +29,8 @@ Error         every failure the library reports; ArgumentError (also a
               ValueError), FormatError (ValueError), FileError (OSError),
               NoMemoryError (MemoryError)
 
-INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES
-and THERMOSTATS are the names the arguments and properties take;
+INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES,
+THERMOSTATS and FORMATS are the names the arguments and properties take;
 DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z and
 VELOCITY_MAX the library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
 """
@@ -37,6 +39,7 @@ from ._disksim import (
     BROADPHASES,
     CONTACT_TOLERANCE,
     DEFAULT_SEED,
+    FORMATS,
     GROWTH_STATES,
     INTEGRATORS,
     JAMMED_Z,
@@ -54,6 +57,7 @@ from ._disksim import (
     Frame,
     NoMemoryError,
     Sim,
+    Writer,
     library_version,
     load,
     local_psi6,
@@ -67,6 +71,7 @@ __version__ = library_version
 
 __all__ = [
     "Sim",
+    "Writer",
     "read_frame",
     "load",
     "pair_histogram",
@@ -87,6 +92,7 @@ __all__ = [
     "MASS_RULES",
     "GROWTH_STATES",
     "THERMOSTATS",
+    "FORMATS",
     "JAMMED_Z",
     "VELOCITY_MAX",
     "DEFAULT_SEED",

@@ -25,6 +25,7 @@ _Broadphase = Literal["auto", "sap", "strips", "cells", "brute"]
 _MassRule = Literal["equal", "area"]
 _GrowthState = Literal["none", "growing", "reached_eta", "jammed"]
 _Thermostat = Literal["none", "andersen", "isokinetic"]
+_Format = Literal["frame", "xyz", "gsd"]
 
 INTEGRATORS: Final[tuple[_Integrator, ...]]
 BOUNDARIES: Final[tuple[_Boundary, ...]]
@@ -33,6 +34,7 @@ BROADPHASES: Final[tuple[_Broadphase, ...]]
 MASS_RULES: Final[tuple[_MassRule, ...]]
 GROWTH_STATES: Final[tuple[_GrowthState, ...]]
 THERMOSTATS: Final[tuple[_Thermostat, ...]]
+FORMATS: Final[tuple[_Format, ...]]
 
 DEFAULT_SEED: Final[int]
 CONTACT_TOLERANCE: Final[float]
@@ -41,8 +43,14 @@ MANY_DISKS: Final[int]
 JAMMED_Z: Final[float]
 VELOCITY_MAX: Final[float]
 
-# A mixture by kind: (count, radius) or (count, radius, mass).
-_Species = Sequence[tuple[int, float] | tuple[int, float, float]]
+# A mixture by kind: (count, radius), (count, radius, mass), and either
+# with the kind's name last.
+_Species = Sequence[
+    tuple[int, float]
+    | tuple[int, float, float]
+    | tuple[int, float, str]
+    | tuple[int, float, float, str]
+]
 
 class Error(Exception):
     status: str | None
@@ -241,6 +249,29 @@ class Sim:
     @property
     def running(self) -> bool: ...
 
+@final
+class Writer:
+    def __init__(
+        self,
+        path: StrOrBytesPath,
+        format: _Format = "gsd",
+        *,
+        velocities: bool = False,
+        append: bool = False,
+    ) -> None: ...
+    def write(self, sim: Sim) -> None: ...
+    def close(self) -> None: ...
+    def __enter__(self) -> Self: ...
+    def __exit__(self, *exc_info: object) -> Literal[False]: ...
+    @property
+    def path(self) -> StrOrBytesPath: ...
+    @property
+    def format(self) -> _Format: ...
+    @property
+    def frames(self) -> int: ...
+    @property
+    def closed(self) -> bool: ...
+
 def read_frame(path: StrOrBytesPath) -> Frame: ...
 def load(path: StrOrBytesPath) -> Sim: ...
 def pair_histogram(
@@ -294,6 +325,7 @@ def memory_needed(
 
 __all__ = [
     "Sim",
+    "Writer",
     "read_frame",
     "load",
     "pair_histogram",
@@ -314,6 +346,7 @@ __all__ = [
     "MASS_RULES",
     "GROWTH_STATES",
     "THERMOSTATS",
+    "FORMATS",
     "JAMMED_Z",
     "DEFAULT_SEED",
     "CONTACT_TOLERANCE",

@@ -7,9 +7,10 @@
  * parameters of a simulation from keyword arguments (params.c), the Sim
  * type (sim.c), its properties (properties.c), its state as arrays
  * (state.c), exact checkpoints and pickles (checkpoint.c), frames
- * (frames.c), the analysis functions (analysis.c), ASE (ase.c) and freud
- * and HOOMD-blue's view (freud.c). Only the public header disk_sim.h is
- * used: the module is a thin face over the library.
+ * (frames.c), the analysis functions (analysis.c), ASE (ase.c), freud
+ * and HOOMD-blue's view (freud.c) and trajectory files (writer.c). Only
+ * the public header disk_sim.h is used: the module is a thin face over
+ * the library.
  *
  * Internal names start with dspy_; the module is built with
  * -fvisibility=hidden, so none of them (nor the library's ds_*) leaves it.
@@ -82,6 +83,7 @@ typedef enum dspy_kind {
     DSPY_MASS_RULE,    /* ds_mass_rule: "equal", "area" */
     DSPY_GROWTH_STATE, /* ds_growth_state: "none", "growing", "reached_eta", "jammed" */
     DSPY_THERMOSTAT,   /* ds_thermostat: "none", "andersen", "isokinetic" */
+    DSPY_FORMAT,       /* ds_format: "frame", "xyz", "gsd" */
     DSPY_KINDS
 } dspy_kind;
 
@@ -258,6 +260,10 @@ PyObject *dspy_sim_to_ase(dspy_sim *self, PyObject *unused);
 PyObject *dspy_sim_freud_box(dspy_sim *self, PyObject *unused);
 PyObject *dspy_sim_freud_points(dspy_sim *self, PyObject *unused);
 extern const char dspy_freud_box_doc[], dspy_freud_points_doc[];
+
+/* writer.c: disksim.Writer, a trajectory file in one of the library's
+ * formats. */
+extern PyTypeObject dspy_WriterType;
 
 /* The module functions' docstrings, beside their code. */
 extern const char dspy_read_frame_doc[];

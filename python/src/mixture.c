@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Sim's mixture arguments as a ds_mixture: species=[(count, radius[,
- * mass]), ...], or radii= (and masses=) per disk, and mass=, the rule for
- * the masses not given.
+ * mass][, name]), ...], or radii= (and masses=) per disk, and mass=, the
+ * rule for the masses not given.
  *
  * The library judges the values (ds_params_check: counts that do not
  * add up to n, radii or masses that are not positive finite numbers,
@@ -55,8 +55,14 @@ static void name_field(const char *field)
     Py_DECREF(exc);
 }
 
-/* One species, (count, radius) or (count, radius, mass), into *kind; the
- * same as a tuple of an int and floats into *normal. */
+#define SPECIES_FORMS                                                                              \
+    "(count, radius), (count, radius, mass), (count, radius, name) or (count, radius, mass, name)"
+
+/* One species, (count, radius[, mass][, name]), into *kind; the same as
+ * a tuple of an int, floats and the name into *normal. The name (a str,
+ * the kind's name in output files: GSD's types, XYZ's type column) is
+ * judged by the library; kind->name points into the str, which *normal
+ * holds as long as the Sim keeps its arguments. */
 static int one_species(PyObject *item, Py_ssize_t k, ds_species *kind, PyObject **normal)
 {
     PyObject *t = PySequence_Check(item) && !PyUnicode_Check(item) ? PySequence_Tuple(item) : NULL;
@@ -64,18 +70,19 @@ static int one_species(PyObject *item, Py_ssize_t k, ds_species *kind, PyObject 
         if (!PyErr_Occurred() || PyErr_ExceptionMatches(PyExc_TypeError)) {
             PyErr_Clear();
             PyErr_Format(PyExc_TypeError,
-                         "species[%zd] must be a tuple (count, radius) or (count, radius, mass), "
-                         "not %.100s",
-                         k, Py_TYPE(item)->tp_name);
+                         "species[%zd] must be a tuple " SPECIES_FORMS ", not %.100s", k,
+                         Py_TYPE(item)->tp_name);
         }
         return -1;
     }
     const Py_ssize_t len = PyTuple_GET_SIZE(t);
-    if (len != 2 && len != 3) {
+    PyObject *name = len >= 3 && PyUnicode_Check(PyTuple_GET_ITEM(t, len - 1))
+                         ? PyTuple_GET_ITEM(t, len - 1)
+                         : NULL;
+    const Py_ssize_t numbers = name ? len - 1 : len;
+    if (len < 2 || numbers > 3) {
         Py_DECREF(t);
-        dspy_raisef(DS_ERR_ARG, "species",
-                    "species[%zd] has %zd items: it must be (count, radius) or (count, radius, "
-                    "mass)",
+        dspy_raisef(DS_ERR_ARG, "species", "species[%zd] has %zd items: it must be " SPECIES_FORMS,
                     k, len);
         return -1;
     }
@@ -85,25 +92,37 @@ static int one_species(PyObject *item, Py_ssize_t k, ds_species *kind, PyObject 
     PyOS_snprintf(label[2], sizeof label[2], "species[%zd] mass", k);
     uint64_t count = 0;
     double radius = 0.0, mass = 0.0;
+    const char *text = NULL;
+    Py_ssize_t text_len = 0;
     int ok = dspy_uint64_arg(PyTuple_GET_ITEM(t, 0), label[0], 1, &count) == 0 &&
              dspy_double_arg(PyTuple_GET_ITEM(t, 1), label[1], &radius) == 0 &&
-             (len == 2 || dspy_double_arg(PyTuple_GET_ITEM(t, 2), label[2], &mass) == 0);
-    Py_DECREF(t);
+             (numbers == 2 || dspy_double_arg(PyTuple_GET_ITEM(t, 2), label[2], &mass) == 0) &&
+             (!name || (text = PyUnicode_AsUTF8AndSize(name, &text_len)) != NULL);
     if (ok && count > SIZE_MAX) {
         dspy_raisef(DS_ERR_NOMEM, "species", "%s = %llu cannot be held in memory", label[0],
                     (unsigned long long)count);
         ok = 0;
     }
+    if (ok && text && strlen(text) != (size_t)text_len) {
+        dspy_raisef(DS_ERR_ARG, "species", "species[%zd] name contains a NUL character", k);
+        ok = 0;
+    }
     if (!ok) {
+        Py_DECREF(t);
         name_field("species");
         return -1;
     }
     kind->count = (size_t)count;
     kind->radius = radius;
     kind->mass = mass;
-    kind->name = NULL; /* "A", "B", ... */
-    *normal = len == 2 ? Py_BuildValue("(Kd)", (unsigned long long)count, radius)
+    kind->name = text; /* NULL: "A", "B", ... */
+    if (numbers == 2)
+        *normal = name ? Py_BuildValue("(KdO)", (unsigned long long)count, radius, name)
+                       : Py_BuildValue("(Kd)", (unsigned long long)count, radius);
+    else
+        *normal = name ? Py_BuildValue("(KddO)", (unsigned long long)count, radius, mass, name)
                        : Py_BuildValue("(Kdd)", (unsigned long long)count, radius, mass);
+    Py_DECREF(t);
     return *normal ? 0 : -1;
 }
 
@@ -117,8 +136,7 @@ static int convert_species(dspy_mixture *m, PyObject *value, PyObject **normal)
         if (!PyErr_Occurred() || PyErr_ExceptionMatches(PyExc_TypeError)) {
             PyErr_Clear();
             PyErr_Format(PyExc_TypeError,
-                         "species must be a sequence of (count, radius) or (count, radius, "
-                         "mass), not %.100s",
+                         "species must be a sequence of " SPECIES_FORMS ", not %.100s",
                          Py_TYPE(value)->tp_name);
         }
         return -1;

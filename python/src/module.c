@@ -60,10 +60,10 @@ static struct PyModuleDef module_def = {
 
 static int add_constants(PyObject *m)
 {
-    const dspy_kind kinds[] = {DSPY_INTEGRATOR, DSPY_BOUNDARY,     DSPY_PLACEMENT, DSPY_BROADPHASE,
-                               DSPY_MASS_RULE,  DSPY_GROWTH_STATE, DSPY_THERMOSTAT};
-    const char *const names[] = {"INTEGRATORS", "BOUNDARIES",    "PLACEMENTS", "BROADPHASES",
-                                 "MASS_RULES",  "GROWTH_STATES", "THERMOSTATS"};
+    const dspy_kind kinds[] = {DSPY_INTEGRATOR, DSPY_BOUNDARY,     DSPY_PLACEMENT,  DSPY_BROADPHASE,
+                               DSPY_MASS_RULE,  DSPY_GROWTH_STATE, DSPY_THERMOSTAT, DSPY_FORMAT};
+    const char *const names[] = {"INTEGRATORS", "BOUNDARIES",    "PLACEMENTS",  "BROADPHASES",
+                                 "MASS_RULES",  "GROWTH_STATES", "THERMOSTATS", "FORMATS"};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
         PyObject *t = dspy_names(kinds[k]);
         if (!t || PyModule_AddObject(m, names[k], t) < 0) {
@@ -85,13 +85,14 @@ static int add_constants(PyObject *m)
 PyMODINIT_FUNC PyInit__disksim(void)
 {
     import_array();
-    if (PyType_Ready(&dspy_SimType) < 0)
+    if (PyType_Ready(&dspy_SimType) < 0 || PyType_Ready(&dspy_WriterType) < 0)
         return NULL;
     PyObject *m = PyModule_Create(&module_def);
     if (!m)
         return NULL;
     if (dspy_add_exceptions(m) < 0 || dspy_add_frame_type(m) < 0 || dspy_add_contacts_type(m) < 0 ||
-        add_constants(m) < 0 || PyModule_AddObjectRef(m, "Sim", (PyObject *)&dspy_SimType) < 0) {
+        add_constants(m) < 0 || PyModule_AddObjectRef(m, "Sim", (PyObject *)&dspy_SimType) < 0 ||
+        PyModule_AddObjectRef(m, "Writer", (PyObject *)&dspy_WriterType) < 0) {
         Py_DECREF(m);
         return NULL;
     }

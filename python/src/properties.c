@@ -85,6 +85,7 @@ static PyObject *name_property(dspy_sim *self, void *closure)
         value = (int)ds_sim_get_thermostat(sim);
         break;
     case DSPY_MASS_RULE:
+    case DSPY_FORMAT:
     case DSPY_KINDS:
         break;
     }

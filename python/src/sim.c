@@ -520,9 +520,12 @@ static PyMethodDef sim_methods[] = {
     {"to_ase", (PyCFunction)dspy_sim_to_ase, METH_NOARGS,
      "to_ase($self, /)\n--\n\n"
      "The disks as an ase.Atoms, as ASE reads the library's extended XYZ frames:\n"
-     "positions with z = 0, the cell box x box_y x 2R, pbc (True, True, False) in a\n"
-     "periodic box, else all False, arrays 'radius' (n,) and 'velo' (n, 3), info\n"
-     "'Time'; dummy atoms 'X' (atomic number 0, mass 1). ImportError without ASE\n"
+     "positions with z = 0, the cell box x box_y x 2 radius_max, pbc True along each\n"
+     "periodic axis (x and y periodic, x alone in a channel), never along z; dummy\n"
+     "atoms 'X' (atomic number 0); arrays 'type' (each disk's kind's name), 'radius',\n"
+     "'velo' (n, 3), 'momenta' (n, 3) and 'masses', so that get_velocities() and\n"
+     "get_masses() are the disks' ('mass' too, OVITO's name), 'map_shift' (n, 3) the\n"
+     "image counts outside a box with walls; info 'Time'. ImportError without ASE\n"
      "(Debian: python3-ase)."},
     {"freud_box", (PyCFunction)dspy_sim_freud_box, METH_NOARGS, dspy_freud_box_doc},
     {"freud_points", (PyCFunction)dspy_sim_freud_points, METH_NOARGS, dspy_freud_points_doc},

@@ -45,6 +45,19 @@ def test_each_disk_knows_its_species_through_a_run_and_a_checkpoint():
     assert one.kind_names == ("A",)
 
 
+def test_a_species_may_be_named_and_keeps_its_name():
+    s = disksim.Sim(30, 5.0, species=[(10, 5.0, "small"), (20, 7.0, 2.5, "big")],
+                    integrator="event", boundary="periodic")
+    assert s.kind_names == ("small", "big")
+    assert s.params["species"] == ((10, 5.0, "small"), (20, 7.0, 2.5, "big"))
+    assert "species=((10, 5.0, 'small'), (20, 7.0, 2.5, 'big'))" in repr(s)
+    assert np.array_equal(s.masses, [1.0] * 10 + [2.5] * 20)  # the rule, then the given
+    s.run(100)
+    back = pickle.loads(pickle.dumps(s))  # through a checkpoint, which keeps the names
+    assert back.kind_names == ("small", "big") and np.array_equal(back.kinds, s.kinds)
+    assert disksim.Sim(**s.params).kind_names == ("small", "big")
+
+
 def test_mass_area_weighs_each_disk_as_its_area():
     s = binary(200, 6.0, mass="area")
     assert np.allclose(s.masses, (s.radii / s.radius)**2, rtol=2 * EPS, atol=0)

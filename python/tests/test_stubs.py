@@ -53,9 +53,9 @@ def stub_class(name):
     return top_level(stub())[name]
 
 
-def sim_runtime_names(kind):
-    """Sim's own members of one kind (its method table or its getters)."""
-    return {name for name, member in vars(disksim.Sim).items() if isinstance(member, kind)}
+def runtime_names(cls, kind):
+    """A class's own members of one kind (its method table or its getters)."""
+    return {name for name, member in vars(cls).items() if isinstance(member, kind)}
 
 
 def stub_parameters(function, drop_self=False):
@@ -89,18 +89,19 @@ def test_the_stub_has_every_public_name_of_the_module_and_no_other():
     assert sorted(ast.literal_eval(names["__all__"].value)) == sorted(disksim.__all__)
 
 
-def test_the_stub_has_every_method_and_property_of_sim_and_no_other():
-    methods, properties = members(stub_class("Sim"))
-    # The method table (step, run, ... and __enter__, __exit__, __reduce__),
-    # the type's slots that a type checker must know of (__len__, __bool__:
-    # len(s) and truth; __init__ is declared, __repr__ is object's) and the
-    # getters: a property typed as a method would be called by a type
-    # checker's user, and fail.
-    slots = sim_runtime_names(types.WrapperDescriptorType) - {"__init__", "__repr__"}
-    assert slots == {"__len__", "__bool__"}
-    assert set(methods) - {"__init__"} == sim_runtime_names(types.MethodDescriptorType) | slots
-    assert set(properties) == sim_runtime_names(types.GetSetDescriptorType)
-    assert public(methods) | public(properties) == public(dir(disksim.Sim))
+def test_the_stub_has_every_method_and_property_of_sim_and_writer_and_no_other():
+    for cls, slots_wanted in ((disksim.Sim, {"__len__", "__bool__"}), (disksim.Writer, set())):
+        methods, properties = members(stub_class(cls.__name__))
+        # The method table (step, run, ... and __enter__, __exit__, __reduce__),
+        # the type's slots that a type checker must know of (Sim's __len__,
+        # __bool__: len(s) and truth; __init__ is declared, __repr__ is
+        # object's) and the getters: a property typed as a method would be
+        # called by a type checker's user, and fail.
+        slots = runtime_names(cls, types.WrapperDescriptorType) - {"__init__", "__repr__"}
+        assert slots == slots_wanted
+        assert set(methods) - {"__init__"} == runtime_names(cls, types.MethodDescriptorType) | slots
+        assert set(properties) == runtime_names(cls, types.GetSetDescriptorType)
+        assert public(methods) | public(properties) == public(dir(cls))
 
 
 def test_functions_and_methods_have_the_modules_parameters_and_defaults():
@@ -108,12 +109,13 @@ def test_functions_and_methods_have_the_modules_parameters_and_defaults():
     for name, node in names.items():
         if isinstance(node, ast.FunctionDef) and name != "memory_needed":
             assert stub_parameters(node) == runtime_parameters(getattr(disksim, name)), name
-    methods, _ = members(names["Sim"])
-    for name, node in methods.items():
-        if name != "__init__":
-            assert stub_parameters(node, drop_self=True) == \
-                runtime_parameters(getattr(disksim.Sim, name), drop_self=True), name
-    assert stub_parameters(methods["__init__"], drop_self=True) == runtime_parameters(disksim.Sim)
+    for cls in (disksim.Sim, disksim.Writer):
+        methods, _ = members(names[cls.__name__])
+        for name, node in methods.items():
+            if name != "__init__":
+                assert stub_parameters(node, drop_self=True) == \
+                    runtime_parameters(getattr(cls, name), drop_self=True), name
+        assert stub_parameters(methods["__init__"], drop_self=True) == runtime_parameters(cls)
 
 
 def test_memory_needed_takes_sims_arguments():
@@ -164,8 +166,9 @@ def test_the_literal_names_are_the_modules_tuples():
         assert tuple(ast.literal_eval(e) for e in literal.slice.elts) == getattr(disksim, name), \
             name
         checked += 1
-    # INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES, THERMOSTATS
-    assert checked == 7
+    # INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES, THERMOSTATS,
+    # FORMATS
+    assert checked == 8
 
 
 def test_the_package_says_it_is_typed():

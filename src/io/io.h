@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* Text output and input: frame files (frame_io.c), extended XYZ
- * trajectories (xyz.c), the writers over them (writer.h, writer.c) and
- * the number formatting both use (number_text.c). Not installed. */
+/* Output and input: frame files (frame_io.c), extended XYZ trajectories
+ * (xyz.c), GSD trajectories (gsd.c), the writers over them (writer.h,
+ * writer.c) and the number formatting the text formats use
+ * (number_text.c). Not installed. */
 #ifndef DS_IO_H
 #define DS_IO_H
 

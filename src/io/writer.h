@@ -25,9 +25,11 @@ typedef struct ds_writer_ops {
     ds_status (*close)(void *self, FILE *out, ds_error *err);
 } ds_writer_ops;
 
-/* The writers: text frames (frame_io.c) and extended XYZ (xyz.c). */
+/* The writers: text frames (frame_io.c), extended XYZ (xyz.c) and GSD
+ * (gsd.c). */
 extern const ds_writer_ops ds_frame_writer;
 extern const ds_writer_ops ds_xyz_writer;
+extern const ds_writer_ops ds_gsd_writer;
 
 /* The table of format, NULL if it is none: sim/tables.c, the list. */
 const ds_writer_ops *ds_writer_ops_of(ds_format format);

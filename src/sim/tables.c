@@ -25,6 +25,7 @@ const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT] = {
 static const ds_writer_ops *const writers[DS_FORMAT_COUNT] = {
     [DS_FORMAT_FRAME] = &ds_frame_writer,
     [DS_FORMAT_XYZ] = &ds_xyz_writer,
+    [DS_FORMAT_GSD] = &ds_gsd_writer,
 };
 
 const ds_integrator_ops *ds_integrator_ops_of(ds_integrator integrator)

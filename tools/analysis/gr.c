@@ -2,7 +2,11 @@
 /* gr: the radial distribution function g(r) of one frame file. Public API
  * only (the frame is read with ds_frame_read).
  *
- *   gr [--box L] [--box-y H] [--periodic] [--dr X] [--rmax X] FRAME.txt
+ *   gr [--box L] [--box-y H] [--boundary B] [--dr X] [--rmax X] FRAME.txt
+ *
+ * The box and its boundary are the run's, from the frames.json disks
+ * wrote beside the frame (tools/common/frames_json.h), unless the options
+ * give them.
  *
  * Prints "r g(r)" lines, r the middle of each bin: the pairs whose centres
  * are r to r + dr apart, over the pairs an ideal gas of the same N in the
@@ -17,6 +21,7 @@
 #include <string.h>
 
 #include "disk_sim.h"
+#include "frames_json.h"
 
 #define PI 3.14159265358979323846
 #define MAX_BINS 10000000
@@ -28,14 +33,19 @@ static const char usage_text[] =
     "Prints the radial distribution function g(r) of one frame (lines \"x y R\"\n"
     "or \"x y R vx vy\") as lines \"r g(r)\", r the middle of each bin, normalised\n"
     "by the pair count of an ideal gas of the same N in the same area.\n"
-    "  --box L      width of the box (default 1000)\n"
-    "  --box-y H    height of the box (default: the width)\n"
-    "  --periodic   periodic box: distances are minimum images, the area is\n"
-    "               L H and rmax at most half the shorter side. Without it the\n"
-    "               box has walls: the area is the one the centres reach,\n"
-    "               (L - 2R)(H - 2R), and the normalisation ignores the walls,\n"
-    "               so g(r) falls below 1 as r grows (pairs near a wall lose\n"
-    "               the partners beyond it), towards 0 as rmax nears the box\n"
+    "The box and its boundary are the run's, from the frames.json beside the\n"
+    "frame, unless the options give them.\n"
+    "  --box L      width of the box (default: the run's, else 1000)\n"
+    "  --box-y H    height of the box (default: the run's, else the width)\n"
+    "  --boundary B walls, periodic or channel (default: the run's, else walls).\n"
+    "               Periodic: distances are minimum images, the area is L H and\n"
+    "               rmax at most half the shorter side. With walls the area is\n"
+    "               the one the centres reach, (L - 2R)(H - 2R), and the\n"
+    "               normalisation ignores the walls, so g(r) falls below 1 as r\n"
+    "               grows (pairs near a wall lose the partners beyond it),\n"
+    "               towards 0 as rmax nears the box. A channel is periodic\n"
+    "               along x (rmax at most L/2), walls along y: L (H - 2R)\n"
+    "  --periodic   the same as --boundary periodic\n"
     "  --dr X       bin width (default 0.05 d, d = 2R the largest diameter)\n"
     "  --rmax X     largest r (default 10 d, at most half the shorter side)\n"
     "  --help       show this help and exit\n"
@@ -64,10 +74,39 @@ static double positive(const char *opt, const char *s)
     return v;
 }
 
+/* The box and boundary the options did not give, from the run's
+ * frames.json beside the frame; a contradiction is said. */
+static void run_box(const char *path, double *box, double *box_y, int *boundary)
+{
+    char dir[4200], why[512];
+    const char *slash = strrchr(path, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path + (slash == path)) : 1,
+             slash ? path : ".");
+    fj_run run;
+    const int got = fj_read(dir, &run, why, sizeof why);
+    if (got < 0)
+        die(EXIT_RUN, "%s", why);
+    const int given = *box > 0.0 || *box_y > 0.0;
+    if (*box <= 0.0)
+        *box = given || !(run.box_x > 0.0) ? 1000.0 : run.box_x;
+    if (*box_y <= 0.0)
+        *box_y = given || !(run.box_y > 0.0) ? *box : run.box_y;
+    if (got && given && run.box_x > 0.0 && (*box != run.box_x || *box_y != run.box_y))
+        fprintf(stderr,
+                "gr: warning: %s/%s gives the box %g x %g; taken %g x %g as the options say\n", dir,
+                FJ_NAME, run.box_x, run.box_y, *box, *box_y);
+    if (got && *boundary >= 0 && run.boundary >= 0 && *boundary != run.boundary)
+        fprintf(stderr, "gr: warning: %s/%s gives the boundary %s; taken %s as the options say\n",
+                dir, FJ_NAME, ds_boundary_name((ds_boundary)run.boundary),
+                ds_boundary_name((ds_boundary)*boundary));
+    if (*boundary < 0)
+        *boundary = got && run.boundary >= 0 ? run.boundary : DS_BOUNDARY_WALLS;
+}
+
 int main(int argc, char **argv)
 {
-    double box = 1000.0, box_y = 0.0, dr = 0.0, rmax = 0.0;
-    int periodic = 0;
+    double box = 0.0, box_y = 0.0, dr = 0.0, rmax = 0.0;
+    int boundary = -1;
     const char *path = NULL;
     for (int a = 1; a < argc; ++a) {
         const char *s = argv[a], *v = a + 1 < argc ? argv[a + 1] : NULL;
@@ -75,8 +114,14 @@ int main(int argc, char **argv)
             fputs(usage_text, stdout);
             return 0;
         } else if (!strcmp(s, "--periodic")) {
-            periodic = 1;
+            boundary = DS_BOUNDARY_PERIODIC;
             continue;
+        } else if (!strcmp(s, "--boundary")) {
+            ds_boundary b = DS_BOUNDARY_WALLS; /* clang cannot see that die() does not return */
+            if (!v || ds_boundary_parse(v, &b, NULL) != DS_OK)
+                die(EXIT_USAGE, "--boundary must be walls, periodic or channel, got '%s'",
+                    v ? v : "");
+            boundary = (int)b;
         } else if (!strcmp(s, "--box")) {
             box = positive(s, v);
         } else if (!strcmp(s, "--box-y")) {
@@ -97,13 +142,13 @@ int main(int argc, char **argv)
     }
     if (!path)
         die(EXIT_USAGE, "no frame file given (try --help)");
-    if (box_y == 0.0)
-        box_y = box;
-    const double half = 0.5 * fmin(box, box_y);
-    if (periodic && rmax > half)
-        die(EXIT_USAGE,
-            "--rmax must be at most half the shorter side (%g) in a periodic box, got %g", half,
-            rmax);
+    run_box(path, &box, &box_y, &boundary);
+    const int periodic = boundary == DS_BOUNDARY_PERIODIC,
+              channel = boundary == DS_BOUNDARY_CHANNEL;
+    const double half = channel ? 0.5 * box : 0.5 * fmin(box, box_y);
+    if ((periodic || channel) && rmax > half)
+        die(EXIT_USAGE, "--rmax must be at most half the %s (%g) in a %s box, got %g",
+            channel ? "width" : "shorter side", half, channel ? "channel" : "periodic", rmax);
 
     ds_frame f;
     ds_error fe;
@@ -125,8 +170,9 @@ int main(int argc, char **argv)
         radius = fmax(radius, d->r);
         covered += PI * d->r * d->r;
     }
-    const double area =
-        periodic ? box * box_y : fmax(box - 2.0 * radius, 0.0) * fmax(box_y - 2.0 * radius, 0.0);
+    const double area = periodic  ? box * box_y
+                        : channel ? box * fmax(box_y - 2.0 * radius, 0.0)
+                                  : fmax(box - 2.0 * radius, 0.0) * fmax(box_y - 2.0 * radius, 0.0);
     if (!(area > 0.0))
         die(EXIT_RUN, "%s: the disks leave their centres no area in the box", path);
     if (dr == 0.0)
@@ -148,9 +194,8 @@ int main(int argc, char **argv)
         xy[j] = f.disks[j].x;
         xy[f.count + j] = f.disks[j].y;
     }
-    st = ds_pair_histogram(f.count, xy, xy + f.count, box, box_y,
-                           periodic ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_WALLS, dr, nbins, hist,
-                           &fe);
+    st = ds_pair_histogram(f.count, xy, xy + f.count, box, box_y, (ds_boundary)boundary, dr, nbins,
+                           hist, &fe);
     if (st != DS_OK)
         die(st == DS_ERR_NOMEM ? EXIT_RUN : EXIT_USAGE, "cannot count the pairs of %s: %s", path,
             fe.message);
@@ -160,7 +205,10 @@ int main(int argc, char **argv)
     /* The state point, which tools/analysis/plot_gr.plt puts in its title. */
     printf("# g(r) of %s: N = %zu, area fraction %.4g, d = %g, box %g x %g, %s, dr = %g\n", path,
            f.count, covered / (box * box_y), 2.0 * radius, box, box_y,
-           periodic ? "periodic" : "walls (normalisation ignores them)", dr);
+           periodic  ? "periodic"
+           : channel ? "channel (normalisation ignores its walls)"
+                     : "walls (normalisation ignores them)",
+           dr);
     for (size_t b = 0; b < nbins; ++b) {
         const double r0 = (double)b * dr, r1 = r0 + dr;
         const double ideal = 0.5 * n * (n - 1.0) * PI * (r1 * r1 - r0 * r0) / area;

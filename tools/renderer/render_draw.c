@@ -151,10 +151,21 @@ static int size_legend(rd_renderer *r, const rl_layout *l, double rmin, double r
     return legend(r, l, rc_viridis, bottom, top, "radius");
 }
 
+/* A centre into the box along its periodic axes (an XYZ file may hold
+ * unwrapped centres; frames are in the box already, and stay as they are
+ * to the bit). */
+static void wrap(const rd_view *v, double *x, double *y)
+{
+    if (v->boundary != DS_BOUNDARY_WALLS)
+        *x -= v->box_x * floor(*x / v->box_x);
+    if (v->boundary == DS_BOUNDARY_PERIODIC)
+        *y -= v->box_y * floor(*y / v->box_y);
+}
+
 /* psi6 of every disk of the frame (cutoff 1.4 diameters of the largest
  * disk, as ds_sim_get_psi6) into re, im. */
-static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y, double *re,
-                      double *im, char *err, size_t errlen)
+static int frame_psi6(const ds_frame *frame, const rd_view *view, double *re, double *im, char *err,
+                      size_t errlen)
 {
     const size_t n = frame->count;
     double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), radius = 0.0;
@@ -165,15 +176,15 @@ static int frame_psi6(const rd_renderer *r, const ds_frame *frame, double box_y,
         for (size_t i = 0; i < n; ++i) {
             x[i] = frame->disks[i].x;
             y[i] = frame->disks[i].y;
+            wrap(view, &x[i], &y[i]);
             radius = fmax(radius, frame->disks[i].r);
         }
-        st = ds_psi6_local(n, x, y, r->opt.box, box_y,
-                           r->opt.periodic ? DS_BOUNDARY_PERIODIC : DS_BOUNDARY_WALLS, 2.8 * radius,
-                           re, im, &why);
+        st = ds_psi6_local(n, x, y, view->box_x, view->box_y, view->boundary, 2.8 * radius, re, im,
+                           &why);
     }
     free(x);
     free(y);
-    if (st == DS_ERR_ARG && r->opt.periodic)
+    if (st == DS_ERR_ARG && view->boundary != DS_BOUNDARY_WALLS)
         snprintf(err, errlen, "psi6: the periodic box is narrower than 2.8 diameters (%g)",
                  2.8 * 2.0 * radius);
     else if (st != DS_OK)
@@ -257,7 +268,119 @@ rd_renderer *rd_create(const rd_options *opt, char *err, size_t errlen)
     return r;
 }
 
-int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
+/* What colours the disks of a frame, worked out once per frame. */
+typedef struct palette {
+    int speeds, psi6, sizes;
+    double vmax, rmin, rmax;
+    double *re, *im; /* psi6 of each disk */
+} palette;
+
+static rc_rgb disk_colour(const palette *p, const ds_frame_disk *d, size_t i)
+{
+    if (p->speeds)
+        return rc_viridis(sqrt(d->vx * d->vx + d->vy * d->vy) / p->vmax);
+    if (p->psi6)
+        return rc_psi6(p->re[i], p->im[i]);
+    if (p->sizes)
+        return rc_viridis(p->rmax > p->rmin ? (d->r - p->rmin) / (p->rmax - p->rmin) : 0.5);
+    return RC_DISK;
+}
+
+/* The shifts, in pixels, of a disk's copies along one axis: itself, and
+ * its image across each edge of the box [lo, hi] its quad crosses. */
+static int shifts(double c, double e, double lo, double hi, int periodic, double out[3])
+{
+    int n = 0;
+    out[n++] = 0.0;
+    if (periodic && c - e < lo)
+        out[n++] = hi - lo;
+    if (periodic && c + e > hi)
+        out[n++] = lo - hi;
+    return n;
+}
+
+/* A quad per disk, and in a periodic box one per image across an edge. */
+static int disk_quads(rd_renderer *r, const ds_frame *frame, const rd_view *view,
+                      const rl_layout *l, const palette *p)
+{
+    const int along_x = view->boundary != DS_BOUNDARY_WALLS,
+              along_y = view->boundary == DS_BOUNDARY_PERIODIC;
+    const double a0 = rl_px(l, 0.0), a1 = rl_px(l, l->box);
+    const double b0 = rl_py(l, 0.0), b1 = rl_py(l, l->box_y);
+    for (size_t i = 0; i < frame->count; ++i) {
+        const ds_frame_disk *d = &frame->disks[i];
+        double x = d->x, y = d->y;
+        wrap(view, &x, &y);
+        const double cx = rl_px(l, x), cy = rl_py(l, y), rad = d->r * l->scale;
+        const rc_rgb c = disk_colour(p, d, i);
+        /* One pixel beyond the radius holds the whole antialiased ramp. */
+        const double e = rad + 1.0;
+        double sx[3], sy[3];
+        const int nx = shifts(cx, e, a0, a1, along_x, sx), ny = shifts(cy, e, b0, b1, along_y, sy);
+        if (grow(r, (size_t)(nx * ny) * VERTICES_PER_QUAD))
+            return -1;
+        for (int j = 0; j < ny; ++j)
+            for (int k = 0; k < nx; ++k) {
+                const double px = cx + sx[k], py = cy + sy[j];
+                quad(r, px - e, py - e, px + e, py + e, px, py, rad, c);
+            }
+    }
+    return 0;
+}
+
+/* The box's outline, the legend and the label, over the disks. */
+static int decorations(rd_renderer *r, const rl_layout *l, const palette *p, const char *label)
+{
+    /* The outline goes over the disks: a disk touching a wall overlaps the
+     * edge by a fraction of a step, and the box must stay visible. */
+    const double h = 0.5 * l->outline;
+    const double a0 = rl_px(l, 0.0), a1 = rl_px(l, l->box);
+    const double b0 = rl_py(l, 0.0), b1 = rl_py(l, l->box_y);
+    return rect(r, a0 - h, b0 - h, a1 + h, b0 + h, RC_OUTLINE) ||
+           rect(r, a0 - h, b1 - h, a1 + h, b1 + h, RC_OUTLINE) ||
+           rect(r, a0 - h, b0 + h, a0 + h, b1 - h, RC_OUTLINE) ||
+           rect(r, a1 - h, b0 + h, a1 + h, b1 - h, RC_OUTLINE) ||
+           (p->speeds && speed_legend(r, l, p->vmax)) ||
+           /* The psi6 bar: bond orientations from -30 to +30 degrees at
+            * full order, t as rc_psi6 maps the phase. */
+           (p->psi6 && legend(r, l, rc_cyclic, "-30", "30", "psi6")) ||
+           (p->sizes && size_legend(r, l, p->rmin, p->rmax)) ||
+           (label && text(r, l->label_x, l->label_y, l->text_px, label, RC_OUTLINE));
+}
+
+/* Sends the vertices and draws them: the first disk_vertices (the disks)
+ * clipped to the box along its periodic axes, where their images are. */
+static int submit(rd_renderer *r, size_t disk_vertices, const rd_view *view, const rl_layout *l,
+                  char *err, size_t errlen)
+{
+    glClear(GL_COLOR_BUFFER_BIT);
+    /* Orphan and refill: the driver never waits for the previous frame. */
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->count * FLOATS_PER_VERTEX * sizeof(float)),
+                 r->vertices, GL_STREAM_DRAW);
+    if (view->boundary == DS_BOUNDARY_WALLS) {
+        glDrawArrays(GL_TRIANGLES, 0, (GLsizei)r->count);
+    } else {
+        /* The pixels whose centres the box holds; the half pixel of rim
+         * beyond is under the outline. */
+        const int x0 = (int)floor(rl_px(l, 0.0)), x1 = (int)ceil(rl_px(l, l->box));
+        const int y0 = view->boundary == DS_BOUNDARY_PERIODIC ? (int)floor(rl_py(l, 0.0)) : 0;
+        const int y1 =
+            view->boundary == DS_BOUNDARY_PERIODIC ? (int)ceil(rl_py(l, l->box_y)) : l->size;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(x0, y0, x1 - x0, y1 - y0);
+        glDrawArrays(GL_TRIANGLES, 0, (GLsizei)disk_vertices);
+        glDisable(GL_SCISSOR_TEST);
+        glDrawArrays(GL_TRIANGLES, (GLint)disk_vertices, (GLsizei)(r->count - disk_vertices));
+    }
+    GLenum e = glGetError();
+    if (e != GL_NO_ERROR) {
+        snprintf(err, errlen, "drawing failed (GL error 0x%x)", (unsigned)e);
+        return -1;
+    }
+    return 0;
+}
+
+int rd_draw(rd_renderer *r, const ds_frame *frame, const rd_view *view, char *err, size_t errlen)
 {
     const rd_colour colour = r->opt.colour != RD_COLOUR_AUTO ? r->opt.colour
                              : frame->columns == 5           ? RD_COLOUR_SPEED
@@ -266,83 +389,45 @@ int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen)
         snprintf(err, errlen, "--colour speed needs frames of \"x y R vx vy\" lines");
         return -1;
     }
-    const int speeds = colour == RD_COLOUR_SPEED, psi6 = colour == RD_COLOUR_PSI6,
-              sizes = colour == RD_COLOUR_SIZE;
+    palette p = {colour == RD_COLOUR_SPEED,
+                 colour == RD_COLOUR_PSI6,
+                 colour == RD_COLOUR_SIZE,
+                 0.0,
+                 INFINITY,
+                 0.0,
+                 NULL,
+                 NULL};
     /* Sizes: the smallest radius at the map's bottom, the largest at its
      * top; one radius sits in the middle. */
-    double rmin = INFINITY, rmax = 0.0;
-    for (size_t i = 0; sizes && i < frame->count; ++i) {
-        rmin = fmin(rmin, frame->disks[i].r);
-        rmax = fmax(rmax, frame->disks[i].r);
+    for (size_t i = 0; p.sizes && i < frame->count; ++i) {
+        p.rmin = fmin(p.rmin, frame->disks[i].r);
+        p.rmax = fmax(p.rmax, frame->disks[i].r);
     }
-    const double box_y = r->opt.box_y > 0.0 ? r->opt.box_y : r->opt.box;
     rl_layout l;
-    rl_make_rect(&l, r->opt.size, r->opt.box, box_y, speeds || psi6 || sizes);
-    const double vmax = !speeds ? 0.0 : r->opt.vmax > 0.0 ? r->opt.vmax : rc_speed_scale(frame);
-
-    r->count = 0;
-    if (grow(r, frame->count * VERTICES_PER_QUAD)) {
-        snprintf(err, errlen, "out of memory for %zu disks", frame->count);
-        return -1;
-    }
-    double *re = NULL, *im = NULL;
-    if (psi6) {
-        re = malloc(frame->count * sizeof *re);
-        im = malloc(frame->count * sizeof *im);
-        if (!re || !im)
+    rl_make_view(&l, r->opt.size, view->box_x, view->box_y, p.speeds || p.psi6 || p.sizes,
+                 r->opt.label);
+    p.vmax = !p.speeds ? 0.0 : r->opt.vmax > 0.0 ? r->opt.vmax : rc_speed_scale(frame);
+    if (p.psi6) {
+        p.re = malloc(frame->count * sizeof *p.re);
+        p.im = malloc(frame->count * sizeof *p.im);
+        if (!p.re || !p.im)
             snprintf(err, errlen, "out of memory for %zu disks", frame->count);
-        if (!re || !im || frame_psi6(r, frame, box_y, re, im, err, errlen) != 0) {
-            free(re);
-            free(im);
+        if (!p.re || !p.im || frame_psi6(frame, view, p.re, p.im, err, errlen) != 0) {
+            free(p.re);
+            free(p.im);
             return -1;
         }
     }
-    for (size_t i = 0; i < frame->count; ++i) {
-        const ds_frame_disk *d = &frame->disks[i];
-        const double cx = rl_px(&l, d->x), cy = rl_py(&l, d->y), rad = d->r * l.scale;
-        rc_rgb c = RC_DISK;
-        if (speeds) {
-            double v = d->vx * d->vx + d->vy * d->vy;
-            c = rc_viridis(sqrt(v) / vmax);
-        } else if (psi6) {
-            c = rc_psi6(re[i], im[i]);
-        } else if (sizes) {
-            c = rc_viridis(rmax > rmin ? (d->r - rmin) / (rmax - rmin) : 0.5);
-        }
-        /* One pixel beyond the radius holds the whole antialiased ramp. */
-        const double e = rad + 1.0;
-        quad(r, cx - e, cy - e, cx + e, cy + e, cx, cy, rad, c);
-    }
-    free(re);
-    free(im);
-    /* The outline goes over the disks: a disk touching a wall overlaps the
-     * edge by a fraction of a step, and the box must stay visible. */
-    const double h = 0.5 * l.outline;
-    const double a0 = rl_px(&l, 0.0), a1 = rl_px(&l, l.box);
-    const double b0 = rl_py(&l, 0.0), b1 = rl_py(&l, l.box_y);
-    if (rect(r, a0 - h, b0 - h, a1 + h, b0 + h, RC_OUTLINE) ||
-        rect(r, a0 - h, b1 - h, a1 + h, b1 + h, RC_OUTLINE) ||
-        rect(r, a0 - h, b0 + h, a0 + h, b1 - h, RC_OUTLINE) ||
-        rect(r, a1 - h, b0 + h, a1 + h, b1 - h, RC_OUTLINE) ||
-        (speeds && speed_legend(r, &l, vmax)) ||
-        /* The psi6 bar: bond orientations from -30 to +30 degrees at full
-         * order, t as rc_psi6 maps the phase. */
-        (psi6 && legend(r, &l, rc_cyclic, "-30", "30", "psi6")) ||
-        (sizes && size_legend(r, &l, rmin, rmax))) {
-        snprintf(err, errlen, "out of memory");
+    r->count = 0;
+    const int failed = disk_quads(r, frame, view, &l, &p);
+    const size_t disk_vertices = r->count;
+    free(p.re);
+    free(p.im);
+    if (failed || decorations(r, &l, &p, view->label)) {
+        snprintf(err, errlen, "out of memory for %zu disks", frame->count);
         return -1;
     }
-    glClear(GL_COLOR_BUFFER_BIT);
-    /* Orphan and refill: the driver never waits for the previous frame. */
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->count * FLOATS_PER_VERTEX * sizeof(float)),
-                 r->vertices, GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, (GLsizei)r->count);
-    GLenum e = glGetError();
-    if (e != GL_NO_ERROR) {
-        snprintf(err, errlen, "drawing failed (GL error 0x%x)", (unsigned)e);
-        return -1;
-    }
-    return 0;
+    return submit(r, disk_vertices, view, &l, err, errlen);
 }
 
 void rd_destroy(rd_renderer *r)

@@ -22,17 +22,25 @@ typedef enum rd_colour {
 
 typedef struct rd_options {
     int size;         /* image side in pixels */
-    double box;       /* box width in frame units (1000) */
-    double box_y;     /* box height, 0 = box (square) */
-    int periodic;     /* psi6 neighbours across the edges (minimum image) */
     rd_colour colour; /* what the colours show */
     double vmax;      /* top of the speed scale for 5-column frames, 0 = automatic */
+    int label;        /* a line above the box holds each frame's label (rd_view) */
 } rd_options;
+
+/* What one frame is drawn in, besides its disks. */
+typedef struct rd_view {
+    double box_x, box_y; /* the box's sides, in frame units */
+    /* Walls: disks are drawn where they are. Periodic (channel: along x
+     * only): a disk across an edge is drawn on both sides, clipped to the
+     * box, and psi6 counts neighbours across the edges. */
+    ds_boundary boundary;
+    const char *label; /* text above the box's top-left corner ("t = 2.5"); NULL: none */
+} rd_view;
 
 /* Compiles the shaders and makes the buffers, once per context. */
 rd_renderer *rd_create(const rd_options *opt, char *err, size_t errlen);
 /* Draws the frame into the current context's framebuffer. */
-int rd_draw(rd_renderer *r, const ds_frame *frame, char *err, size_t errlen);
+int rd_draw(rd_renderer *r, const ds_frame *frame, const rd_view *view, char *err, size_t errlen);
 void rd_destroy(rd_renderer *r); /* NULL is allowed */
 
 /* "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (...)" of the current context. */

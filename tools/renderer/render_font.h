@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* A 5x7 bitmap font for the legend: digits, '.', '-', '+', 'e' and the
- * letters of "speed" and "psi6". Enough for the labels; no font library needed. */
+/* A 5x7 bitmap font for the legend and the label: digits, '.', '-', '+',
+ * '=' and the letters of "speed", "psi6", "radius", "frame" and "t". Enough
+ * for the labels; no font library needed. */
 #ifndef RENDER_FONT_H
 #define RENDER_FONT_H
 

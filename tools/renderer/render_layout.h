@@ -15,6 +15,8 @@ typedef struct rl_layout {
     int legend;                        /* a speed legend is drawn right of the box */
     double bar_x, bar_y, bar_w, bar_h; /* the legend's colour bar */
     double text_px;                    /* size of one font pixel */
+    int label;                         /* a line of text is drawn above the box */
+    double label_x, label_y;           /* its bottom-left corner */
 } rl_layout;
 
 /* size >= RL_MIN_SIZE. The box keeps a margin on every side so its outline
@@ -26,6 +28,9 @@ typedef struct rl_layout {
 #define RL_MAX_SIZE 16384
 void rl_make(rl_layout *l, int size, double box, int legend);
 void rl_make_rect(rl_layout *l, int size, double box_x, double box_y, int legend);
+/* rl_make_rect with, if label, a line of text above the box: the box is
+ * then as large as fits below it. */
+void rl_make_view(rl_layout *l, int size, double box_x, double box_y, int legend, int label);
 
 /* Frame coordinates to pixels. */
 static inline double rl_px(const rl_layout *l, double x) { return l->x0 + x * l->scale; }
