@@ -334,12 +334,12 @@ static block_stats blocked(double *x, int n)
  * one up to the ensembles' difference at finite N, -rho Pi'' / (2 N
  * Pi'^2) relative (Pi = beta P as a function of rho), 1e-3 of eta at 0.50
  * by Henderson's equation of state, below the errors here; near 0.70 a
- * system of 64 disks has a loop in its canonical pressure (the
- * liquid-hexatic transition: beta P sigma^2 = 8.14 at 0.68 and 8.18 at
- * 0.70), where the isobaric area fraction spreads over both sides of it
- * and its mean is not the canonical one (0.681 +- 0.002 measured over
- * 1.3 10^6 steps; docs/physics.md). The blocked errors take the
- * area's long memory into account. */
+ * system of 64 disks has a flat canonical pressure (the liquid-hexatic
+ * transition: beta P sigma^2 = 8.104 +- 0.018 at 0.68, 8.126 +- 0.023 at
+ * 0.69 and 8.115 +- 0.023 at 0.70), where the isobaric area fraction
+ * spreads over the whole flat part and its mean is not the canonical one
+ * (0.6888 +- 0.0006 over 10^7 steps; docs/physics.md). The blocked
+ * errors take the area's long memory into account. */
 static void isobaric_meets_canonical(double eta, int compare_eta)
 {
     const size_t n = 64;
