@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* The disks command's one header: what its files share. options.c reads
- * the command line; start.c checks where the run starts (a new request,
- * --restart's checkpoint, --from's frame); outputs.c checks every path
- * and makes --out; frames_json.c describes the run beside its frames;
- * files.c writes files so that no partial one is ever seen, and decides
- * what a signal does; checkpoint.c writes checkpoints; report.c says what
- * went wrong; disks.c runs. The command uses the library only through
- * disk_sim.h, and only it prints. */
+ * the command line, usage.c says what it takes (--help); start.c checks
+ * where the run starts (a new request, --restart's checkpoint, --from's
+ * frame); outputs.c checks every path and makes --out; frames_json.c
+ * describes the run beside its frames; files.c writes files so that no
+ * partial one is ever seen, and decides what a signal does; checkpoint.c
+ * writes checkpoints; report.c says what went wrong; disks.c runs. The
+ * command uses the library only through disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H
 
@@ -55,6 +55,15 @@ typedef struct options {
     /* --measure-after T: the observables reset at the first frame at t >=
      * T (0: never) */
     double measure_after;
+    /* --thermostat KIND (NONE: not given), --temperature KT,
+     * --thermostat-rate NU (0: not given, the library's default) */
+    ds_thermostat thermostat;
+    double temperature, thermostat_rate;
+    /* --pressure BP (0: none), --barostat-every K, --barostat-step D (0:
+     * the library's defaults), --barostat-aspect */
+    double pressure, barostat_step;
+    uint64_t barostat_every;
+    int barostat_aspect;
     /* Which of the run's settings the command line gave: a restart takes
      * the others from its checkpoint (run_settings.c). */
     int frames_given, steps_given, out_given;
@@ -80,6 +89,9 @@ void die(int code, const char *fmt, ...) DIES;
  * begins with the command's name for it ("R = 600 ...", "--grow 5 ...");
  * out (cap bytes) holds it, or the library's sentence is returned. */
 const char *in_command_words(const ds_error *err, char *out, size_t cap);
+
+/* usage.c: the help (--help), on stdout */
+void print_usage(void);
 
 /* options.c */
 options parse_args(int argc, char **argv);
@@ -108,6 +120,9 @@ ds_sim *create_fresh(const ds_params *p, const ds_mixture *mixture);
 /* --grow started, once the simulation exists (a new one, a checkpoint's
  * or a frame's), or refused with the library's reason. */
 void start_growth(const options *o, ds_sim *sim);
+/* --thermostat and --pressure set likewise (a checkpoint's go on unless
+ * given again). */
+void start_ensemble(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
 void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);

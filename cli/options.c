@@ -11,70 +11,6 @@
 
 #include "cli.h"
 
-static const char *const usage_text =
-    "usage: disks N R [options]\n"
-    "       disks N --area-fraction ETA [options]\n"
-    "       disks --restart FILE [options]\n"
-    "       disks [N R] --from FRAME [options]\n"
-    "Simulates N hard disks of radius R in the box [0,L] x [0,H] (1000 x 1000\n"
-    "unless told) and writes frame_0000.txt, frame_0001.txt, ... with one line\n"
-    "\"x y R\" per disk.\n"
-    "\n"
-    "options:\n"
-    "  --seed S             random seed, 0..2^64-1 (default %u)\n"
-    "  --frames F           frames to write, 1..10000 (default 500)\n"
-    "  --steps-per-frame K  steps of dt = 0.001 between frames (default 100)\n"
-    "  --out DIR            directory for the frames, created if missing (default .)\n"
-    "  --overwrite          remove the frames of another run from DIR instead of\n"
-    "                       refusing to mix them with this run's\n"
-    "  --velocities         write \"x y R vx vy\" lines instead of \"x y R\"\n"
-    "  --stats FILE         write one CSV row of observables per frame to FILE\n"
-    "  --trajectory FILE    also write every frame to FILE, one extended XYZ trajectory\n"
-    "  --gsd FILE           also write every frame to FILE, one GSD trajectory (HOOMD)\n"
-    "  --checkpoint FILE    write an exact checkpoint to FILE at the end, and when\n"
-    "                       stopped by a signal (INT, TERM, HUP)\n"
-    "  --checkpoint-every K also every K frames\n"
-    "  --restart FILE       continue the run a checkpoint saved: N, R, the box, the\n"
-    "                       integrator and the frame number come from FILE\n"
-    "  --from FRAME         start at time 0 from the disks of FRAME, a frame written\n"
-    "                       with --velocities (N and R from it)\n"
-    "  --lattice            start on a triangular lattice instead of at random\n"
-    "  --boundary B         walls (the default), periodic (nearest image along both\n"
-    "                       axes) or channel (periodic along x, walls at y = 0 and\n"
-    "                       y = box_y)\n"
-    "  --periodic           the same as --boundary periodic\n"
-    "  --box L              width of the box, 0 < L <= 1e9 (default 1000)\n"
-    "  --box-y H            height of the box, 0 < H <= 1e9 (default L, square)\n"
-    "  --area-fraction ETA  instead of R: the R at which the disks cover ETA of the\n"
-    "                       box (0 < ETA < 1; with --mixture, R of the small ones)\n"
-    "  --speed V            every disk's starting speed (default 100)\n"
-    "  --dt DT              the time step, and the time between frames' steps with\n"
-    "                       the event-driven integrator; with chain a step carries\n"
-    "                       N x speed x DT of chain displacement (default 0.001)\n"
-    "  --mixture RATIO:FRACTION\n"
-    "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
-    "                       radius RATIO x R, the rest R (e.g. 1.4:0.5)\n"
-    "  --mass M             equal (every disk mass 1, the default) or area (mass\n"
-    "                       (r/R)^2)\n"
-    "  --grow RATE          compress: every radius grows as r (1 + RATE t)\n"
-    "                       (event-driven, periodic); until Z passes 1e6, or:\n"
-    "  --until-eta ETA      stop growing at area fraction ETA, then run on\n"
-    "  --until-z Z          stop growing, and the run, once Z passes Z (1 < Z <= 1e9)\n"
-    "  --measure-after T    discard the start: the pressures and the wall counts of\n"
-    "                       --stats and the report are averaged from the first frame\n"
-    "                       at time >= T on\n"
-    "  --integrator I       step (the fixed time step, default), event (exact\n"
-    "                       event-driven dynamics) or chain (event-chain Monte Carlo:\n"
-    "                       equilibrium sampling without dynamics)\n"
-    "  --broadphase B       step: sap, strips, brute or auto; event and chain:\n"
-    "                       cells, brute or auto (default auto)\n"
-    "  -q, --quiet          print nothing but errors and warnings\n"
-    "  -h, --help           show this help and exit\n"
-    "  --version            show the version and exit\n"
-    "\n"
-    "exit status: 0 success, 1 run-time error (placement, I/O, a file that does not\n"
-    "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n";
-
 /* The combinations the command refuses: a checkpoint holds the system
  * (N, R, the box, the integrator and its broad phase, and the state the
  * seed and placement made), so --restart takes none of them; a frame holds
@@ -113,6 +49,23 @@ static void check_combination(const options *o, int npos, const char *system_opt
         die(EXIT_USAGE, "--grow needs --integrator event (only exact dynamics grows disks)");
     if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
         die(EXIT_USAGE, "--grow needs --periodic (the compression runs in a periodic box)");
+    /* A heat bath's and a barostat's numbers need them; growth takes out
+     * its own heat in a box of its own. */
+    if ((o->temperature > 0.0 || o->thermostat_rate > 0.0) && o->thermostat == DS_THERMOSTAT_NONE)
+        die(EXIT_USAGE, "%s needs --thermostat andersen|isokinetic",
+            o->temperature > 0.0 ? "--temperature" : "--thermostat-rate");
+    if ((o->barostat_every || o->barostat_step > 0.0 || o->barostat_aspect) && !(o->pressure > 0.0))
+        die(EXIT_USAGE, "%s needs --pressure BP",
+            o->barostat_every        ? "--barostat-every"
+            : o->barostat_step > 0.0 ? "--barostat-step"
+                                     : "--barostat-aspect");
+    if (o->pressure > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
+        die(EXIT_USAGE, "--pressure needs --periodic (the barostat moves a periodic box only)");
+    if (o->grow_rate > 0.0 && (o->thermostat != DS_THERMOSTAT_NONE || o->pressure > 0.0))
+        die(EXIT_USAGE,
+            "%s cannot be given with --grow: growth takes out its own heat in a box "
+            "of its own",
+            o->pressure > 0.0 ? "--pressure" : "--thermostat");
     /* Growth measures its own Z over windows of collisions, and its
      * pressure is not an equilibrium one to average. */
     if (o->measure_after > 0.0 && o->grow_rate > 0.0)
@@ -150,7 +103,13 @@ enum {
     DT,
     SPEED,
     AREA_FRACTION,
-    GSD
+    GSD,
+    THERMOSTAT,
+    TEMPERATURE,
+    THERMOSTAT_RATE,
+    PRESSURE,
+    BAROSTAT_EVERY,
+    BAROSTAT_STEP
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -180,7 +139,13 @@ static const struct {
              {"--dt", 1},
              {"--speed", 1},
              {"--area-fraction", 1},
-             {"--gsd", 0}};
+             {"--gsd", 0},
+             {"--thermostat", 0},
+             {"--temperature", 0},
+             {"--thermostat-rate", 0},
+             {"--pressure", 0},
+             {"--barostat-every", 0},
+             {"--barostat-step", 0}};
 
 /* The first option given that describes the system, the first that
  * describes the placement (see check_combination), and the boundary
@@ -199,6 +164,32 @@ static void boundary_arg(options *o, const char *value, first_options *first)
         die(EXIT_USAGE, "two boundaries asked for: %s and %s (--periodic is --boundary periodic)",
             first->boundary, value);
     first->boundary = value;
+}
+
+/* The heat bath's and the barostat's options: numbers > 0 here, held to
+ * their bounds by the library (start.c). */
+static void ensemble_option(options *o, int which, const char *value)
+{
+    ds_error err;
+    switch (which) {
+    case THERMOSTAT:
+        refuse_name(ds_thermostat_parse(value, &o->thermostat, &err), &err);
+        break;
+    case TEMPERATURE:
+        o->temperature = positive_arg("--temperature", value, 0.0);
+        break;
+    case THERMOSTAT_RATE:
+        o->thermostat_rate = positive_arg("--thermostat-rate", value, 0.0);
+        break;
+    case PRESSURE:
+        o->pressure = positive_arg("--pressure", value, 0.0);
+        break;
+    case BAROSTAT_EVERY:
+        o->barostat_every = count_arg("--barostat-every", value, 1, 1000000000u);
+        break;
+    default:
+        o->barostat_step = positive_arg("--barostat-step", value, 0.0);
+    }
 }
 
 /* Option which (names[]) with its value, if it is one of the run's: its
@@ -299,10 +290,13 @@ static void set_option(options *o, int which, const char *value, first_options *
     case SPEED:
         o->speed = positive_arg("--speed", value, 0.0);
         break;
-    default:
+    case AREA_FRACTION:
         o->area_fraction = positive_arg("--area-fraction", value, 0.0);
         if (!(o->area_fraction < 1.0))
             die(EXIT_USAGE, "--area-fraction must be a number > 0 and < 1, got '%s'", value);
+        break;
+    default:
+        ensemble_option(o, which, value);
     }
 }
 
@@ -353,7 +347,7 @@ static void value_option(options *o, int argc, char **argv, int *i, first_option
 static int flag_option(options *o, const char *a, first_options *first)
 {
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-        printf(usage_text, (unsigned)DS_DEFAULT_SEED);
+        print_usage();
         exit(0);
     }
     if (strcmp(a, "--version") == 0) {
@@ -370,6 +364,8 @@ static int flag_option(options *o, const char *a, first_options *first)
         o->placement = DS_PLACEMENT_LATTICE;
     else if (strcmp(a, "--periodic") == 0)
         boundary_arg(o, "periodic", first);
+    else if (strcmp(a, "--barostat-aspect") == 0)
+        o->barostat_aspect = 1;
     else
         return 0;
     if (strcmp(a, "--lattice") == 0 && !first->placement)

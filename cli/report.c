@@ -36,6 +36,11 @@ static const char *const command_names[][2] = {
     {"rate", "--grow"},
     {"until_eta", "--until-eta"},
     {"until_z", "--until-z"},
+    {"thermostat", "--thermostat"},
+    {"kt", "--temperature"},
+    {"collision_rate", "--thermostat-rate"},
+    {"pressure", "--pressure"},
+    {"max_step", "--barostat-step"},
 };
 
 const char *in_command_words(const ds_error *err, char *out, size_t cap)

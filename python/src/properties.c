@@ -34,6 +34,9 @@ static const real_getter get_time = {ds_sim_get_time}, get_radius = {ds_sim_get_
                          get_radius_max = {ds_sim_get_radius_max},
                          get_area_fraction = {ds_sim_get_area_fraction},
                          get_growth_z = {ds_sim_get_growth_z},
+                         get_thermostat_kt = {ds_sim_get_thermostat_temperature},
+                         get_barostat_pressure = {ds_sim_get_barostat_pressure},
+                         get_barostat_acceptance = {ds_sim_get_barostat_acceptance},
                          get_temperature = {ds_sim_get_temperature},
                          get_compressibility_factor = {ds_sim_get_compressibility_factor};
 static const count_getter get_steps = {ds_sim_get_steps}, get_n = {count_of},
@@ -78,6 +81,9 @@ static PyObject *name_property(dspy_sim *self, void *closure)
     case DSPY_GROWTH_STATE:
         value = (int)ds_sim_get_growth_state(sim);
         break;
+    case DSPY_THERMOSTAT:
+        value = (int)ds_sim_get_thermostat(sim);
+        break;
     case DSPY_MASS_RULE:
     case DSPY_FORMAT:
     case DSPY_KINDS:
@@ -88,7 +94,7 @@ static PyObject *name_property(dspy_sim *self, void *closure)
 }
 static const int integrator_kind = DSPY_INTEGRATOR, boundary_kind = DSPY_BOUNDARY,
                  broadphase_kind = DSPY_BROADPHASE, placement_kind = DSPY_PLACEMENT,
-                 growth_state_kind = DSPY_GROWTH_STATE;
+                 growth_state_kind = DSPY_GROWTH_STATE, thermostat_kind = DSPY_THERMOSTAT;
 
 /* Every disk's radius (masses 0) or mass (1) as a new (n,) array. */
 static PyObject *per_disk(dspy_sim *self, int masses)
@@ -300,6 +306,14 @@ PyGetSetDef dspy_sim_getset[] = {
     REAL(growth_z, "The reduced pressure Z growth measured over its last window of 2 n\n"
                    "collisions (when it jammed, the window that stopped it); 0 before its\n"
                    "first window, and for a simulation that never grew."),
+    NAME(thermostat, "The heat bath set (set_thermostat): 'none', 'andersen' or 'isokinetic'."),
+    REAL(thermostat_kt, "The heat bath's temperature kT (set_thermostat), an energy; 0 without\n"
+                        "one."),
+    REAL(barostat_pressure, "The reduced pressure beta P sigma^2 of the barostat (set_barostat);\n"
+                            "0 without one."),
+    REAL(barostat_acceptance,
+         "The fraction of the barostat's area moves accepted since it was set (0 before\n"
+         "the first): about a third to a half is a good max_step."),
     {"params", (getter)params_property, NULL,
      "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
      "same simulation at time 0. A Sim from load() has those the library tells: no\n"

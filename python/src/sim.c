@@ -87,6 +87,9 @@ static const char sim_doc[] = DSPY_SIM_SIGNATURE
     "\n"
     "Compression: set_growth() grows every radius (integrator='event', periodic),\n"
     "growth_state and growth_z follow it, contacts() counts a packing's contacts.\n"
+    "Ensembles: set_thermostat() holds the temperature (Andersen's heat bath, the\n"
+    "canonical ensemble), set_barostat() the pressure (Monte Carlo moves of a\n"
+    "periodic box, the isobaric ensemble).\n"
     "\n"
     "Raises ArgumentError (a ValueError) with the library's sentence for a value it\n"
     "refuses (e.field names the argument; 'mixture' for the mixture's values), NoMemoryError for "
@@ -476,6 +479,10 @@ static PyMethodDef sim_methods[] = {
      "The arrays are copied: changing them afterwards changes nothing."},
     {"set_growth", (PyCFunction)(void (*)(void))dspy_sim_set_growth, METH_VARARGS | METH_KEYWORDS,
      dspy_set_growth_doc},
+    {"set_thermostat", (PyCFunction)(void (*)(void))dspy_sim_set_thermostat,
+     METH_VARARGS | METH_KEYWORDS, dspy_set_thermostat_doc},
+    {"set_barostat", (PyCFunction)(void (*)(void))dspy_sim_set_barostat,
+     METH_VARARGS | METH_KEYWORDS, dspy_set_barostat_doc},
     {"scale_velocities", (PyCFunction)(void (*)(void))dspy_sim_scale_velocities,
      METH_VARARGS | METH_KEYWORDS, dspy_scale_velocities_doc},
     {"contacts", (PyCFunction)(void (*)(void))dspy_sim_contacts, METH_VARARGS | METH_KEYWORDS,

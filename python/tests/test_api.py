@@ -53,6 +53,7 @@ def test_the_names_are_the_librarys():
     assert set(disksim.BROADPHASES) == {"sap", "brute", "strips", "auto", "cells"}
     assert disksim.MASS_RULES == ("equal", "area")
     assert disksim.GROWTH_STATES == ("none", "growing", "reached_eta", "jammed")
+    assert disksim.THERMOSTATS == ("none", "andersen", "isokinetic")
     assert disksim.JAMMED_Z == 1e6
     assert disksim.VELOCITY_MAX == 1e12
     assert disksim.__version__ == disksim.library_version

@@ -57,15 +57,10 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
          * the tensor times the time. */
         ds_tally_flight(&sim->tally, sim->world.dt);
         const double now = (double)sim->steps * sim->world.dt;
-        if (ds_protocols_due(&sim->protocols, now, now))
+        while (ds_protocols_due(&sim->protocols, now, now))
             ds_protocols_fire(sim, now, now);
         if (sim->protocols.stepping) {
-            st = ds_protocols_step_end(sim);
-            if (st != DS_OK)
-                ds_refuse(err, st, "steps", (double)sim->steps, NAN,
-                          "steps: a protocol could not go on after step %llu: the run stopped "
-                          "there",
-                          (unsigned long long)sim->steps);
+            st = ds_protocols_step_end(sim, err); /* names the protocol and the step */
             c = sim->state;
             c->kt = ds_ch_kt(&sim->disks);
         }
@@ -165,14 +160,30 @@ static double compressibility(const ds_sim *sim)
 
 static double now_of(const ds_sim *sim) { return (double)sim->steps * sim->world.dt; }
 
-static void kinetic(const ds_sim *sim, double *k, double *momentum_energy)
+/* The velocities as they were set: chains never change them, so they
+ * only carry the temperature (the heat bath and the barostat, which
+ * would need set_velocity and resize, refuse the chains). */
+static void kinetic(const ds_sim *sim, ds_kinetic *out)
 {
     const ds_disks *d = &sim->disks;
-    *k = ds_ch_kt(d) * (double)d->n;
-    /* No momentum is conserved: none of the energy is the centre of
-     * mass's alone. */
-    *momentum_energy = 0.0;
+    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0;
+        k += m * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
+        px += m * d->vx[i];
+        py += m * d->vy[i];
+        mass += m;
+    }
+    out->k = 0.5 * k;
+    out->px = px;
+    out->py = py;
+    out->mass = mass;
 }
+
+/* A barostat's move: the box and the centres scaled, the chains' state
+ * made anew for them (core/rescale.c); the chain under way ends there,
+ * as at any step's end that makes a new state. */
+static ds_status resize(ds_sim *sim, double sx, double sy) { return ds_rescale_box(sim, sx, sy); }
 
 /* The cells, or brute force: every disk a candidate. */
 static int fits(ds_broadphase bp) { return bp == DS_BROADPHASE_CELLS || bp == DS_BROADPHASE_BRUTE; }
@@ -231,5 +242,7 @@ const ds_integrator_ops ds_event_chain_ops = {
     .compressibility = compressibility,
     .now = now_of,
     .kinetic = kinetic,
-    /* No growing radii: growth refuses the chains. */
+    .resize = resize,
+    /* No set_velocity: velocities are the chains' temperature only, so a
+     * heat bath refuses them. No growing radii: growth refuses the chains. */
 };

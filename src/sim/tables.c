@@ -20,6 +20,8 @@ static const ds_integrator_ops *const integrators[DS_INTEGRATOR_COUNT] = {
 
 const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT] = {
     [DS_PROTOCOL_GROWTH] = &ds_growth_ops,
+    [DS_PROTOCOL_THERMOSTAT] = &ds_thermostat_ops,
+    [DS_PROTOCOL_BAROSTAT] = &ds_barostat_ops,
 };
 
 static const ds_writer_ops *const writers[DS_FORMAT_COUNT] = {

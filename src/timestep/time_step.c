@@ -58,14 +58,29 @@ static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
     resolve(d, a, b, dx, dy, c->tally);
 }
 
+/* The time step's time is the simulation's: steps dt. */
+static double now_of(const ds_sim *sim) { return (double)sim->steps * sim->world.dt; }
+
+/* The protocols at the end of a step: each of their moments that fell in
+ * it, at its end, the only time the step knows (a heat bath's
+ * collisions, in the order of their times), then their step's end (a
+ * barostat's move may build the state again). */
+static ds_status protocols_after_step(ds_sim *sim, ds_error *err)
+{
+    const double now = now_of(sim);
+    while (ds_protocols_due(&sim->protocols, now, now))
+        ds_protocols_fire(sim, now, now);
+    return sim->protocols.stepping ? ds_protocols_step_end(sim, err) : DS_OK;
+}
+
 static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
-    (void)err; /* a step needs no memory */
+    ds_status st = DS_OK; /* a step needs no memory; a protocol's step's end may */
     ds_bp *bp = sim->state;
     const ds_world *w = &sim->world;
     const ds_pair_fn on_pair = ds_box_any_periodic(&w->box) ? resolve_pair_periodic : resolve_pair;
     pair_context ctx = {&sim->tally, &w->box};
-    for (uint64_t s = 0; s < steps; ++s) {
+    for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* The step's flight is at the velocities its start has. */
         ds_tally_flight(&sim->tally, w->dt);
         ds_move(&sim->disks, w, &sim->tally);
@@ -73,9 +88,13 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
         sim->tally.pairs_tested += ds_bp_find_pairs(bp, &sim->disks, on_pair, &ctx);
         ds_timer_stop(&sim->collision_timer);
         ++sim->steps;
+        if (sim->protocols.stepping || sim->protocols.next < INFINITY) {
+            st = protocols_after_step(sim, err);
+            bp = sim->state; /* a new box has a new broad phase */
+        }
     }
     ds_disks_rebuild_slots(&sim->disks);
-    return DS_OK;
+    return st;
 }
 
 /* The time step has the sweeps and brute force. */
@@ -141,6 +160,8 @@ static void destroy(ds_sim *sim)
 static ds_status scale_velocities(ds_sim *sim, double factor)
 {
     ds_disks *d = &sim->disks;
+    for (int c = 0; c < 3; ++c)
+        sim->tally.kinetic[c] *= factor * factor;
     for (size_t k = 0; k < d->n; ++k) {
         d->vx[k] *= factor;
         d->vy[k] *= factor;
@@ -175,6 +196,41 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk d)
     return DS_OK;
 }
 
+/* The kinetic energy, momentum and mass of the columns, which are the
+ * state. */
+static void kinetic(const ds_sim *sim, ds_kinetic *out)
+{
+    const ds_disks *d = &sim->disks;
+    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0;
+        k += m * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
+        px += m * d->vx[i];
+        py += m * d->vy[i];
+        mass += m;
+    }
+    out->k = 0.5 * k;
+    out->px = px;
+    out->py = py;
+    out->mass = mass;
+}
+
+/* A heat bath's collision that fell in the step just taken, at its end:
+ * whether it fell early or late in the step, the step's flight and its
+ * collisions were at the velocity before, as with a redraw at the end. */
+static void set_velocity(ds_sim *sim, size_t k, double t, double vx, double vy)
+{
+    (void)t;
+    ds_disks *d = &sim->disks;
+    ds_tally_velocity(&sim->tally, d->m ? d->m[k] : 1.0, d->vx[k], d->vy[k], vx, vy);
+    d->vx[k] = vx;
+    d->vy[k] = vy;
+}
+
+/* The columns are the disks at the step boundary: the new box's state is
+ * built from them; the time is the simulation's, no origin moves. */
+static ds_status resize(ds_sim *sim, double sx, double sy) { return ds_rescale_box(sim, sx, sy); }
+
 const ds_integrator_ops ds_time_step_ops = {
     .name = "step",
     .min_room = 0.0, /* a step is a fixed amount of work, in any room */
@@ -189,6 +245,10 @@ const ds_integrator_ops ds_time_step_ops = {
     .save = save,
     .load = load,
     .scale_velocities = scale_velocities,
-    /* No services to protocols yet: radii grow only with exact contact
-     * times, so growth refuses the time step. */
+    /* The services to protocols it can give: a heat bath and a barostat;
+     * radii grow only with exact contact times, so growth refuses it. */
+    .now = now_of,
+    .kinetic = kinetic,
+    .set_velocity = set_velocity,
+    .resize = resize,
 };
