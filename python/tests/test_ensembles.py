@@ -27,7 +27,11 @@ def test_the_thermostats_are_the_librarys():
     assert (s.barostat_pressure, s.barostat_acceptance) == (0.0, 0.0)
 
 
-@pytest.mark.parametrize("integrator", disksim.INTEGRATORS)
+# The integrators that change velocities: event chains refuse a bath.
+BATHED = [i for i in disksim.INTEGRATORS if i != "chain"]
+
+
+@pytest.mark.parametrize("integrator", BATHED)
 def test_andersen_holds_the_kinetic_energy_at_n_kt_on_average(integrator):
     # K is Gamma(n, kT): mean n kT with a standard deviation sqrt(n) kT,
     # samples 0.1 apart (2 redraws a disk at nu = 20) nearly independent:
@@ -107,6 +111,17 @@ def test_a_refusal_names_the_keyword_at_fault(call, field):
     with pytest.raises(ArgumentError) as e:
         call(fluid())
     assert e.value.field == field
+
+
+def test_event_chains_take_a_barostat_and_refuse_a_bath():
+    s = fluid(integrator="chain")
+    with pytest.raises(ArgumentError, match="needs an integrator with velocities") as e:
+        s.set_thermostat("andersen")
+    assert e.value.field == "integrator"
+    s.set_barostat(50.0, every=1)
+    eta = s.area_fraction
+    s.run(200)
+    assert s.area_fraction != eta and s.barostat_acceptance > 0.0
 
 
 def test_the_barostat_moves_a_periodic_box_only():
