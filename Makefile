@@ -34,10 +34,10 @@ DISKS := $(OUT)disks
 
 # The library is every file of the folders of src/ (docs/architecture.md):
 # core/ (what every part shares: the disk arrays, the grid, the box),
-# timestep/ and event/ (the integrators), init/ (placement), observe/
+# timestep/, event/ and chain/ (the integrators), init/ (placement), observe/
 # (observables), io/ (text formats), and sim/ (the public API of the
 # simulation, over the parts). The command is every file of cli/.
-LIB_DIRS := core timestep event protocols init observe io sim
+LIB_DIRS := core timestep event chain protocols init observe io sim
 LIB_SRC := $(sort $(foreach d,$(LIB_DIRS),$(wildcard src/$(d)/*.c)))
 LIB_OBJ := $(LIB_SRC:src/%.c=$(BUILD)/%.o)
 

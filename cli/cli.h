@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* The disks command's one header: what its files share. options.c reads
- * the command line (usage.c its help); start.c checks where the run starts (a new request,
- * --restart's checkpoint, --from's frame); outputs.c checks every path
- * and makes --out; frames_json.c describes the run beside its frames;
- * files.c writes files so that no partial one is ever seen, and decides
- * what a signal does; checkpoint.c writes checkpoints; report.c says what
- * went wrong; disks.c runs. The command uses the library only through
- * disk_sim.h, and only it prints. */
+ * the command line, usage.c says what it takes (--help); start.c checks
+ * where the run starts (a new request, --restart's checkpoint, --from's
+ * frame); outputs.c checks every path and makes --out; frames_json.c
+ * describes the run beside its frames; files.c writes files so that no
+ * partial one is ever seen, and decides what a signal does; checkpoint.c
+ * writes checkpoints; report.c says what went wrong; disks.c runs. The
+ * command uses the library only through disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H
 
@@ -58,6 +58,15 @@ typedef struct options {
     /* --restitution, --wall-restitution (NaN: not given), --contact-time,
      * --drive, --gravity (0: not given) */
     double restitution, wall_restitution, contact_time, drive, gravity;
+    /* --thermostat KIND (NONE: not given), --temperature KT,
+     * --thermostat-rate NU (0: not given, the library's default) */
+    ds_thermostat thermostat;
+    double temperature, thermostat_rate;
+    /* --pressure BP (0: none), --barostat-every K, --barostat-step D (0:
+     * the library's defaults), --barostat-aspect */
+    double pressure, barostat_step;
+    uint64_t barostat_every;
+    int barostat_aspect;
     /* Which of the run's settings the command line gave: a restart takes
      * the others from its checkpoint (run_settings.c). */
     int frames_given, steps_given, out_given;
@@ -84,11 +93,11 @@ void die(int code, const char *fmt, ...) DIES;
  * out (cap bytes) holds it, or the library's sentence is returned. */
 const char *in_command_words(const ds_error *err, char *out, size_t cap);
 
+/* usage.c: the help (--help), on stdout */
+void print_usage(void);
+
 /* options.c */
 options parse_args(int argc, char **argv);
-/* usage.c: the text of --help, in two parts (the first with the default
- * seed's %u) */
-extern const char *const usage_text[2];
 
 /* arguments.c: a value of the command line, or a usage error naming it. */
 int is_decimal_text(const char *s); /* digits, '.', 'e', signs only (no hex, nan, inf) */
@@ -119,6 +128,9 @@ void start_growth(const options *o, ds_sim *sim);
  * --drive set on the simulation, or refused with the library's reason
  * (a usage error), before anything is made. */
 void start_granular(const options *o, ds_sim *sim);
+/* --thermostat and --pressure set likewise (a checkpoint's go on unless
+ * given again). */
+void start_ensemble(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
 void check_restart_frame_file(const options *o, const ds_sim *sim, long frame);

@@ -258,11 +258,20 @@ static void print_start(const run *r)
         snprintf(frames, sizeof frames, "%ld frames", o->frames);
     else
         snprintf(frames, sizeof frames, "frames %ld to %ld", r->first, r->last);
-    printf("disks: %sN = %zu, R = %g, %s%s, integrator = %s, broad phase = %s, %s x %llu steps -> "
-           "%s\n",
+    /* The ensemble is named only when a heat bath or a barostat is set. */
+    char ensemble[128] = "";
+    if (ds_sim_get_thermostat(sim) != DS_THERMOSTAT_NONE)
+        snprintf(ensemble, sizeof ensemble, ", thermostat = %s at kT = %g",
+                 ds_thermostat_name(ds_sim_get_thermostat(sim)),
+                 ds_sim_get_thermostat_temperature(sim));
+    if (ds_sim_get_barostat_pressure(sim) > 0.0)
+        snprintf(ensemble + strlen(ensemble), sizeof ensemble - strlen(ensemble), ", pressure = %g",
+                 ds_sim_get_barostat_pressure(sim));
+    printf("disks: %sN = %zu, R = %g, %s%s, integrator = %s, broad phase = %s%s, %s x %llu steps "
+           "-> %s\n",
            start, ds_sim_get_count(sim), ds_sim_get_radius(sim), what, box,
            ds_integrator_name(ds_sim_get_integrator(sim)),
-           ds_broadphase_name(ds_sim_get_broadphase(sim)), frames,
+           ds_broadphase_name(ds_sim_get_broadphase(sim)), ensemble, frames,
            (unsigned long long)o->steps_per_frame, o->out_dir);
 }
 
@@ -292,13 +301,25 @@ static void print_report(const run *r, long asked)
             printf(", the packing of a growth that jammed at Z = %.4g", ds_sim_get_growth_z(sim));
         printf("\n");
     }
+    const ds_integrator in = ds_sim_get_integrator(sim);
+    if (ds_sim_get_barostat_pressure(sim) > 0.0)
+        printf("box %.6g x %.6g at beta P sigma^2 = %g: area fraction %.6f, %.1f%% of the area "
+               "moves accepted\n",
+               ds_sim_get_box_width(sim), ds_sim_get_box_height(sim),
+               ds_sim_get_barostat_pressure(sim), ds_sim_get_area_fraction(sim),
+               100.0 * ds_sim_get_barostat_acceptance(sim));
     printf("collision processing time: %.6f s (%s over %llu steps)\n",
            ds_sim_get_collision_seconds(sim),
-           ds_sim_get_integrator(sim) == DS_INTEGRATOR_EVENT_DRIVEN
+           in == DS_INTEGRATOR_EVENT_DRIVEN
                ? "predicting and processing collisions, wall turns and cell crossings"
+           : in == DS_INTEGRATOR_EVENT_CHAIN
+               ? "moving the chains: their liftings, cell crossings and wall turns"
                : "sorting, pruning, testing and resolving pairs",
            (unsigned long long)ds_sim_get_steps(sim));
-    printf("disk-disk collisions: %llu, wall reflections: %llu\n",
+    /* Event chains have no collisions: a chain passes from disk to disk
+     * (a lifting) and turns at walls. */
+    printf(in == DS_INTEGRATOR_EVENT_CHAIN ? "liftings: %llu, wall turns: %llu\n"
+                                           : "disk-disk collisions: %llu, wall reflections: %llu\n",
            (unsigned long long)ds_sim_get_collision_count(sim),
            (unsigned long long)ds_sim_get_wall_count(sim));
     printf("simulation %.3f s, output %.3f s\n", r->sim_seconds, r->out_seconds);
@@ -403,6 +424,7 @@ static void start_run(run *r, options *o)
     }
     start_growth(o, r->sim);
     start_granular(o, r->sim);
+    start_ensemble(o, r->sim);
     r->last = r->first + o->frames - 1;
     /* --measure-after: a restart past T continues the checkpoint's
      * averages (its run made the reset); a T past the last frame would

@@ -46,9 +46,26 @@ static void check_combination(const options *o, int npos, const char *system_opt
     /* Growth needs exact contact times and no walls; a checkpoint's
      * system is checked once it is read. */
     if (o->grow_rate > 0.0 && !o->restart_path && o->integrator != DS_INTEGRATOR_EVENT_DRIVEN)
-        die(EXIT_USAGE, "--grow needs --integrator event (the time step cannot grow disks)");
+        die(EXIT_USAGE, "--grow needs --integrator event (only exact dynamics grows disks)");
     if (o->grow_rate > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
         die(EXIT_USAGE, "--grow needs --periodic (the compression runs in a periodic box)");
+    /* A heat bath's and a barostat's numbers need them; growth takes out
+     * its own heat in a box of its own. */
+    if ((o->temperature > 0.0 || o->thermostat_rate > 0.0) && o->thermostat == DS_THERMOSTAT_NONE)
+        die(EXIT_USAGE, "%s needs --thermostat andersen|isokinetic",
+            o->temperature > 0.0 ? "--temperature" : "--thermostat-rate");
+    if ((o->barostat_every || o->barostat_step > 0.0 || o->barostat_aspect) && !(o->pressure > 0.0))
+        die(EXIT_USAGE, "%s needs --pressure BP",
+            o->barostat_every        ? "--barostat-every"
+            : o->barostat_step > 0.0 ? "--barostat-step"
+                                     : "--barostat-aspect");
+    if (o->pressure > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
+        die(EXIT_USAGE, "--pressure needs --periodic (the barostat moves a periodic box only)");
+    if (o->grow_rate > 0.0 && (o->thermostat != DS_THERMOSTAT_NONE || o->pressure > 0.0))
+        die(EXIT_USAGE,
+            "%s cannot be given with --grow: growth takes out its own heat in a box "
+            "of its own",
+            o->pressure > 0.0 ? "--pressure" : "--thermostat");
     /* Growth measures its own Z over windows of collisions, and its
      * pressure is not an equilibrium one to average. */
     if (o->measure_after > 0.0 && o->grow_rate > 0.0)
@@ -91,7 +108,13 @@ enum {
     WALL_RESTITUTION,
     CONTACT_TIME,
     DRIVE,
-    GRAVITY
+    GRAVITY,
+    THERMOSTAT,
+    TEMPERATURE,
+    THERMOSTAT_RATE,
+    PRESSURE,
+    BAROSTAT_EVERY,
+    BAROSTAT_STEP
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -126,7 +149,13 @@ static const struct {
              {"--wall-restitution", 0},
              {"--contact-time", 0},
              {"--drive", 0},
-             {"--gravity", 0}};
+             {"--gravity", 0},
+             {"--thermostat", 0},
+             {"--temperature", 0},
+             {"--thermostat-rate", 0},
+             {"--pressure", 0},
+             {"--barostat-every", 0},
+             {"--barostat-step", 0}};
 
 /* The first option given that describes the system, the first that
  * describes the placement (see check_combination), and the boundary
@@ -161,6 +190,32 @@ static void granular_arg(options *o, int which, const char *value)
         o->drive = positive_arg("--drive", value, 0.0);
     else
         o->gravity = positive_arg("--gravity", value, 0.0);
+}
+
+/* The heat bath's and the barostat's options: numbers > 0 here, held to
+ * their bounds by the library (start.c). */
+static void ensemble_option(options *o, int which, const char *value)
+{
+    ds_error err;
+    switch (which) {
+    case THERMOSTAT:
+        refuse_name(ds_thermostat_parse(value, &o->thermostat, &err), &err);
+        break;
+    case TEMPERATURE:
+        o->temperature = positive_arg("--temperature", value, 0.0);
+        break;
+    case THERMOSTAT_RATE:
+        o->thermostat_rate = positive_arg("--thermostat-rate", value, 0.0);
+        break;
+    case PRESSURE:
+        o->pressure = positive_arg("--pressure", value, 0.0);
+        break;
+    case BAROSTAT_EVERY:
+        o->barostat_every = count_arg("--barostat-every", value, 1, 1000000000u);
+        break;
+    default:
+        o->barostat_step = positive_arg("--barostat-step", value, 0.0);
+    }
 }
 
 /* Option which (names[]) with its value, if it is one of the run's: its
@@ -267,7 +322,10 @@ static void set_option(options *o, int which, const char *value, first_options *
             die(EXIT_USAGE, "--area-fraction must be a number > 0 and < 1, got '%s'", value);
         break;
     default:
-        granular_arg(o, which, value);
+        if (which < THERMOSTAT)
+            granular_arg(o, which, value);
+        else
+            ensemble_option(o, which, value);
     }
 }
 
@@ -318,8 +376,7 @@ static void value_option(options *o, int argc, char **argv, int *i, first_option
 static int flag_option(options *o, const char *a, first_options *first)
 {
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-        printf(usage_text[0], (unsigned)DS_DEFAULT_SEED);
-        fputs(usage_text[1], stdout);
+        print_usage();
         exit(0);
     }
     if (strcmp(a, "--version") == 0) {
@@ -336,6 +393,8 @@ static int flag_option(options *o, const char *a, first_options *first)
         o->placement = DS_PLACEMENT_LATTICE;
     else if (strcmp(a, "--periodic") == 0)
         boundary_arg(o, "periodic", first);
+    else if (strcmp(a, "--barostat-aspect") == 0)
+        o->barostat_aspect = 1;
     else
         return 0;
     if (strcmp(a, "--lattice") == 0 && !first->placement)

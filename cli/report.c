@@ -40,6 +40,11 @@ static const char *const command_names[][2] = {
     {"wall_restitution", "--wall-restitution"},
     {"contact_time", "--contact-time"},
     {"strength", "--drive"},
+    {"thermostat", "--thermostat"},
+    {"kt", "--temperature"},
+    {"collision_rate", "--thermostat-rate"},
+    {"pressure", "--pressure"},
+    {"max_step", "--barostat-step"},
 };
 
 const char *in_command_words(const ds_error *err, char *out, size_t cap)

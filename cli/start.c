@@ -2,7 +2,8 @@
 /* Where a run starts, checked before any work: a new request (what the
  * library refuses, its reason in the command's words, and what this
  * machine cannot hold), a checkpoint (--restart) or a frame (--from); and
- * --grow and the granular rules, which the library refuses or sets. */
+ * --grow, the granular rules, --thermostat and --pressure, which the
+ * library refuses or sets. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
@@ -357,4 +358,40 @@ void start_granular(const options *o, ds_sim *sim)
         die(EXIT_USAGE, "--gravity %g: %s", o->gravity, err.message);
     char words[sizeof err.message + 32];
     die(EXIT_USAGE, "%s", in_command_words(&err, words, sizeof words));
+}
+
+/* A refusal of --thermostat or --pressure: a checkpoint's integrator or
+ * box named as the checkpoint's, the rest in the command's words. */
+static void refuse_ensemble(const options *o, const char *what, const ds_error *err)
+{
+    if (err->status == DS_ERR_NOMEM)
+        die(EXIT_RUN, "cannot set the %s: %s", what, err->message);
+    const char *source = o->restart_path ? o->restart_path : o->from_path;
+    if (strcmp(err->field, "integrator") == 0 || strcmp(err->field, "boundary") == 0)
+        die(EXIT_USAGE, "cannot set the %s of %s: %s", what, source ? source : "the request",
+            err->message);
+    /* No --temperature: the library was asked for the disks' own. */
+    if (strcmp(err->field, "kt") == 0 && !(o->temperature > 0.0))
+        die(EXIT_USAGE,
+            "--thermostat %s needs --temperature KT: the disks%s%s have no temperature of their "
+            "own (at rest, or moving as one)",
+            ds_thermostat_name(o->thermostat), source ? " of " : "", source ? source : "");
+    char words[sizeof err->message + 32];
+    die(EXIT_USAGE, "%s", in_command_words(err, words, sizeof words));
+}
+
+/* --thermostat and --pressure, once the simulation exists: the library
+ * checks them against the disks as they are (the temperature of now when
+ * --temperature is not given) and says why it refuses. */
+void start_ensemble(const options *o, ds_sim *sim)
+{
+    ds_error err;
+    if (o->thermostat != DS_THERMOSTAT_NONE &&
+        ds_sim_set_thermostat(sim, o->thermostat, o->temperature, o->thermostat_rate, &err) !=
+            DS_OK)
+        refuse_ensemble(o, "thermostat", &err);
+    if (o->pressure > 0.0 &&
+        ds_sim_set_barostat(sim, o->pressure, o->barostat_every, o->barostat_step,
+                            o->barostat_aspect, &err) != DS_OK)
+        refuse_ensemble(o, "barostat", &err);
 }

@@ -1,12 +1,16 @@
 /* SPDX-License-Identifier: MIT */
-/* What disks --help prints: every option in one place, which
- * tests/check_docs.sh holds the man page and docs/cli.md to. Two strings,
- * printed one after the other: C99 promises string literals of 4095
- * bytes, and the whole text is longer. */
+/* What `disks --help` prints: every option the command reads
+ * (options.c), each with its range and default. docs/cli.md and
+ * man/disks.1 document the same options (tests/check_docs.sh compares
+ * them with this text). */
 #define _POSIX_C_SOURCE 200809L
+#include <stdio.h>
+
 #include "cli.h"
 
-const char *const usage_text[2] = {
+/* Two strings: C99 promises a literal of 4095 characters only
+ * (-Woverlength-strings), and the help is longer. */
+static const char usage_first[] =
     "usage: disks N R [options]\n"
     "       disks N --area-fraction ETA [options]\n"
     "       disks --restart FILE [options]\n"
@@ -44,7 +48,8 @@ const char *const usage_text[2] = {
     "                       box (0 < ETA < 1; with --mixture, R of the small ones)\n"
     "  --speed V            every disk's starting speed (default 100)\n"
     "  --dt DT              the time step, and the time between frames' steps with\n"
-    "                       the event-driven integrator (default 0.001)\n"
+    "                       the event-driven integrator; with chain a step carries\n"
+    "                       N x speed x DT of chain displacement (default 0.001)\n"
     "  --mixture RATIO:FRACTION\n"
     "                       a binary mixture: a FRACTION (0..1) of the disks have\n"
     "                       radius RATIO x R, the rest R (e.g. 1.4:0.5)\n"
@@ -56,7 +61,8 @@ const char *const usage_text[2] = {
     "  --until-z Z          stop growing, and the run, once Z passes Z (1 < Z <= 1e9)\n"
     "  --measure-after T    discard the start: the pressures and the wall counts of\n"
     "                       --stats and the report are averaged from the first frame\n"
-    "                       at time >= T on\n",
+    "                       at time >= T on\n";
+static const char usage_rest[] =
     "  --restitution E      granular disks: each collision keeps E (0 < E <= 1) of\n"
     "                       the pair's normal approach speed (default 1, elastic)\n"
     "  --wall-restitution E the same at the walls\n"
@@ -68,13 +74,34 @@ const char *const usage_text[2] = {
     "  --gravity G          a field of magnitude G pulling down, toward y = 0 (box\n"
     "                       units per time squared); needs walls along y (walls or\n"
     "                       channel)\n"
-    "  --integrator I       step (the fixed time step, default) or event (exact\n"
-    "                       event-driven dynamics)\n"
-    "  --broadphase B       step: sap, strips, brute or auto; event: cells, brute\n"
-    "                       or auto (default auto)\n"
+    "  --thermostat KIND    a heat bath: andersen (each disk's velocity redrawn from\n"
+    "                       Maxwell-Boltzmann at Poisson times: the canonical\n"
+    "                       ensemble) or isokinetic (every velocity scaled to the\n"
+    "                       temperature at each step's end); none (the default)\n"
+    "  --temperature KT     its temperature, an energy: mass 1 at speed v is v^2 / 2\n"
+    "                       (default: the start's, 5000 at the default speed 100)\n"
+    "  --thermostat-rate NU andersen's collisions with the bath per disk per unit\n"
+    "                       time (default 0.1 sqrt(KT) / (2 R))\n"
+    "  --pressure BP        Monte Carlo moves of the box at the reduced pressure\n"
+    "                       beta P sigma^2 (sigma the largest diameter; periodic)\n"
+    "  --barostat-every K   a move of the box every K steps (default 10)\n"
+    "  --barostat-step D    the largest change of ln(area) a move proposes (default\n"
+    "                       1 / (4 N))\n"
+    "  --barostat-aspect    also moves of the box's aspect at fixed area (crystals)\n"
+    "  --integrator I       step (the fixed time step, default), event (exact\n"
+    "                       event-driven dynamics) or chain (event-chain Monte Carlo:\n"
+    "                       equilibrium sampling without dynamics)\n"
+    "  --broadphase B       step: sap, strips, brute or auto; event and chain:\n"
+    "                       cells, brute or auto (default auto)\n"
     "  -q, --quiet          print nothing but errors and warnings\n"
     "  -h, --help           show this help and exit\n"
     "  --version            show the version and exit\n"
     "\n"
     "exit status: 0 success, 1 run-time error (placement, I/O, a file that does not\n"
-    "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n"};
+    "fit), 2 usage error; stopped by a signal, the signal's (128 + its number)\n";
+
+void print_usage(void)
+{
+    printf(usage_first, (unsigned)DS_DEFAULT_SEED);
+    fputs(usage_rest, stdout);
+}

@@ -50,12 +50,14 @@ static void assert_conserved(const ds_sim *sim, double e0, double px0, double py
  * v1' = ((m1 - m2) v1 + 2 m2 v2) / (m1 + m2) = (-80 - 360) / 4 = -110,
  * v2' = ((m2 - m1) v2 + 2 m1 v1) / (m1 + m2) = (-120 + 80) / 4 = -10. Both
  * integrators: the line of centres is x however late the time step sees
- * the contact. */
+ * the contact. (Event chains have no velocities to change.) */
 static void test_unequal_masses_collide_head_on_as_the_elastic_rule_says(void **state)
 {
     (void)state;
     const double r[2] = {5.0, 7.0}, m[2] = {1.0, 3.0};
     for (int integ = 0; integ < DS_INTEGRATOR_COUNT; ++integ) {
+        if (integ == DS_INTEGRATOR_EVENT_CHAIN)
+            continue; /* no dynamics, no collisions */
         ds_sim *sim = pair_sim((ds_integrator)integ, r, m);
         put(sim, 0, 50000.0, 50000.0, 40.0, 0.0);
         put(sim, 1, 50020.0, 50000.0, -60.0, 0.0);

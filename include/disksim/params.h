@@ -37,9 +37,17 @@ typedef enum ds_integrator {
      * exactly r from the wall. ds_sim_step still advances time by
      * exactly dt. */
     DS_INTEGRATOR_EVENT_DRIVEN,
+    /* "chain": event-chain Monte Carlo (Bernard, Krauth and Wilson 2009):
+     * straight chains along +x and +y in turn (along walls, up or down,
+     * turning at the walls), each a quarter of the square root of the
+     * box's area long, sample the canonical ensemble without dynamics. A
+     * step of dt carries n speed dt of chain displacement in all; the
+     * velocities are never changed and stand for kT = K / N; Z comes from
+     * the chains' liftings (ds_sim_get_compressibility_factor). */
+    DS_INTEGRATOR_EVENT_CHAIN,
     DS_INTEGRATOR_COUNT
 } ds_integrator;
-const char *ds_integrator_name(ds_integrator integrator); /* "step", "event" */
+const char *ds_integrator_name(ds_integrator integrator); /* "step", "event", "chain" */
 ds_status ds_integrator_parse(const char *name, ds_integrator *out, ds_error *err);
 
 /* What happens at the edges of the box. */
@@ -101,8 +109,8 @@ typedef enum ds_broadphase {
     DS_BROADPHASE_SAP,    /* "sap": sweep and prune along x, insertion sort (the seed's) */
     DS_BROADPHASE_STRIPS, /* "strips": sweep and prune in horizontal strips: O(N) at fixed density
                            */
-    DS_BROADPHASE_CELLS,  /* "cells": the event-driven integrator's cell grid (event-driven only) */
-    DS_BROADPHASE_BRUTE,  /* "brute": all pairs, O(N^2): the reference (both integrators) */
+    DS_BROADPHASE_CELLS,  /* "cells": the event-driven or event-chain integrator's cell grid */
+    DS_BROADPHASE_BRUTE,  /* "brute": all pairs, O(N^2): the reference (every integrator) */
     DS_BROADPHASE_COUNT
 } ds_broadphase;
 const char *ds_broadphase_name(ds_broadphase broadphase); /* "auto", "sap", ... */

@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * disksim: protocols, what acts on a running simulation from outside its
- * dynamics: growth (Lubachevsky-Stillinger compression) and driving
- * (white-noise kicks). Each is set on a
- * simulation, acts as ds_sim_run goes, and is carried by checkpoints.
+ * dynamics: growth (Lubachevsky-Stillinger compression), driving
+ * (white-noise kicks), a thermostat (a heat bath: the canonical ensemble)
+ * and a barostat (moves of the box: the isobaric ensemble). Each is set on
+ * a simulation, acts as ds_sim_run goes, and is carried by checkpoints.
  * Included by disk_sim.h.
  */
 #ifndef DISKSIM_PROTOCOLS_H
@@ -96,6 +97,124 @@ double ds_sim_get_growth_z(const ds_sim *sim);
 #define DS_DRIVE_MAX 1e24
 ds_status ds_sim_set_drive(ds_sim *sim, double strength, ds_error *err);
 double ds_sim_get_drive(const ds_sim *sim); /* the strength; 0 without a drive or for NULL */
+
+/* ------------------------------------------------------------------ */
+/* Thermostat: the canonical ensemble (NVT)                            */
+/* ------------------------------------------------------------------ */
+
+/* Temperature is an energy, kT, in the units of params.h (mass length^2
+ * / time^2): in two dimensions a disk of mass m has mean kinetic energy
+ * kT, m <v^2> / 2 = kT, so disks of mass 1 all at speed v (random
+ * placement's start) have kT = v^2 / 2: the default speed 100 is kT =
+ * 5000. */
+typedef enum ds_thermostat {
+    /* "none": no heat bath: molecular dynamics at constant energy. */
+    DS_THERMOSTAT_NONE = 0,
+    /* "andersen": Andersen's stochastic collisions with a heat bath: each
+     * disk, at the times of a Poisson process of rate collision_rate,
+     * gets a velocity drawn afresh from Maxwell-Boltzmann at kT with its
+     * own mass (each component normal with variance kT / m), from the
+     * simulation's seed. The event-driven integrator redraws at the exact
+     * times, the time step at the end of the step each falls in (a step
+     * sees velocities only at its boundaries: the same law as a redraw at
+     * each step's end with probability 1 - exp(-collision_rate dt)).
+     * Exact canonical sampling: the kinetic energy is Gamma(n, kT)
+     * distributed in any box (the momentum is not conserved). */
+    DS_THERMOSTAT_ANDERSEN,
+    /* "isokinetic": at the end of every step every velocity is scaled so
+     * that the kinetic temperature (ds_sim_get_temperature's rule, from
+     * the velocities) is kT; a run that nothing heats (elastic collisions
+     * keep the energy) is scaled at the first step's end, then only when
+     * rounding has moved it by 1e-12. For driven systems; not a canonical
+     * ensemble of velocities. */
+    DS_THERMOSTAT_ISOKINETIC,
+    DS_THERMOSTAT_COUNT
+} ds_thermostat;
+const char *ds_thermostat_name(ds_thermostat kind); /* "none", "andersen", "isokinetic" */
+ds_status ds_thermostat_parse(const char *name, ds_thermostat *out, ds_error *err);
+
+/* A heat bath of that kind at temperature kt from now on (until set
+ * again), for any integrator that has velocities, in any box; kind
+ * DS_THERMOSTAT_NONE removes it. kt 0 means the temperature of now
+ * (ds_sim_get_temperature, the bath's if one is set). collision_rate is
+ * Andersen's, collisions with the bath per disk per unit time; 0 means
+ * 0.1 sqrt(kT) / sigma (sigma the largest diameter: a disk of mass 1
+ * meets the bath about once in the time it crosses ten diameters at its
+ * thermal speed); the isokinetic thermostat takes none (0). While a heat
+ * bath is set, ds_sim_get_temperature is its kT, and the virial pressure
+ * and Z take it (the canonical ones: for two disks in a periodic box Z =
+ * (1 + A / (A - pi sigma^2)) / 2 exactly). Set again, the bath goes on
+ * with the same stream of random numbers: a run is the same to the bit
+ * however it is cut into calls and checkpoints.
+ *
+ * DS_ERR_ARG (err naming the argument, its value and its limit) for sim
+ * NULL, a kind that is no ds_thermostat, an integrator without
+ * velocities (field "integrator"), a growth that is growing (field
+ * "thermostat": growth takes its own heat out), kt < 0 or not finite, kt
+ * 0 with the disks at rest, a kt at which a disk could pass
+ * DS_VELOCITY_MAX (Andersen's draws reach 8.58 sqrt(kT / m), the
+ * isokinetic's a disk holding the whole energy, sqrt(2 n kT / m)),
+ * collision_rate < 0 or not finite, or not 0 for the isokinetic kind.
+ * DS_ERR_NOMEM, nothing changed. */
+ds_status ds_sim_set_thermostat(ds_sim *sim, ds_thermostat kind, double kt, double collision_rate,
+                                ds_error *err);
+/* The kind set (DS_THERMOSTAT_NONE without, and for sim NULL) and its kT
+ * (0 without). */
+ds_thermostat ds_sim_get_thermostat(const ds_sim *sim);
+double ds_sim_get_thermostat_temperature(const ds_sim *sim);
+
+/* ------------------------------------------------------------------ */
+/* Barostat: the isobaric ensemble (NPT)                               */
+/* ------------------------------------------------------------------ */
+
+/* The limits of ds_sim_set_barostat's pressure and max_step. */
+#define DS_BAROSTAT_MAX_PRESSURE 1e9
+#define DS_BAROSTAT_MAX_STEP 1.0
+
+/* Monte Carlo moves of the box at reduced pressure pressure = beta P
+ * sigma^2 (sigma the largest diameter, Engel et al. 2013: the hexatic
+ * phase of one kind of disk lies near 9.2), in a periodic box only, from
+ * now on; pressure 0 removes it. At the end of every step whose count is
+ * a multiple of every (0 means 10) the area makes a random-walk move, ln
+ * A by d uniform in [-max_step, max_step] (0 means 1 / (4 n), at most
+ * DS_BAROSTAT_MAX_STEP), both sides scaled by exp(d / 2) and every centre
+ * with them (velocities and image counts kept), accepted with probability
+ * min(1, exp(-beta P (A' - A) + (n + 1) d)) unless a pair would come
+ * closer than contact (or the largest disk would pass a quarter of a
+ * side, or a side 1e9); with aspect nonzero it then moves the aspect too,
+ * ln(width / height) by a d of the same law at fixed area, accepted
+ * unless a pair would overlap (for a crystal, whose box must find its own
+ * shape: a fluid's box has nothing to hold its aspect and drifts until a
+ * side is four times the largest radius). An ideal gas's area is then
+ * Gamma(n + 1, 1 / (beta P)) distributed: <A> = (n + 1) / (beta P), and
+ * the mean area fraction is the canonical one at the same pressure.
+ * Temperature does not enter (hard disks have no potential energy), so
+ * it samples the isobaric ensemble with either integrator, with a heat
+ * bath or without. The time step's disks overlap a little at a step's
+ * end (it sees each collision after it happens): a move is refused for a
+ * pair it brings closer than contact that was not, which leaves the time
+ * step's own O(dt) error. The event-driven integrator builds its state
+ * again for each move accepted (O(n)), the time step its broad phase.
+ * The box's sides (ds_sim_get_box_width, _height) and the area fraction
+ * follow the moves; frames do not carry the box (extended XYZ's Lattice
+ * does). Set again, the moves go on with the same stream of random
+ * numbers (the simulation's seed), and the acceptance counts afresh.
+ *
+ * DS_ERR_ARG (err naming the argument, its value and its limit) for sim
+ * NULL, a box that is not periodic (field "boundary"), an integrator
+ * that cannot rescale its box (field "integrator"), a growth that is
+ * growing (field "pressure"), pressure < 0, not finite or above
+ * DS_BAROSTAT_MAX_PRESSURE, max_step < 0, not finite or above
+ * DS_BAROSTAT_MAX_STEP. DS_ERR_NOMEM, nothing changed; ds_sim_run returns
+ * DS_ERR_NOMEM at the end of a step whose move found no memory for its
+ * new state (the move not made, the run stopped there). */
+ds_status ds_sim_set_barostat(ds_sim *sim, double pressure, uint64_t every, double max_step,
+                              int aspect, ds_error *err);
+/* The reduced pressure set (0 without a barostat, and for sim NULL), and
+ * the fraction of its area moves accepted since it was set (0 before the
+ * first): about a third to a half is a good step. */
+double ds_sim_get_barostat_pressure(const ds_sim *sim);
+double ds_sim_get_barostat_acceptance(const ds_sim *sim);
 
 #ifdef __cplusplus
 }

@@ -4,8 +4,9 @@
 A thin face over libdisksim, the C library of this repository: N disks of
 radius R (or a mixture of radii and masses) bouncing elastically in a box
 with walls or periodic edges, advanced by a fixed time step or by exact
-event-driven dynamics, compressed by growing them, with the library's
-observables (energy, momentum, wall and virial pressure, psi6)
+event-driven dynamics, at constant energy or in the canonical and isobaric
+ensembles (a heat bath, a barostat), compressed by growing them, with the
+library's observables (energy, momentum, wall and virial pressure, psi6)
 and frames. Everything runs in the library; the arrays are numpy copies.
 
     import disksim
@@ -28,8 +29,8 @@ Error         every failure the library reports; ArgumentError (also a
               ValueError), FormatError (ValueError), FileError (OSError),
               NoMemoryError (MemoryError)
 
-INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES
-and FORMATS are the names the arguments and properties take;
+INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES,
+THERMOSTATS and FORMATS are the names the arguments and properties take;
 DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z and
 VELOCITY_MAX the library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
 """
@@ -46,6 +47,7 @@ from ._disksim import (
     MASS_RULES,
     MAX_AREA_FRACTION,
     PLACEMENTS,
+    THERMOSTATS,
     VELOCITY_MAX,
     ArgumentError,
     Contacts,
@@ -89,6 +91,7 @@ __all__ = [
     "BROADPHASES",
     "MASS_RULES",
     "GROWTH_STATES",
+    "THERMOSTATS",
     "FORMATS",
     "JAMMED_Z",
     "VELOCITY_MAX",

@@ -18,12 +18,13 @@ library_version: Final[str]
 
 # The names the arguments and properties take: the tuples below, as
 # Literal types (test_stubs.py holds each equal to its tuple).
-_Integrator = Literal["step", "event"]
+_Integrator = Literal["step", "event", "chain"]
 _Boundary = Literal["walls", "periodic", "channel"]
 _Placement = Literal["random", "lattice"]
 _Broadphase = Literal["auto", "sap", "strips", "cells", "brute"]
 _MassRule = Literal["equal", "area"]
 _GrowthState = Literal["none", "growing", "reached_eta", "jammed"]
+_Thermostat = Literal["none", "andersen", "isokinetic"]
 _Format = Literal["frame", "xyz", "gsd"]
 
 INTEGRATORS: Final[tuple[_Integrator, ...]]
@@ -32,6 +33,7 @@ PLACEMENTS: Final[tuple[_Placement, ...]]
 BROADPHASES: Final[tuple[_Broadphase, ...]]
 MASS_RULES: Final[tuple[_MassRule, ...]]
 GROWTH_STATES: Final[tuple[_GrowthState, ...]]
+THERMOSTATS: Final[tuple[_Thermostat, ...]]
 FORMATS: Final[tuple[_Format, ...]]
 
 DEFAULT_SEED: Final[int]
@@ -125,6 +127,12 @@ class Sim:
     def reset_observables(self) -> None: ...
     def set_state(self, positions: ArrayLike, velocities: ArrayLike | None = None) -> None: ...
     def set_growth(self, rate: float, until_eta: float = 0.0, until_z: float = 0.0) -> None: ...
+    def set_thermostat(
+        self, kind: _Thermostat, kt: float = 0.0, collision_rate: float = 0.0
+    ) -> None: ...
+    def set_barostat(
+        self, pressure: float, every: int = 0, max_step: float = 0.0, aspect: bool = False
+    ) -> None: ...
     def scale_velocities(self, factor: float) -> None: ...
     def set_restitution(self, restitution: float, wall_restitution: float | None = None) -> None: ...
     def set_contact_time(self, contact_time: float) -> None: ...
@@ -250,6 +258,14 @@ class Sim:
     def power_input(self) -> float: ...
     @property
     def potential_energy(self) -> float: ...
+    @property
+    def thermostat(self) -> _Thermostat: ...
+    @property
+    def thermostat_kt(self) -> float: ...
+    @property
+    def barostat_pressure(self) -> float: ...
+    @property
+    def barostat_acceptance(self) -> float: ...
 
     # whether it can be used
     @property
@@ -353,6 +369,7 @@ __all__ = [
     "BROADPHASES",
     "MASS_RULES",
     "GROWTH_STATES",
+    "THERMOSTATS",
     "FORMATS",
     "JAMMED_Z",
     "DEFAULT_SEED",

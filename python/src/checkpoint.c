@@ -205,15 +205,19 @@ static int keep_given(PyObject *mixture_args, PyObject *params)
 }
 
 /* Whether the pickle's arguments p (those not in unknown) are what the
- * checkpoint's simulation says of itself. */
+ * checkpoint's simulation says of itself. A periodic box is the one it
+ * was created with unless a barostat has moved it (set now or before:
+ * ds_sim_set_barostat moves a periodic box only), so its sides are not
+ * compared. */
 static int same_arguments(const ds_params *p, unsigned unknown, const ds_sim *sim)
 {
     ds_params q;
     (void)dspy_params_of_sim(sim, &q);
     const double height = p->box_y == 0.0 ? p->box : p->box_y;
-    return p->n == q.n && p->radius == q.radius && p->box == q.box &&
-           height == ds_sim_get_box_height(sim) && p->dt == q.dt && p->integrator == q.integrator &&
-           p->boundary == q.boundary &&
+    const int box_kept = q.boundary == DS_BOUNDARY_PERIODIC ||
+                         (p->box == q.box && height == ds_sim_get_box_height(sim));
+    return p->n == q.n && p->radius == q.radius && box_kept && p->dt == q.dt &&
+           p->integrator == q.integrator && p->boundary == q.boundary &&
            (p->broadphase == DS_BROADPHASE_AUTO || p->broadphase == q.broadphase) &&
            (dspy_param_unknown(unknown, "seed") || p->seed == ds_sim_get_seed(sim)) &&
            (dspy_param_unknown(unknown, "placement") || p->placement == ds_sim_get_placement(sim));

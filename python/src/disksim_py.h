@@ -82,6 +82,7 @@ typedef enum dspy_kind {
     DSPY_BROADPHASE,
     DSPY_MASS_RULE,    /* ds_mass_rule: "equal", "area" */
     DSPY_GROWTH_STATE, /* ds_growth_state: "none", "growing", "reached_eta", "jammed" */
+    DSPY_THERMOSTAT,   /* ds_thermostat: "none", "andersen", "isokinetic" */
     DSPY_FORMAT,       /* ds_format: "frame", "xyz", "gsd" */
     DSPY_KINDS
 } dspy_kind;
@@ -231,6 +232,10 @@ PyObject *dspy_sim_set_drive(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_gravity_property(dspy_sim *self, void *closure);
 extern const char dspy_set_restitution_doc[], dspy_set_contact_time_doc[], dspy_set_gravity_doc[],
     dspy_set_drive_doc[];
+/* ensembles.c: a heat bath, a barostat. */
+PyObject *dspy_sim_set_thermostat(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_set_barostat(dspy_sim *self, PyObject *args, PyObject *kwargs);
+extern const char dspy_set_thermostat_doc[], dspy_set_barostat_doc[];
 
 /* frames.c */
 PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs);

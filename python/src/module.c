@@ -60,10 +60,10 @@ static struct PyModuleDef module_def = {
 
 static int add_constants(PyObject *m)
 {
-    const dspy_kind kinds[] = {DSPY_INTEGRATOR, DSPY_BOUNDARY,     DSPY_PLACEMENT, DSPY_BROADPHASE,
-                               DSPY_MASS_RULE,  DSPY_GROWTH_STATE, DSPY_FORMAT};
-    const char *const names[] = {"INTEGRATORS", "BOUNDARIES",    "PLACEMENTS", "BROADPHASES",
-                                 "MASS_RULES",  "GROWTH_STATES", "FORMATS"};
+    const dspy_kind kinds[] = {DSPY_INTEGRATOR, DSPY_BOUNDARY,     DSPY_PLACEMENT,  DSPY_BROADPHASE,
+                               DSPY_MASS_RULE,  DSPY_GROWTH_STATE, DSPY_THERMOSTAT, DSPY_FORMAT};
+    const char *const names[] = {"INTEGRATORS", "BOUNDARIES",    "PLACEMENTS",  "BROADPHASES",
+                                 "MASS_RULES",  "GROWTH_STATES", "THERMOSTATS", "FORMATS"};
     for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; ++k) {
         PyObject *t = dspy_names(kinds[k]);
         if (!t || PyModule_AddObject(m, names[k], t) < 0) {

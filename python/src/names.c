@@ -25,6 +25,7 @@ WRAP(ds_placement)
 WRAP(ds_broadphase)
 WRAP(ds_mass_rule)
 WRAP(ds_growth_state)
+WRAP(ds_thermostat)
 WRAP(ds_format)
 
 static const struct {
@@ -39,6 +40,7 @@ static const struct {
     [DSPY_MASS_RULE] = {DS_MASS_RULE_COUNT, ds_mass_rule_name_of, ds_mass_rule_parse_of},
     [DSPY_GROWTH_STATE] = {DS_GROWTH_STATE_COUNT, ds_growth_state_name_of,
                            ds_growth_state_parse_of},
+    [DSPY_THERMOSTAT] = {DS_THERMOSTAT_COUNT, ds_thermostat_name_of, ds_thermostat_parse_of},
     [DSPY_FORMAT] = {DS_FORMAT_COUNT, ds_format_name_of, ds_format_parse_of},
 };
 

@@ -34,6 +34,9 @@ static const real_getter get_time = {ds_sim_get_time}, get_radius = {ds_sim_get_
                          get_radius_max = {ds_sim_get_radius_max},
                          get_area_fraction = {ds_sim_get_area_fraction},
                          get_growth_z = {ds_sim_get_growth_z},
+                         get_thermostat_kt = {ds_sim_get_thermostat_temperature},
+                         get_barostat_pressure = {ds_sim_get_barostat_pressure},
+                         get_barostat_acceptance = {ds_sim_get_barostat_acceptance},
                          get_temperature = {ds_sim_get_temperature},
                          get_compressibility_factor = {ds_sim_get_compressibility_factor},
                          get_restitution = {ds_sim_get_restitution},
@@ -86,6 +89,9 @@ static PyObject *name_property(dspy_sim *self, void *closure)
     case DSPY_GROWTH_STATE:
         value = (int)ds_sim_get_growth_state(sim);
         break;
+    case DSPY_THERMOSTAT:
+        value = (int)ds_sim_get_thermostat(sim);
+        break;
     case DSPY_MASS_RULE:
     case DSPY_FORMAT:
     case DSPY_KINDS:
@@ -96,7 +102,7 @@ static PyObject *name_property(dspy_sim *self, void *closure)
 }
 static const int integrator_kind = DSPY_INTEGRATOR, boundary_kind = DSPY_BOUNDARY,
                  broadphase_kind = DSPY_BROADPHASE, placement_kind = DSPY_PLACEMENT,
-                 growth_state_kind = DSPY_GROWTH_STATE;
+                 growth_state_kind = DSPY_GROWTH_STATE, thermostat_kind = DSPY_THERMOSTAT;
 
 /* Every disk's radius (masses 0) or mass (1) as a new (n,) array. */
 static PyObject *per_disk(dspy_sim *self, int masses)
@@ -232,7 +238,7 @@ PyGetSetDef dspy_sim_getset[] = {
     REAL(box, "Width of the box."),
     REAL(box_y, "Height of the box (box when square)."),
     REAL(dt, "The time step: the simulated time one step() advances."),
-    NAME(integrator, "The integrator: 'step' or 'event'."),
+    NAME(integrator, "The integrator: 'step', 'event' or 'chain'."),
     NAME(boundary, "The boundary: 'walls' or 'periodic'."),
     NAME(placement, "How the disks were placed: 'random' or 'lattice' (None for a Sim from\n"
                     "load(), whose checkpoint does not say)."),
@@ -289,14 +295,17 @@ PyGetSetDef dspy_sim_getset[] = {
                "for a liquid. Computed when read, O(N). NaN for a periodic box narrower than\n"
                "2.8 d. Per disk: local_psi6()."),
     COUNT(collision_count,
-          "Disk-disk collisions resolved since creation (reset_observables keeps it)."),
-    COUNT(wall_count, "Wall reflections since the last reset."),
-    REAL(wall_impulse, "Momentum handed to the walls since the last reset: the sum of 2 |v_n|."),
+          "Disk-disk collisions resolved since creation (reset_observables keeps it); with\n"
+          "'chain', the chains' liftings."),
+    COUNT(wall_count, "Wall reflections since the last reset (with 'chain', wall turns)."),
+    REAL(wall_impulse, "Momentum handed to the walls since the last reset: the sum of 2 |v_n|\n"
+                       "(with 'chain', 4 kT / speed a wall turn: what the dynamics would hand)."),
     COUNT(pairs_tested, "Narrow-phase distance tests since creation."),
     REAL(collision_seconds,
          "Wall-clock seconds spent on collisions, summed over all steps: with 'step',\n"
          "sorting, pruning, testing and resolving pairs; with 'event', processing\n"
-         "events (collisions, wall turns, cell crossings) and their predictions."),
+         "events (collisions, wall turns, cell crossings) and their predictions; with\n"
+         "'chain', moving the chains."),
     NAME(growth_state,
          "Growth (set_growth): 'none' (never grown, stopped with rate 0, ended by\n"
          "set_state, or stopped by run() for want of memory, which raises\n"
@@ -320,6 +329,14 @@ PyGetSetDef dspy_sim_getset[] = {
                       "in a steady state it equals power_lost within their fluctuations."),
     REAL(potential_energy, "The field's potential energy, -sum m (gx x + gy y) (0 without one):\n"
                            "an elastic run keeps kinetic_energy + potential_energy."),
+    NAME(thermostat, "The heat bath set (set_thermostat): 'none', 'andersen' or 'isokinetic'."),
+    REAL(thermostat_kt, "The heat bath's temperature kT (set_thermostat), an energy; 0 without\n"
+                        "one."),
+    REAL(barostat_pressure, "The reduced pressure beta P sigma^2 of the barostat (set_barostat);\n"
+                            "0 without one."),
+    REAL(barostat_acceptance,
+         "The fraction of the barostat's area moves accepted since it was set (0 before\n"
+         "the first): about a third to a half is a good max_step."),
     {"params", (getter)params_property, NULL,
      "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
      "same simulation at time 0. A Sim from load() has those the library tells: no\n"

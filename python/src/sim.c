@@ -49,7 +49,11 @@ static const char sim_doc[] = DSPY_SIM_SIGNATURE
     "            swap the normal velocities of overlapping, approaching pairs; fast,\n"
     "            collisions seen up to one step late). 'event': exact event-driven\n"
     "            dynamics, every collision at its own time at distance exactly 2R;\n"
-    "            step() still advances by exactly dt.\n"
+    "            step() still advances by exactly dt. 'chain': event-chain Monte\n"
+    "            Carlo, the same equilibrium sampled without dynamics by straight\n"
+    "            chains along +x and +y; a step carries n speed dt of chain\n"
+    "            displacement, the velocities never change, the pressure comes\n"
+    "            from the chains' liftings.\n"
     "boundary    'walls' (a centre turns at R from each wall) or 'periodic' (a disk\n"
     "            leaving at one edge comes back at the other, pairs interact through\n"
     "            the nearest image, positions stay in [0, box) x [0, box_y)).\n"
@@ -62,7 +66,7 @@ static const char sim_doc[] = DSPY_SIM_SIGNATURE
     "speed       the initial speed of every disk, > 0 and <= 1e9.\n"
     "broadphase  how candidate pairs are found, all giving the same pairs: 'auto'\n"
     "            (the fastest for the integrator), or for 'step' 'sap', 'strips',\n"
-    "            'brute'; for 'event' 'cells', 'brute'.\n"
+    "            'brute'; for 'event' and 'chain' 'cells', 'brute'.\n"
     "\n"
     "A mixture, given as species or disk by disk (one of the two):\n"
     "species     [(count, radius), ...] or [(count, radius, mass), ...]: counts that\n"
@@ -83,6 +87,9 @@ static const char sim_doc[] = DSPY_SIM_SIGNATURE
     "\n"
     "Compression: set_growth() grows every radius (integrator='event', periodic),\n"
     "growth_state and growth_z follow it, contacts() counts a packing's contacts.\n"
+    "Ensembles: set_thermostat() holds the temperature (Andersen's heat bath, the\n"
+    "canonical ensemble), set_barostat() the pressure (Monte Carlo moves of a\n"
+    "periodic box, the isobaric ensemble).\n"
     "\n"
     "Raises ArgumentError (a ValueError) with the library's sentence for a value it\n"
     "refuses (e.field names the argument; 'mixture' for the mixture's values), NoMemoryError for "
@@ -434,6 +441,7 @@ static PyMethodDef sim_methods[] = {
      "Advance simulated time by exactly dt. 'step': move by v dt, reflect at the\n"
      "walls, resolve overlapping pairs. 'event': process every collision and wall\n"
      "event inside the interval in time order, then show every disk at the new time.\n"
+     "'chain': move the chains by n speed dt in all.\n"
      "Releases the GIL."},
     {"run", (PyCFunction)(void (*)(void))sim_run, METH_VARARGS | METH_KEYWORDS,
      "run($self, /, steps=None, *, until=None, callback=None, every=1)\n--\n\n"
@@ -471,6 +479,10 @@ static PyMethodDef sim_methods[] = {
      "The arrays are copied: changing them afterwards changes nothing."},
     {"set_growth", (PyCFunction)(void (*)(void))dspy_sim_set_growth, METH_VARARGS | METH_KEYWORDS,
      dspy_set_growth_doc},
+    {"set_thermostat", (PyCFunction)(void (*)(void))dspy_sim_set_thermostat,
+     METH_VARARGS | METH_KEYWORDS, dspy_set_thermostat_doc},
+    {"set_barostat", (PyCFunction)(void (*)(void))dspy_sim_set_barostat,
+     METH_VARARGS | METH_KEYWORDS, dspy_set_barostat_doc},
     {"scale_velocities", (PyCFunction)(void (*)(void))dspy_sim_scale_velocities,
      METH_VARARGS | METH_KEYWORDS, dspy_scale_velocities_doc},
     {"set_restitution", (PyCFunction)(void (*)(void))dspy_sim_set_restitution,

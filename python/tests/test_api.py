@@ -47,12 +47,13 @@ def test_the_signature_is_introspectable_and_its_defaults_are_the_librarys():
 
 
 def test_the_names_are_the_librarys():
-    assert disksim.INTEGRATORS == ("step", "event")
+    assert disksim.INTEGRATORS == ("step", "event", "chain")
     assert disksim.BOUNDARIES == ("walls", "periodic", "channel")
     assert disksim.PLACEMENTS == ("random", "lattice")
     assert set(disksim.BROADPHASES) == {"sap", "brute", "strips", "auto", "cells"}
     assert disksim.MASS_RULES == ("equal", "area")
     assert disksim.GROWTH_STATES == ("none", "growing", "reached_eta", "jammed")
+    assert disksim.THERMOSTATS == ("none", "andersen", "isokinetic")
     assert disksim.JAMMED_Z == 1e6
     assert disksim.VELOCITY_MAX == 1e12
     assert disksim.__version__ == disksim.library_version
@@ -76,7 +77,7 @@ def test_a_refusal_carries_the_librarys_field_value_and_limit():
     with pytest.raises(disksim.ArgumentError) as info:
         disksim.Sim(10, 5, integrator="exact")
     assert info.value.field == "integrator" and info.value.value is None
-    assert str(info.value) == "integrator = 'exact' is not one of 'step', 'event'"
+    assert str(info.value) == "integrator = 'exact' is not one of 'step', 'event', 'chain'"
 
 
 def test_params_recreate_the_same_simulation():

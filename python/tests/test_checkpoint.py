@@ -20,7 +20,7 @@ def same(a, b):
             and a.pressure == b.pressure and a.pairs_tested == b.pairs_tested)
 
 
-KINDS = [dict(integrator=i, boundary=b) for i in ("step", "event") for b in ("walls", "periodic")]
+KINDS = [dict(integrator=i, boundary=b) for i in disksim.INTEGRATORS for b in ("walls", "periodic")]
 
 
 @pytest.mark.parametrize("kind", KINDS, ids=lambda k: "%(integrator)s-%(boundary)s" % k)
@@ -88,7 +88,7 @@ def dense_mixture(integrator):
 
 @pytest.mark.parametrize("how", COPIES, ids=COPY_IDS)
 @pytest.mark.parametrize("make", [dense_lattice, dense_mixture])
-@pytest.mark.parametrize("integrator", ["step", "event"])
+@pytest.mark.parametrize("integrator", disksim.INTEGRATORS)
 def test_a_copy_or_a_pickle_of_any_sim_is_its_checkpoint_to_the_byte(tmp_path, how, make,
                                                                       integrator):
     # A loaded Sim's params have no placement (its checkpoint does not say):

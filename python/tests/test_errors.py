@@ -56,7 +56,7 @@ BAD = [
     ("no lattice fits", lambda: disksim.Sim(10000, 6, placement="lattice"), ArgumentError,
      "no triangular lattice"),
     ("unknown integrator", lambda: disksim.Sim(10, 1, integrator="leapfrog"), ArgumentError,
-     "integrator = 'leapfrog' is not one of 'step', 'event'"),
+     "integrator = 'leapfrog' is not one of 'step', 'event', 'chain'"),
     ("integrator by number", lambda: disksim.Sim(10, 1, integrator=1), TypeError,
      "integrator must be a str"),
     ("unknown boundary", lambda: disksim.Sim(10, 1, boundary="torus"), ArgumentError,

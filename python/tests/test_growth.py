@@ -101,7 +101,7 @@ def same(a, b):
             and abs(a.area_fraction - b.area_fraction) <= a.n * EPS * a.area_fraction)
 
 
-@pytest.mark.parametrize("integrator", ["step", "event"])
+@pytest.mark.parametrize("integrator", disksim.INTEGRATORS)
 @pytest.mark.parametrize("boundary", ["walls", "periodic"])
 def test_a_saved_mixture_loads_and_goes_on_bit_for_bit(tmp_path, integrator, boundary):
     s = disksim.Sim(300, 6.0, species=[(150, 6.0), (150, 8.4, 3.0)], mass="area",

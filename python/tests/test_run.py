@@ -20,7 +20,7 @@ def same(a, b):
     return all(np.array_equal(x, y) for x, y in zip(state(a), state(b)))
 
 
-@pytest.mark.parametrize("integrator", ["step", "event"])
+@pytest.mark.parametrize("integrator", disksim.INTEGRATORS)
 def test_a_run_with_a_callback_is_the_run_without_one_to_the_bit(integrator):
     plain = disksim.Sim(300, 6, integrator=integrator, boundary="periodic", seed=2)
     called = disksim.Sim(300, 6, integrator=integrator, boundary="periodic", seed=2)

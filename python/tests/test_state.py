@@ -165,7 +165,7 @@ def test_unwrapped_is_the_position_with_walls():
     assert np.array_equal(s.unwrapped, s.positions)
 
 
-@pytest.mark.parametrize("integrator", ["step", "event"])
+@pytest.mark.parametrize("integrator", disksim.INTEGRATORS)
 @pytest.mark.parametrize("speed", [1e-200, 5e-324])
 def test_any_allowed_speed_gives_finite_velocities(integrator, speed):
     # Below ~1e-162 the centre of mass's sums underflowed and every

@@ -166,8 +166,9 @@ def test_the_literal_names_are_the_modules_tuples():
         assert tuple(ast.literal_eval(e) for e in literal.slice.elts) == getattr(disksim, name), \
             name
         checked += 1
-    # INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES, FORMATS
-    assert checked == 7
+    # INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES, THERMOSTATS,
+    # FORMATS
+    assert checked == 8
 
 
 def test_the_package_says_it_is_typed():

@@ -105,6 +105,16 @@ static inline double ds_tc_restitution(double restitution, double contact_time, 
     return elastic ? 1.0 : restitution;
 }
 
+/* A disk of mass m whose velocity is set from (vx, vy) to (wx, wy) (a
+ * heat bath's collision): the kinetic tensor's change. */
+static inline void ds_tally_velocity(ds_tally *t, double m, double vx, double vy, double wx,
+                                     double wy)
+{
+    t->kinetic[0] += m * (wx * wx - vx * vx);
+    t->kinetic[1] += m * (wy * wy - vy * vy);
+    t->kinetic[2] += m * (wx * wy - vx * vy);
+}
+
 /* Disks a and b with velocities (*avx, *avy) and (*bvx, *bvy), b seen
  * from a at (rx, ry), and approach = (v_b - v_a) . r < 0: equal masses
  * exchange the velocity components along the line of centres n = r/|r|;

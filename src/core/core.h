@@ -162,6 +162,34 @@ struct ds_sim {
     ds_protocols protocols;
 };
 
+/* The disks' kinetic energy k, momentum (px, py) and total mass. */
+typedef struct ds_kinetic {
+    double k, px, py, mass;
+} ds_kinetic;
+
+/* The temperature the collisions see in box b of n disks (the rule
+ * observe/observables.c explains at ds_sim_get_temperature): the kinetic
+ * energy less what the box conserves of the momentum (a periodic axis
+ * conserves its component, and the centre of mass's motion along it is
+ * no pair's), over the degrees of freedom left. A thermostat holds it
+ * (protocols/thermostat.c). */
+static inline double ds_kinetic_temperature(const ds_box *b, size_t n, const ds_kinetic *k)
+{
+    if (n == 0)
+        return 0.0;
+    const int px_kept = ds_box_periodic(b, 0), py_kept = ds_box_periodic(b, 1);
+    if (!px_kept && !py_kept)
+        return k->k / (double)n;
+    if (n < 2)
+        return 0.0;
+    const double kept = px_kept && py_kept ? k->px * k->px + k->py * k->py
+                        : px_kept          ? k->px * k->px
+                                           : k->py * k->py;
+    const double internal = k->k - kept / (2.0 * k->mass);
+    return (internal > 0.0 ? internal : 0.0) /
+           (px_kept && py_kept ? (double)n - 1.0 : (double)n - 0.5);
+}
+
 /* Where an integrator's growing radii stand (ds_integrator_ops.growth):
  * since integrator time `from` every radius is r_i(from) (1 + rate (t -
  * from)); scale is r_i(from) over the radius at the growth's start, so
@@ -222,7 +250,9 @@ struct ds_integrator_ops {
      * now goes to legacy (core/protocol.h). */
     ds_status (*load)(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
                       ds_error *err);
-    /* Every velocity times factor (> 0), at the present time. */
+    /* Every velocity times factor (> 0), at the present time, the stress
+     * tally's kinetic part with them (a protocol's step's end scales them
+     * inside a run). */
     ds_status (*scale_velocities)(ds_sim *sim, double factor);
 
     /* What only the integrator knows of what it samples (observe/ asks):
@@ -238,8 +268,25 @@ struct ds_integrator_ops {
      * it refuses to start, saying so). */
     /* The integrator time of the present step boundary. */
     double (*now)(const ds_sim *sim);
-    /* The kinetic energy K and the centre of mass's share P^2 / (2 M). */
-    void (*kinetic)(const ds_sim *sim, double *k, double *momentum_energy);
+    /* The kinetic energy, the momentum and the mass of the disks now
+     * (ds_kinetic_temperature takes them). */
+    void (*kinetic)(const ds_sim *sim, ds_kinetic *k);
+    /* At integrator time t, inside the present step and no earlier than
+     * the event last handled (the time step: at its step boundary, the
+     * only time it has), the disk in slot k flies on at (vx, vy) (finite,
+     * within DS_VELOCITY_MAX), the stress tally's kinetic part with it,
+     * predicted again: a heat bath's collision with one disk. */
+    void (*set_velocity)(ds_sim *sim, size_t k, double t, double vx, double vy);
+    /* At the present step boundary, in a periodic box: the box's sides
+     * times sx and sy and every centre with them (velocities and image
+     * counts kept), the state built again beside the old one and swapped
+     * in (ds_rescale_box), the protocols' clocks moved with the
+     * integrator's origin. Refused with nothing changed: DS_ERR_OVERLAP
+     * when a pair would come closer than contact that was not,
+     * DS_ERR_ARG for a box that is not periodic or a side that would
+     * leave the largest disk too large for it (a quarter of the side) or
+     * pass 1e9, DS_ERR_NOMEM. */
+    ds_status (*resize)(ds_sim *sim, double sx, double sy);
     /* At t: every velocity times factor (1: none; the stress tally's
      * kinetic part with them, as a heat bath's step taken out of the
      * run), and from t on radii that grow linearly in time at speed
@@ -272,6 +319,12 @@ struct ds_integrator_ops {
 #else
 #define DS_PRINTF(f, a)
 #endif
+
+/* The box's sides times sx and sy and every centre with them, at the
+ * present step boundary, sim's disk columns showing the disks at it
+ * (core/rescale.c): the integrators' resize service (see there) less the
+ * clocks. */
+ds_status ds_rescale_box(ds_sim *sim, double sx, double sy);
 
 /* The error model (core/error.c). ds_error_clear empties err (NULL does
  * nothing): every public call that takes one starts with it. */

@@ -35,6 +35,11 @@ static const char *const growth_state_names[DS_GROWTH_STATE_COUNT] = {
     [DS_GROWTH_REACHED_ETA] = "reached_eta",
     [DS_GROWTH_JAMMED] = "jammed",
 };
+static const char *const thermostat_names[DS_THERMOSTAT_COUNT] = {
+    [DS_THERMOSTAT_NONE] = "none",
+    [DS_THERMOSTAT_ANDERSEN] = "andersen",
+    [DS_THERMOSTAT_ISOKINETIC] = "isokinetic",
+};
 
 /* The name of value in a table of count names; "unknown" outside it. */
 static const char *name_in(const char *const *names, int count, int value)
@@ -61,6 +66,10 @@ const char *ds_mass_rule_name(ds_mass_rule rule)
 const char *ds_growth_state_name(ds_growth_state state)
 {
     return name_in(growth_state_names, DS_GROWTH_STATE_COUNT, (int)state);
+}
+const char *ds_thermostat_name(ds_thermostat kind)
+{
+    return name_in(thermostat_names, DS_THERMOSTAT_COUNT, (int)kind);
 }
 
 ds_status ds_parse_name(const char *field, const char *name, int count,
@@ -107,3 +116,4 @@ DEFINE_PARSE(ds_placement, "placement", DS_PLACEMENT_COUNT, placement_names)
 DEFINE_PARSE(ds_broadphase, "broadphase", DS_BROADPHASE_COUNT, broadphase_names)
 DEFINE_PARSE(ds_mass_rule, "mass_rule", DS_MASS_RULE_COUNT, mass_rule_names)
 DEFINE_PARSE(ds_growth_state, "growth_state", DS_GROWTH_STATE_COUNT, growth_state_names)
+DEFINE_PARSE(ds_thermostat, "thermostat", DS_THERMOSTAT_COUNT, thermostat_names)

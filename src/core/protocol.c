@@ -40,13 +40,19 @@ void ds_protocols_collided(ds_sim *sim, const ds_collision *c)
     ds_protocols_refresh(p);
 }
 
-ds_status ds_protocols_step_end(ds_sim *sim)
+ds_status ds_protocols_step_end(ds_sim *sim, ds_error *err)
 {
     ds_protocols *p = &sim->protocols;
     ds_status st = DS_OK;
     for (int k = 0; k < DS_PROTOCOL_KIND_COUNT && st == DS_OK; ++k)
-        if (p->slot[k].ops && p->slot[k].clock.stepping)
+        if (p->slot[k].ops && p->slot[k].clock.stepping) {
             st = p->slot[k].ops->step_end(sim, p->slot[k].self);
+            if (st != DS_OK)
+                ds_refuse(err, st, "steps", (double)sim->steps, NAN,
+                          "steps: no memory for what the %s protocol needed after step %llu "
+                          "(growth's wider cells, a barostat's new box): the run stopped there",
+                          p->slot[k].ops->name, (unsigned long long)sim->steps);
+        }
     ds_protocols_refresh(p);
     return st;
 }
@@ -55,8 +61,9 @@ void ds_protocols_rebased(ds_sim *sim, double by)
 {
     ds_protocols *p = &sim->protocols;
     for (int k = 0; k < DS_PROTOCOL_KIND_COUNT; ++k)
-        if (p->slot[k].ops && p->slot[k].ops->rebased) {
-            p->slot[k].ops->rebased(p->slot[k].self, by);
+        if (p->slot[k].ops) { /* every clock moves; the hook for the times a protocol keeps */
+            if (p->slot[k].ops->rebased)
+                p->slot[k].ops->rebased(p->slot[k].self, by);
             p->slot[k].clock.next -= by;
         }
     ds_protocols_refresh(p);
@@ -87,6 +94,17 @@ void ds_protocols_scaled(ds_sim *sim, double factor)
         if (p->slot[k].ops && p->slot[k].ops->scaled)
             p->slot[k].ops->scaled(sim, p->slot[k].self, factor);
     ds_protocols_refresh(p);
+}
+
+double ds_protocols_temperature(const ds_sim *sim)
+{
+    for (int k = 0; k < DS_PROTOCOL_KIND_COUNT; ++k) {
+        const ds_protocol_slot *s = &sim->protocols.slot[k];
+        const double kt = s->ops && s->ops->temperature ? s->ops->temperature(s->self) : 0.0;
+        if (kt > 0.0)
+            return kt;
+    }
+    return 0.0;
 }
 
 void ds_protocols_install(ds_sim *sim, const ds_protocol_ops *ops, void *self)

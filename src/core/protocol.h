@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Protocols: what acts on a running simulation from outside its dynamics
- * (growth and driving today; a thermostat, a barostat next). Each fills one
+ * (growth, driving, a thermostat, a barostat). Each fills one
  * table of hooks; the integrators call the hooks through the inline
  * helpers below and hold no protocol's code. A protocol works in the
  * integrator's time (the time the integrator hands it), and changes the
@@ -19,10 +19,13 @@
 
 
 /* The kinds, one slot each; a new protocol is one enumerator here and
- * one line in sim/tables.c. */
+ * one line in sim/tables.c. The hooks are called in this order: a drive's
+ * kicks, then a heat bath's step's end, then a barostat's move. */
 typedef enum ds_protocol_kind {
     DS_PROTOCOL_GROWTH = 0,
     DS_PROTOCOL_DRIVE,
+    DS_PROTOCOL_THERMOSTAT,
+    DS_PROTOCOL_BAROSTAT,
     DS_PROTOCOL_KIND_COUNT
 } ds_protocol_kind;
 
@@ -59,7 +62,7 @@ typedef struct ds_protocol_ops {
     /* After each whole step, at its end: a status, DS_OK to go on. */
     ds_status (*step_end)(ds_sim *sim, void *self);
     /* The integrator moved its origin: every time it keeps less by (its
-     * clock's next is moved already). */
+     * clock's next is moved for it, with or without this hook). */
     void (*rebased)(void *self, double by);
     /* The integrator built its state again (the same disks, the present
      * time its new origin). */
@@ -73,6 +76,9 @@ typedef struct ds_protocol_ops {
     void (*save)(const ds_sim *sim, const void *self, ds_state_writer *w);
     ds_status (*load)(ds_sim *sim, void **self, ds_reader *r, ds_error *err);
     void (*destroy)(void *self);
+    /* The temperature it holds the run at (a heat bath's kT), or 0: the
+     * observables take it for the run's (observe/observables.c). */
+    double (*temperature)(const void *self);
 } ds_protocol_ops;
 
 typedef struct ds_protocol_slot {
@@ -119,11 +125,17 @@ static inline int ds_protocols_due(const ds_protocols *p, double t, double end)
  * clocks again. */
 void ds_protocols_fire(ds_sim *sim, double t, double end);
 void ds_protocols_collided(ds_sim *sim, const ds_collision *c);
-ds_status ds_protocols_step_end(ds_sim *sim);
+/* A step's end that fails (DS_ERR_NOMEM) stops there, err naming the
+ * protocol and the step. */
+ds_status ds_protocols_step_end(ds_sim *sim, ds_error *err);
 void ds_protocols_rebased(ds_sim *sim, double by);
 void ds_protocols_rebuilt(ds_sim *sim);
 void ds_protocols_disks_set(ds_sim *sim, int all);
 void ds_protocols_scaled(ds_sim *sim, double factor);
+
+/* The kT a heat bath holds the run at (the first installed protocol
+ * that says one), or 0. */
+double ds_protocols_temperature(const ds_sim *sim);
 
 /* Installing and removing (protocol.c): install puts self in the kind's
  * slot, destroying what was there; the clocks are combined again. */

@@ -215,18 +215,13 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
             target = 0.0;
             sim->tally.stress_clock = 0.0;
         }
-        /* The protocols' step's end (growth's wider cells may build the
-         * state again: it then starts at the present time, 0; without
-         * memory for that the growth stopped there, and the run stops). */
+        /* The protocols' step's end (growth's wider cells, a barostat's
+         * new box may build the state again: it then starts at the
+         * present time, 0; without memory for that the run stops). */
         if (sim->protocols.stepping) {
             sim->tally.pairs_tested += e->tested;
             e->tested = 0;
-            st = ds_protocols_step_end(sim);
-            if (st != DS_OK)
-                ds_refuse(err, st, "steps", (double)sim->steps, NAN,
-                          "steps: no memory for what a protocol needs after step %llu (growth's "
-                          "wider cells): it stopped there, and the run",
-                          (unsigned long long)sim->steps);
+            st = ds_protocols_step_end(sim, err);
             e = sim->state;
             target = (double)sim->steps * sim->world.dt - e->epoch;
             sim->tally.stress_clock = target; /* a state made again has its own clock */
@@ -338,6 +333,8 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     ds_events *e = sim->state;
     const size_t n = sim->world.n;
     const double now = now_of(sim);
+    for (int c = 0; c < 3; ++c)
+        sim->tally.kinetic[c] *= factor * factor;
     for (size_t k = 0; k < n; ++k) {
         ed_disk *d = &e->disk[k];
         ds_ed_advance(d, now);
@@ -359,10 +356,8 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     return DS_OK;
 }
 
-/* The kinetic energy of the records and the centre of mass's share: a
- * periodic box conserves the momentum, so the centre of mass's energy is
- * not the temperature's. */
-static void kinetic(const ds_sim *sim, double *kinetic, double *momentum_energy)
+/* The kinetic energy, momentum and mass of the records. */
+static void kinetic(const ds_sim *sim, ds_kinetic *out)
 {
     const ds_events *e = sim->state;
     const double now = now_of(sim);
@@ -380,8 +375,47 @@ static void kinetic(const ds_sim *sim, double *kinetic, double *momentum_energy)
         py += m * vy;
         mass += m;
     }
-    *kinetic = 0.5 * k;
-    *momentum_energy = (px * px + py * py) / (2.0 * mass);
+    out->k = 0.5 * k;
+    out->px = px;
+    out->py = py;
+    out->mass = mass;
+}
+
+/* A heat bath's collision with record k at t: the records before it are
+ * at their own times, no later than t; whatever was predicted against
+ * the disk is stale. */
+static void set_velocity(ds_sim *sim, size_t k, double t, double vx, double vy)
+{
+    ds_events *e = sim->state;
+    ed_disk *d = &e->disk[k];
+    /* With a field the records fly in the falling frame: the velocity in
+     * the box at t is the record's plus g t, and the new one goes in as
+     * the frame's. */
+    const double gx = e->falls ? e->field[0] * t : 0.0, gy = e->falls ? e->field[1] * t : 0.0;
+    ds_tally_flight_to(&sim->tally, t);
+    ds_tally_velocity(&sim->tally, e->mass ? e->mass[k] : 1.0, d->vx + gx, d->vy + gy, vx, vy);
+    ds_ed_advance(d, t);
+    d->vx = vx - gx;
+    d->vy = vy - gy;
+    ++d->changes;
+    schedule(e, (uint32_t)k);
+}
+
+/* The box rescaled at the present step boundary: the disks shown at it
+ * into the columns, a state built for the new box from them
+ * (ds_rescale_box), whose origin is the present, so every protocol's
+ * time moves by the old origin's distance to it. */
+static ds_status resize(ds_sim *sim, double sx, double sy)
+{
+    ds_events *e = sim->state;
+    const double now = now_of(sim);
+    sim->tally.pairs_tested += e->tested;
+    e->tested = 0;
+    ds_ed_show_at(&sim->disks, e, now);
+    const ds_status st = ds_rescale_box(sim, sx, sy);
+    if (st == DS_OK)
+        ds_protocols_rebased(sim, now - now_of(sim));
+    return st;
 }
 
 /* ------------------------------------------------------------------ */
@@ -435,6 +469,8 @@ const ds_integrator_ops ds_event_driven_ops = {
     .scale_velocities = scale_velocities,
     .now = now_of,
     .kinetic = kinetic,
+    .set_velocity = set_velocity,
+    .resize = resize,
     .grow = ds_ed_grow,
     .growth_law = ds_ed_growth_law,
     .widen = ds_ed_widen,

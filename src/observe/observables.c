@@ -80,8 +80,11 @@ double ds_sim_get_virial_pressure(const ds_sim *sim)
     if (sim->integrator->compressibility) /* P A = Z N kT, as the integrator measures them */
         return sim->integrator->compressibility(sim) * (double)sim->world.n *
                ds_sim_get_temperature(sim) / centre_area(sim);
-    return (ds_sim_get_kinetic_energy(sim) + sim->tally.virial / (2.0 * elapsed(sim))) /
-           centre_area(sim);
+    /* With a heat bath the ideal part is N kT, its mean (the kinetic
+     * energy of the end of the run is one draw of it). */
+    const double bath = ds_protocols_temperature(sim);
+    const double ideal = bath > 0.0 ? (double)sim->world.n * bath : ds_sim_get_kinetic_energy(sim);
+    return (ideal + sim->tally.virial / (2.0 * elapsed(sim))) / centre_area(sim);
 }
 
 /* The temperature the collisions see. A pair's collision virial is
@@ -98,31 +101,30 @@ double ds_sim_get_virial_pressure(const ds_sim *sim)
  *   kT = K_int / (N - 1). (A single disk: no internal motion, 0.)
  * - a channel conserves P_x alone: K - P_x^2 / (2 M) over 2 N - 1
  *   degrees of freedom, kT = (K - P_x^2 / (2 M)) / (N - 1/2).
- * An integrator that knows its temperature otherwise (a sampler with no
- * velocities) says so through its table. */
+ * The rule is core's (ds_kinetic_temperature): a thermostat holds the
+ * same. With a heat bath (a thermostat) the temperature is the bath's:
+ * the velocities of any instant are one draw of its canonical ensemble,
+ * and the rule above averages it (with Andersen's bath the momentum is no
+ * longer conserved, and its share P^2 / (2 M) averages kT, so K_int / (N
+ * - 1) still averages kT). An integrator that knows its temperature
+ * otherwise (a sampler with no velocities) says so through its table. */
 double ds_sim_get_temperature(const ds_sim *sim)
 {
     if (!sim || sim->world.n == 0)
         return 0.0;
     if (sim->integrator->temperature)
         return sim->integrator->temperature(sim);
-    const double n = (double)sim->world.n, kinetic = ds_sim_get_kinetic_energy(sim);
-    const int px_kept = ds_box_periodic(&sim->world.box, 0);
-    const int py_kept = ds_box_periodic(&sim->world.box, 1);
-    if (!px_kept && !py_kept)
-        return kinetic / n;
-    if (sim->world.n < 2)
-        return 0.0;
-    double px = 0.0, py = 0.0, mass = n;
-    ds_sim_get_momentum(sim, &px, &py);
+    const double bath = ds_protocols_temperature(sim);
+    if (bath > 0.0)
+        return bath;
+    ds_kinetic k = {ds_sim_get_kinetic_energy(sim), 0.0, 0.0, (double)sim->world.n};
+    ds_sim_get_momentum(sim, &k.px, &k.py);
     if (sim->disks.m) {
-        mass = 0.0;
-        for (size_t k = 0; k < sim->disks.n; ++k)
-            mass += sim->disks.m[k];
+        k.mass = 0.0;
+        for (size_t i = 0; i < sim->disks.n; ++i)
+            k.mass += sim->disks.m[i];
     }
-    const double kept = px_kept && py_kept ? px * px + py * py : px_kept ? px * px : py * py;
-    const double internal = kinetic - kept / (2.0 * mass);
-    return (internal > 0.0 ? internal : 0.0) / (px_kept && py_kept ? n - 1.0 : n - 0.5);
+    return ds_kinetic_temperature(&sim->world.box, sim->world.n, &k);
 }
 
 /* The canonical Z. The virial theorem with the collisions' impulses

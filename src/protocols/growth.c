@@ -60,7 +60,10 @@ static void find_stop_time(const ds_sim *sim, growth *g)
 
 static void measure(const ds_sim *sim, growth *g)
 {
-    sim->integrator->kinetic(sim, &g->kinetic, &g->momentum_energy);
+    ds_kinetic k;
+    sim->integrator->kinetic(sim, &k);
+    g->kinetic = k.k;
+    g->momentum_energy = (k.px * k.px + k.py * k.py) / (2.0 * k.mass);
 }
 
 /* The heat growth added, out at t, and the radii from t on at speed:

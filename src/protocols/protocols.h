@@ -2,7 +2,9 @@
 /* Protocols (protocols/): what acts on a running simulation from outside
  * its dynamics, each a table of hooks (core/protocol.h) and a setter the
  * public API calls. growth.c: the Lubachevsky-Stillinger compression;
- * drive.c: white-noise driving. Not installed. */
+ * drive.c: white-noise driving; thermostat.c: a heat bath (Andersen's,
+ * isokinetic); barostat.c: Monte Carlo moves of the box at a pressure.
+ * Not installed. */
 #ifndef DS_PROTOCOLS_H
 #define DS_PROTOCOLS_H
 
@@ -31,5 +33,25 @@ ds_status ds_growth_adopt(ds_sim *sim, const ds_growth_record *r);
  * DS_ERR_NOMEM with nothing changed. The strength installed (0 for none). */
 ds_status ds_drive_start(ds_sim *sim, double strength);
 double ds_drive_strength(const ds_sim *sim);
+extern const ds_protocol_ops ds_thermostat_ops;
+extern const ds_protocol_ops ds_barostat_ops;
+
+/* A heat bath of kind (not DS_THERMOSTAT_NONE) at kt, Andersen's at rate
+ * collisions per disk per unit time, from now on, checked by the caller
+ * (sim/protocols.c): set again, it keeps its stream. DS_ERR_NOMEM with
+ * nothing changed. */
+ds_status ds_thermostat_start(ds_sim *sim, ds_thermostat kind, double kt, double rate);
+/* The kind installed (DS_THERMOSTAT_NONE without) and its kT (0). */
+ds_thermostat ds_thermostat_get(const ds_sim *sim, double *kt);
+
+/* Moves of the box at reduced pressure beta P sigma^2, at the end of
+ * every `every`-th step, of ln A (and with aspect of the aspect) by up to
+ * max_step, checked by the caller: set again, it keeps its stream and
+ * counts its acceptance afresh. DS_ERR_NOMEM with nothing changed. */
+ds_status ds_barostat_start(ds_sim *sim, double pressure, uint64_t every, double max_step,
+                            int aspect);
+/* The pressure set (0 without a barostat) and the fraction of the area
+ * moves accepted since (0 before the first). */
+double ds_barostat_get(const ds_sim *sim, double *acceptance);
 
 #endif

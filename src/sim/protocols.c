@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Protocols, what acts on a running simulation from outside its dynamics:
- * growth and driving (disksim/protocols.h). The request is checked here, every limit
- * named in err; the protocol (protocols/growth.c) carries it out through
- * the integrator's services. */
+ * growth, driving, a thermostat, a barostat (disksim/protocols.h). The
+ * request is checked here, every limit named in err; the protocol
+ * (protocols/) carries it out through the integrator's services. */
 #include <math.h>
 
 #include "protocols/protocols.h"
@@ -73,6 +73,14 @@ ds_status ds_sim_set_growth(ds_sim *sim, double rate, double until_eta, double u
         return ds_refuse(err, DS_ERR_ARG, "drive", ds_drive_strength(sim), 0.0,
                          "drive = %g: growth takes out the heat a drive puts in (stop it first)",
                          ds_drive_strength(sim));
+    /* Growth takes out its own heat, in a box of its own. */
+    if (rate > 0.0 && (ds_protocols_get(sim, DS_PROTOCOL_THERMOSTAT) ||
+                       ds_protocols_get(sim, DS_PROTOCOL_BAROSTAT)))
+        return ds_refuse(err, DS_ERR_ARG, "rate", rate, NAN,
+                         "rate = %g: growth takes out its own heat in a box of fixed sides: remove "
+                         "the %s first",
+                         rate,
+                         ds_protocols_get(sim, DS_PROTOCOL_THERMOSTAT) ? "thermostat" : "barostat");
     ds_status st = check_targets(sim, until_eta, until_z, err);
     if (st == DS_OK)
         st = check_rate(sim, rate, err);
@@ -124,3 +132,179 @@ ds_status ds_sim_set_drive(ds_sim *sim, double strength, ds_error *err)
 }
 
 double ds_sim_get_drive(const ds_sim *sim) { return sim ? ds_drive_strength(sim) : 0.0; }
+
+/* Whether a growth is growing: a heat bath or a barostat would fight it. */
+static int growing(const ds_sim *sim) { return ds_sim_get_growth_state(sim) == DS_GROWTH_GROWING; }
+
+/* The largest kT at which no disk can pass DS_VELOCITY_MAX: Andersen's
+ * draws reach 8.5717 sqrt(kT / m) (Box and Muller's radius,
+ * sqrt(-2 ln 2^-53)); the isokinetic scaling puts at most the whole
+ * kinetic energy, n kT, into the lightest disk, sqrt(2 n kT / m). */
+static double hottest(const ds_sim *sim, ds_thermostat kind)
+{
+    double lightest = INFINITY;
+    for (size_t i = 0; i < sim->disks.n; ++i)
+        lightest = fmin(lightest, sim->disks.m ? sim->disks.m[i] : 1.0);
+    const double reach = kind == DS_THERMOSTAT_ANDERSEN ? 74.0 : 2.0 * (double)sim->world.n;
+    return lightest * DS_VELOCITY_MAX * DS_VELOCITY_MAX / reach;
+}
+
+/* kt checked, 0 taken for the temperature of now. */
+static ds_status check_kt(const ds_sim *sim, ds_thermostat kind, double *kt, ds_error *err)
+{
+    if (!(*kt >= 0.0) || !isfinite(*kt))
+        return ds_refuse(err, DS_ERR_ARG, "kt", *kt, 0.0,
+                         "kt = %g must be a temperature > 0 (0: the temperature of now)", *kt);
+    const double asked = *kt;
+    if (asked == 0.0)
+        *kt = ds_sim_get_temperature(sim);
+    if (!(*kt > 0.0))
+        return ds_refuse(err, DS_ERR_ARG, "kt", asked, 0.0,
+                         "kt = 0 asks for the temperature of now, and the disks have none (at "
+                         "rest, or moving as one): give a temperature > 0");
+    const double most = hottest(sim, kind);
+    if (!(*kt <= most))
+        return ds_refuse(err, DS_ERR_ARG, "kt", *kt, most,
+                         "kt = %g would let a disk pass the speed limit %g: at most %g", *kt,
+                         DS_VELOCITY_MAX, most);
+    return DS_OK;
+}
+
+/* Andersen's rate, 0 taken for 0.1 sqrt(kT) / sigma; the isokinetic
+ * thermostat has none. */
+static ds_status check_rate_of(const ds_sim *sim, ds_thermostat kind, double kt, double *rate,
+                               ds_error *err)
+{
+    if (kind == DS_THERMOSTAT_ISOKINETIC && *rate != 0.0)
+        return ds_refuse(err, DS_ERR_ARG, "collision_rate", *rate, 0.0,
+                         "collision_rate = %g: the isokinetic thermostat has no rate (it scales "
+                         "the velocities at every step's end): give 0",
+                         *rate);
+    if (!(*rate >= 0.0) || !isfinite(*rate))
+        return ds_refuse(err, DS_ERR_ARG, "collision_rate", *rate, 0.0,
+                         "collision_rate = %g must be a number > 0 of collisions with the bath "
+                         "per disk per unit time (0: the default)",
+                         *rate);
+    if (*rate == 0.0)
+        *rate = 0.1 * sqrt(kt) / (2.0 * sim->world.radius_max);
+    return DS_OK;
+}
+
+ds_status ds_sim_set_thermostat(ds_sim *sim, ds_thermostat kind, double kt, double collision_rate,
+                                ds_error *err)
+{
+    ds_error_clear(err);
+    if (!sim)
+        return ds_refuse(err, DS_ERR_ARG, "sim", NAN, NAN, "sim: NULL");
+    if ((unsigned)kind >= (unsigned)DS_THERMOSTAT_COUNT)
+        return ds_refuse(err, DS_ERR_ARG, "thermostat", (double)kind, DS_THERMOSTAT_COUNT,
+                         "thermostat = %d is not a ds_thermostat", (int)kind);
+    if (kind == DS_THERMOSTAT_NONE) {
+        ds_protocols_remove(sim, DS_PROTOCOL_THERMOSTAT);
+        return DS_OK;
+    }
+    const ds_integrator_ops *in = sim->integrator;
+    if (!in->set_velocity || !in->kinetic || !in->now || !in->scale_velocities)
+        return ds_refuse(err, DS_ERR_ARG, "integrator", NAN, NAN,
+                         "integrator = %s: a thermostat needs an integrator with velocities",
+                         in->name);
+    if (growing(sim))
+        return ds_refuse(err, DS_ERR_ARG, "thermostat", (double)kind, NAN,
+                         "thermostat = %s: a growth is growing, and takes out its own heat: stop "
+                         "it first (rate 0)",
+                         ds_thermostat_name(kind));
+    ds_status st = check_kt(sim, kind, &kt, err);
+    if (st == DS_OK)
+        st = check_rate_of(sim, kind, kt, &collision_rate, err);
+    if (st == DS_OK && ds_thermostat_start(sim, kind, kt, collision_rate) != DS_OK)
+        st = ds_refuse(err, DS_ERR_NOMEM, "thermostat", (double)kind, NAN,
+                       "thermostat = %s: no memory for it", ds_thermostat_name(kind));
+    return st;
+}
+
+ds_thermostat ds_sim_get_thermostat(const ds_sim *sim)
+{
+    double kt = 0.0;
+    return sim ? ds_thermostat_get(sim, &kt) : DS_THERMOSTAT_NONE;
+}
+
+double ds_sim_get_thermostat_temperature(const ds_sim *sim)
+{
+    double kt = 0.0;
+    if (sim)
+        (void)ds_thermostat_get(sim, &kt);
+    return kt;
+}
+
+/* The barostat's request: a box it can move, and its numbers. */
+static ds_status check_barostat(const ds_sim *sim, double pressure, double max_step, ds_error *err)
+{
+    if (!ds_box_periodic(&sim->world.box, 0) || !ds_box_periodic(&sim->world.box, 1))
+        return ds_refuse(err, DS_ERR_ARG, "boundary", NAN, NAN,
+                         "boundary = %s: the barostat moves a periodic box only (walls would "
+                         "have to move with the disks)",
+                         ds_boundary_name(sim->world.boundary));
+    if (!sim->integrator->resize)
+        return ds_refuse(err, DS_ERR_ARG, "integrator", NAN, NAN,
+                         "integrator = %s: it cannot rescale its box, which the barostat needs",
+                         sim->integrator->name);
+    if (growing(sim))
+        return ds_refuse(err, DS_ERR_ARG, "pressure", pressure, NAN,
+                         "pressure = %g: a growth is growing in this box: stop it first (rate 0)",
+                         pressure);
+    if (!(max_step >= 0.0 && max_step <= DS_BAROSTAT_MAX_STEP))
+        return ds_refuse(err, DS_ERR_ARG, "max_step", max_step,
+                         max_step > 0.0 ? DS_BAROSTAT_MAX_STEP : 0.0,
+                         "max_step = %g must be a change of ln A between 0 and %g (0: the "
+                         "default)",
+                         max_step, DS_BAROSTAT_MAX_STEP);
+    return DS_OK;
+}
+
+ds_status ds_sim_set_barostat(ds_sim *sim, double pressure, uint64_t every, double max_step,
+                              int aspect, ds_error *err)
+{
+    ds_error_clear(err);
+    if (!sim)
+        return ds_refuse(err, DS_ERR_ARG, "sim", NAN, NAN, "sim: NULL");
+    if (!(pressure >= 0.0 && pressure <= DS_BAROSTAT_MAX_PRESSURE))
+        return ds_refuse(err, DS_ERR_ARG, "pressure", pressure,
+                         pressure > 0.0 ? DS_BAROSTAT_MAX_PRESSURE : 0.0,
+                         "pressure = %g must be a reduced pressure beta P sigma^2 > 0 and <= %g "
+                         "(0 removes the barostat)",
+                         pressure, DS_BAROSTAT_MAX_PRESSURE);
+    if (pressure == 0.0) {
+        ds_protocols_remove(sim, DS_PROTOCOL_BAROSTAT);
+        return DS_OK;
+    }
+    ds_status st = check_barostat(sim, pressure, max_step, err);
+    if (st != DS_OK)
+        return st;
+    /* A move every 10 steps: a rebuild of the state (O(n)) each time one
+     * is accepted stays a small part of the run. Moves of 1 / (4 n): a
+     * compression by d overlaps the pairs closer than d / 2 of a diameter,
+     * about 2 eta g(sigma) n d of them (g the contact value), so at 0.70
+     * (g near 6) about one in eight of the largest compressions passes. */
+    if (every == 0)
+        every = 10;
+    if (max_step == 0.0)
+        max_step = fmin(DS_BAROSTAT_MAX_STEP, 0.25 / (double)sim->world.n);
+    if (ds_barostat_start(sim, pressure, every, max_step, aspect) != DS_OK)
+        return ds_refuse(err, DS_ERR_NOMEM, "pressure", pressure, NAN,
+                         "pressure = %g: no memory for the barostat", pressure);
+    return DS_OK;
+}
+
+double ds_sim_get_barostat_pressure(const ds_sim *sim)
+{
+    double acceptance = 0.0;
+    return sim ? ds_barostat_get(sim, &acceptance) : 0.0;
+}
+
+double ds_sim_get_barostat_acceptance(const ds_sim *sim)
+{
+    double acceptance = 0.0;
+    if (sim)
+        (void)ds_barostat_get(sim, &acceptance);
+    return acceptance;
+}

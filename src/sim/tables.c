@@ -6,6 +6,7 @@
  * its file with its table and one line here (docs/architecture.md, "Where
  * new things go"). */
 #include "sim/sim.h"
+#include "chain/chain.h"
 #include "event/event.h"
 #include "io/io.h"
 #include "protocols/protocols.h"
@@ -14,11 +15,14 @@
 static const ds_integrator_ops *const integrators[DS_INTEGRATOR_COUNT] = {
     [DS_INTEGRATOR_TIME_STEP] = &ds_time_step_ops,
     [DS_INTEGRATOR_EVENT_DRIVEN] = &ds_event_driven_ops,
+    [DS_INTEGRATOR_EVENT_CHAIN] = &ds_event_chain_ops,
 };
 
 const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT] = {
     [DS_PROTOCOL_GROWTH] = &ds_growth_ops,
     [DS_PROTOCOL_DRIVE] = &ds_drive_ops,
+    [DS_PROTOCOL_THERMOSTAT] = &ds_thermostat_ops,
+    [DS_PROTOCOL_BAROSTAT] = &ds_barostat_ops,
 };
 
 static const ds_writer_ops *const writers[DS_FORMAT_COUNT] = {

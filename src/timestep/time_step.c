@@ -59,14 +59,29 @@ static void resolve_pair_periodic(ds_disks *d, size_t a, size_t b, void *ctx)
     resolve(d, a, b, dx, dy, c);
 }
 
+/* The time step's time is the simulation's: steps dt. */
+static double now_of(const ds_sim *sim) { return (double)sim->steps * sim->world.dt; }
+
+/* The protocols at the end of a step: each of their moments that fell in
+ * it, at its end, the only time the step knows (a heat bath's
+ * collisions, in the order of their times), then their step's end (a
+ * barostat's move may build the state again). */
+static ds_status protocols_after_step(ds_sim *sim, ds_error *err)
+{
+    const double now = now_of(sim);
+    while (ds_protocols_due(&sim->protocols, now, now))
+        ds_protocols_fire(sim, now, now);
+    return sim->protocols.stepping ? ds_protocols_step_end(sim, err) : DS_OK;
+}
+
 static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
+    ds_status st = DS_OK; /* a step needs no memory; a protocol's step's end may */
     ds_bp *bp = sim->state;
     const ds_world *w = &sim->world;
     const ds_pair_fn on_pair = ds_box_any_periodic(&w->box) ? resolve_pair_periodic : resolve_pair;
     pair_context ctx = {&sim->tally, &w->box, w->rules.restitution};
     const int falls = ds_rules_fall(&w->rules);
-    ds_status st = DS_OK;
     for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* A field first (v += g dt, then the flight at the new velocity:
          * semi-implicit Euler), then the step's flight at the velocities
@@ -79,12 +94,10 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
         sim->tally.pairs_tested += ds_bp_find_pairs(bp, &sim->disks, on_pair, &ctx);
         ds_timer_stop(&sim->collision_timer);
         ++sim->steps;
-        /* The protocols' step's end (a drive's kicks). */
-        if (sim->protocols.stepping && (st = ds_protocols_step_end(sim)) != DS_OK)
-            ds_refuse(err, st, "steps", (double)sim->steps, NAN,
-                      "steps: a protocol could not go on after step %llu: it stopped there, "
-                      "and the run",
-                      (unsigned long long)sim->steps);
+        if (sim->protocols.stepping || sim->protocols.next < INFINITY) {
+            st = protocols_after_step(sim, err);
+            bp = sim->state; /* a new box has a new broad phase */
+        }
     }
     ds_disks_rebuild_slots(&sim->disks);
     return st;
@@ -153,6 +166,8 @@ static void destroy(ds_sim *sim)
 static ds_status scale_velocities(ds_sim *sim, double factor)
 {
     ds_disks *d = &sim->disks;
+    for (int c = 0; c < 3; ++c)
+        sim->tally.kinetic[c] *= factor * factor;
     for (size_t k = 0; k < d->n; ++k) {
         d->vx[k] *= factor;
         d->vy[k] *= factor;
@@ -206,6 +221,41 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk d)
     return DS_OK;
 }
 
+/* The kinetic energy, momentum and mass of the columns, which are the
+ * state. */
+static void kinetic(const ds_sim *sim, ds_kinetic *out)
+{
+    const ds_disks *d = &sim->disks;
+    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0;
+        k += m * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
+        px += m * d->vx[i];
+        py += m * d->vy[i];
+        mass += m;
+    }
+    out->k = 0.5 * k;
+    out->px = px;
+    out->py = py;
+    out->mass = mass;
+}
+
+/* A heat bath's collision that fell in the step just taken, at its end:
+ * whether it fell early or late in the step, the step's flight and its
+ * collisions were at the velocity before, as with a redraw at the end. */
+static void set_velocity(ds_sim *sim, size_t k, double t, double vx, double vy)
+{
+    (void)t;
+    ds_disks *d = &sim->disks;
+    ds_tally_velocity(&sim->tally, d->m ? d->m[k] : 1.0, d->vx[k], d->vy[k], vx, vy);
+    d->vx[k] = vx;
+    d->vy[k] = vy;
+}
+
+/* The columns are the disks at the step boundary: the new box's state is
+ * built from them; the time is the simulation's, no origin moves. */
+static ds_status resize(ds_sim *sim, double sx, double sy) { return ds_rescale_box(sim, sx, sy); }
+
 const ds_integrator_ops ds_time_step_ops = {
     .name = "step",
     .min_room = 0.0, /* a step is a fixed amount of work, in any room */
@@ -220,8 +270,12 @@ const ds_integrator_ops ds_time_step_ops = {
     .save = save,
     .load = load,
     .scale_velocities = scale_velocities,
-    /* Radii grow only with exact contact times, so growth refuses the
-     * time step; a drive's kicks it takes. It reads the rules each step
-     * (take_rules NULL). */
+    /* The services to protocols it can give: a drive's kicks, a heat bath
+     * and a barostat; radii grow only with exact contact times, so growth
+     * refuses it. It reads the rules each step (take_rules NULL). */
     .kick = kick,
+    .now = now_of,
+    .kinetic = kinetic,
+    .set_velocity = set_velocity,
+    .resize = resize,
 };

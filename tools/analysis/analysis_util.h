@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* What tools/pressure and tools/transport share: reading a number from
- * the command line, and block averages with their standard errors. */
+ * the command line, and block averages with their standard errors (and a
+ * series' error corrected for its correlation). */
 #ifndef DS_ANALYSIS_UTIL_H
 #define DS_ANALYSIS_UTIL_H
 
@@ -44,6 +45,31 @@ static inline double error(const stats *s)
 {
     const double m = mean(s), var = s->sum2 / s->count - m * m;
     return s->count > 1 && var > 0.0 ? sqrt(var / (s->count - 1)) : 0.0;
+}
+
+/* The mean of n samples of a correlated series, and its standard error
+ * corrected for the correlation (Flyvbjerg and Petersen 1989): the
+ * samples averaged in pairs again and again, the naive error of each
+ * level's blocks grows until the blocks are longer than the series'
+ * memory, then stays; the largest over the levels that keep 32 blocks or
+ * more (one level below that the estimate itself is uncertain by a
+ * quarter). x is overwritten. */
+static inline double blocked_mean(double *x, size_t n, double *err)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        m += x[i];
+    m = n ? m / (double)n : 0.0;
+    *err = 0.0;
+    for (; n >= 32; n /= 2) {
+        double v = 0.0;
+        for (size_t i = 0; i < n; ++i)
+            v += (x[i] - m) * (x[i] - m);
+        *err = fmax(*err, sqrt(v / ((double)n * (double)(n - 1))));
+        for (size_t i = 0; i < n / 2; ++i)
+            x[i] = 0.5 * (x[2 * i] + x[2 * i + 1]);
+    }
+    return m;
 }
 
 #endif
