@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Checkpoints: a simulation saved and loaded goes on bit for bit as the
  * one that never stopped, for every integrator, both boundaries (and the
- * channel with event chains) and every broad phase; a truncated, corrupted, foreign or future-version
- * checkpoint is refused with a reason and never crashes the loader. */
+ * channel with event chains) and every broad phase; a truncated, corrupted, foreign or
+ * future-version checkpoint is refused with a reason and never crashes the loader. */
 #include "test_util.h"
 
 typedef struct combination {
@@ -130,7 +130,8 @@ static void test_a_loaded_run_goes_on_bit_for_bit(void **state)
 static void test_a_granular_run_goes_on_bit_for_bit(void **state)
 {
     (void)state;
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator) {
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    {
         ds_params p = ds_params_default(300, 6.0);
         p.integrator = (ds_integrator)integrator;
         p.boundary = DS_BOUNDARY_CHANNEL;

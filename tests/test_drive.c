@@ -31,7 +31,8 @@ static ds_sim *gas(ds_integrator integrator, size_t n, double r, double eta, dou
 static void test_kicks_keep_the_momentum_and_the_books(void **state)
 {
     (void)state;
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator) {
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    {
         ds_sim *sim = gas((ds_integrator)integrator, 200, 5.0, 0.1, 0.005, 3);
         assert_int_equal(ds_sim_set_restitution(sim, 0.8, 1.0, NULL), DS_OK);
         assert_int_equal(ds_sim_set_drive(sim, 5000.0, NULL), DS_OK);
@@ -65,7 +66,8 @@ static void test_kicks_put_energy_in_at_n_minus_one_times_the_strength(void **st
     (void)state;
     const size_t n = 400;
     const double s = 2000.0, dt = 0.01;
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator) {
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    {
         ds_sim *sim = gas((ds_integrator)integrator, n, 0.01, 1e-6, dt, 9);
         assert_int_equal(ds_sim_set_drive(sim, s, NULL), DS_OK);
         const uint64_t steps = 1000;

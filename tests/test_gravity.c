@@ -178,7 +178,8 @@ static void test_a_disk_at_rest_on_the_floor_hops_and_every_step_ends(void **sta
 static void test_a_field_set_in_a_run_bends_the_flights_from_then_on(void **state)
 {
     (void)state;
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator) {
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    {
         ds_sim *sim = one_disk((ds_integrator)integrator, (ds_disk){100.0, 500.0, 10.0, 0.0}, 0.0);
         ds_sim_run(sim, 64, NULL);
         assert_int_equal(ds_sim_set_gravity(sim, 0.0, -4.0, NULL), DS_OK);

@@ -46,25 +46,24 @@ static void test_a_head_on_collision_keeps_e_of_the_relative_velocity(void **sta
     const double e = 0.6;
     const ds_species kinds[2] = {{1, 5.0, 1.0, NULL}, {1, 5.0, 3.0, NULL}};
     const ds_mixture unequal = {2, kinds, NULL, NULL, DS_MASS_EQUAL};
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator)
-        for (int masses = 0; masses < 2; ++masses) {
-            ds_sim *sim = head_on((ds_integrator)integrator, masses ? &unequal : NULL);
-            assert_int_equal(ds_sim_set_restitution(sim, e, 1.0, NULL), DS_OK);
-            const uint64_t steps = (uint64_t)(2.0 / ds_sim_get_dt(sim));
-            ds_sim_run(sim, steps, NULL);
-            assert_int_equal(ds_sim_get_collision_count(sim), 1);
-            const double ma = 1.0, mb = masses ? 3.0 : 1.0, mu = ma * mb / (ma + mb);
-            const ds_disk a = ds_sim_get_disk(sim, 0), b = ds_sim_get_disk(sim, 1);
-            /* One rounding of each product and sum: 1e-14 relative. */
-            assert_true(fabs((b.vx - a.vx) - e * 10.0) < 1e-13);
-            assert_true(fabs(ma * a.vx + mb * b.vx - 10.0) < 1e-13);
-            assert_true(fabs(ds_sim_get_energy_lost(sim) - 0.5 * (1.0 - e * e) * mu * 100.0) <
-                        1e-12);
-            /* The books: the kinetic energy is what it was less the loss. */
-            assert_true(fabs(ds_sim_get_kinetic_energy(sim) + ds_sim_get_energy_lost(sim) - 50.0) <
-                        1e-12);
-            ds_sim_destroy(sim);
-        }
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    for (int masses = 0; masses < 2; ++masses) {
+        ds_sim *sim = head_on((ds_integrator)integrator, masses ? &unequal : NULL);
+        assert_int_equal(ds_sim_set_restitution(sim, e, 1.0, NULL), DS_OK);
+        const uint64_t steps = (uint64_t)(2.0 / ds_sim_get_dt(sim));
+        ds_sim_run(sim, steps, NULL);
+        assert_int_equal(ds_sim_get_collision_count(sim), 1);
+        const double ma = 1.0, mb = masses ? 3.0 : 1.0, mu = ma * mb / (ma + mb);
+        const ds_disk a = ds_sim_get_disk(sim, 0), b = ds_sim_get_disk(sim, 1);
+        /* One rounding of each product and sum: 1e-14 relative. */
+        assert_true(fabs((b.vx - a.vx) - e * 10.0) < 1e-13);
+        assert_true(fabs(ma * a.vx + mb * b.vx - 10.0) < 1e-13);
+        assert_true(fabs(ds_sim_get_energy_lost(sim) - 0.5 * (1.0 - e * e) * mu * 100.0) < 1e-12);
+        /* The books: the kinetic energy is what it was less the loss. */
+        assert_true(fabs(ds_sim_get_kinetic_energy(sim) + ds_sim_get_energy_lost(sim) - 50.0) <
+                    1e-12);
+        ds_sim_destroy(sim);
+    }
 }
 
 /* At a wall the normal velocity comes back -e times itself, the tangential
@@ -74,7 +73,8 @@ static void test_a_wall_turn_keeps_e_of_the_normal_velocity(void **state)
 {
     (void)state;
     const double e = 0.5;
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator) {
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    {
         ds_sim *sim = make((ds_integrator)integrator, DS_BOUNDARY_WALLS, 1, 5.0, 100.0);
         const ds_disk d = {20.0, 50.0, -8.0, 3.0};
         assert_int_equal(ds_sim_set_disks(sim, &d, NULL), DS_OK);
@@ -97,7 +97,8 @@ static void test_restitution_one_is_the_elastic_collision_to_the_bit(void **stat
     (void)state;
     const ds_species kinds[2] = {{60, 6.0, 0.0, NULL}, {60, 4.0, 0.0, NULL}};
     const ds_mixture mixture = {2, kinds, NULL, NULL, DS_MASS_AREA};
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator) {
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    {
         ds_sim *sim[2];
         for (int k = 0; k < 2; ++k) {
             ds_params p = ds_params_default(120, 5.0);
@@ -155,29 +156,29 @@ static void test_a_collision_within_the_contact_time_is_elastic(void **state)
 static void test_the_energy_lost_is_the_kinetic_energy_gone(void **state)
 {
     (void)state;
-    for (int integrator = 0; integrator < DS_INTEGRATOR_COUNT; ++integrator)
-        for (int boundary = 0; boundary < DS_BOUNDARY_COUNT; ++boundary) {
-            ds_params p = ds_params_default(200, 5.0);
-            p.integrator = (ds_integrator)integrator;
-            p.boundary = (ds_boundary)boundary;
-            p.box = 400.0;
-            ds_sim *sim = NULL;
-            assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
-            assert_int_equal(ds_sim_set_restitution(sim, 0.8, 0.7, NULL), DS_OK);
-            const double k0 = ds_sim_get_kinetic_energy(sim);
-            ds_sim_run(sim, 2000, NULL);
-            const double k = ds_sim_get_kinetic_energy(sim), lost = ds_sim_get_energy_lost(sim);
-            const double events =
-                (double)(ds_sim_get_collision_count(sim) + ds_sim_get_wall_count(sim));
-            assert_true(k < 0.9 * k0 && lost > 0.1 * k0);
-            if (!(fabs(k + lost - k0) <= 8.0 * DBL_EPSILON * k0 * (events + 200.0)))
-                fail_msg("%s, %s: K + lost - K0 = %g", ds_integrator_name(p.integrator),
-                         ds_boundary_name(p.boundary), k + lost - k0);
-            assert_true(ds_sim_get_power_lost(sim) == lost / ds_sim_get_time(sim));
-            ds_sim_reset_observables(sim);
-            assert_true(ds_sim_get_energy_lost(sim) == 0.0);
-            ds_sim_destroy(sim);
-        }
+    FOR_EACH_DYNAMIC_INTEGRATOR(integrator)
+    for (int boundary = 0; boundary < DS_BOUNDARY_COUNT; ++boundary) {
+        ds_params p = ds_params_default(200, 5.0);
+        p.integrator = (ds_integrator)integrator;
+        p.boundary = (ds_boundary)boundary;
+        p.box = 400.0;
+        ds_sim *sim = NULL;
+        assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+        assert_int_equal(ds_sim_set_restitution(sim, 0.8, 0.7, NULL), DS_OK);
+        const double k0 = ds_sim_get_kinetic_energy(sim);
+        ds_sim_run(sim, 2000, NULL);
+        const double k = ds_sim_get_kinetic_energy(sim), lost = ds_sim_get_energy_lost(sim);
+        const double events =
+            (double)(ds_sim_get_collision_count(sim) + ds_sim_get_wall_count(sim));
+        assert_true(k < 0.9 * k0 && lost > 0.1 * k0);
+        if (!(fabs(k + lost - k0) <= 8.0 * DBL_EPSILON * k0 * (events + 200.0)))
+            fail_msg("%s, %s: K + lost - K0 = %g", ds_integrator_name(p.integrator),
+                     ds_boundary_name(p.boundary), k + lost - k0);
+        assert_true(ds_sim_get_power_lost(sim) == lost / ds_sim_get_time(sim));
+        ds_sim_reset_observables(sim);
+        assert_true(ds_sim_get_energy_lost(sim) == 0.0);
+        ds_sim_destroy(sim);
+    }
 }
 
 /* The inelastic collapse: at e = 0.3 and area fraction 0.5 clusters
@@ -233,6 +234,31 @@ static void test_restitution_outside_zero_to_one_is_refused(void **state)
     assert_true(ds_sim_get_contact_time(sim) == tc);
     assert_int_equal(ds_sim_set_restitution(NULL, 0.5, 0.5, NULL), DS_ERR_ARG);
     assert_true(ds_sim_get_restitution(NULL) == 1.0);
+    ds_sim_destroy(sim);
+}
+
+/* Event chains have no dynamics to make granular: a restitution below 1,
+ * a field and a drive are refused naming the integrator, and nothing
+ * changes; the elastic rules and a contact time (which changes nothing
+ * elastic) are taken. */
+static void test_event_chains_refuse_granular_rules(void **state)
+{
+    (void)state;
+    ds_sim *sim = make(DS_INTEGRATOR_EVENT_CHAIN, DS_BOUNDARY_WALLS, 10, 5.0, 200.0);
+    ds_error err;
+    assert_int_equal(ds_sim_set_restitution(sim, 0.9, 1.0, &err), DS_ERR_ARG);
+    assert_string_equal(err.field, "integrator");
+    assert_int_equal(ds_sim_set_restitution(sim, 1.0, 0.5, &err), DS_ERR_ARG);
+    assert_int_equal(ds_sim_set_gravity(sim, 0.0, -10.0, &err), DS_ERR_ARG);
+    assert_string_equal(err.field, "integrator");
+    assert_int_equal(ds_sim_set_drive(sim, 10.0, &err), DS_ERR_ARG);
+    assert_string_equal(err.field, "integrator");
+    assert_true(ds_sim_get_restitution(sim) == 1.0 && ds_sim_get_wall_restitution(sim) == 1.0);
+    double gx = 1.0, gy = 1.0;
+    ds_sim_get_gravity(sim, &gx, &gy);
+    assert_true(gx == 0.0 && gy == 0.0);
+    assert_int_equal(ds_sim_set_restitution(sim, 1.0, 1.0, &err), DS_OK);
+    assert_int_equal(ds_sim_set_contact_time(sim, 0.5, &err), DS_OK);
     ds_sim_destroy(sim);
 }
 
@@ -292,6 +318,7 @@ int main(void)
         cmocka_unit_test(test_the_energy_lost_is_the_kinetic_energy_gone),
         cmocka_unit_test(test_a_dense_gas_at_low_restitution_finishes_every_step),
         cmocka_unit_test(test_restitution_outside_zero_to_one_is_refused),
+        cmocka_unit_test(test_event_chains_refuse_granular_rules),
         cmocka_unit_test(test_a_freely_cooling_gas_follows_haffs_law),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -180,4 +180,12 @@ static inline double virial_series(double eta)
     return z;
 }
 
+/* The integrators with dynamics, whose velocities collisions change:
+ * event chains sample equilibrium without them, and refuse what acts on
+ * them (a heat bath, restitution, a field, a drive), which the tests of
+ * those check. */
+#define FOR_EACH_DYNAMIC_INTEGRATOR(i)                                                             \
+    for (int i = 0; i < DS_INTEGRATOR_COUNT; ++i)                                                  \
+        if (i != DS_INTEGRATOR_EVENT_CHAIN)
+
 #endif

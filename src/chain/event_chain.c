@@ -185,6 +185,17 @@ static void kinetic(const ds_sim *sim, ds_kinetic *out)
  * as at any step's end that makes a new state. */
 static ds_status resize(ds_sim *sim, double sx, double sy) { return ds_rescale_box(sim, sx, sy); }
 
+/* Restitution and a field act on dynamics, which the chains have not:
+ * only the elastic rules without a field (a contact time alone changes
+ * nothing). */
+static ds_status take_rules(ds_sim *sim, const ds_rules *r)
+{
+    (void)sim;
+    const int dynamic = r->restitution != 1.0 || r->wall_restitution != 1.0 || r->field[0] != 0.0 ||
+                        r->field[1] != 0.0;
+    return dynamic ? DS_ERR_ARG : DS_OK;
+}
+
 /* The cells, or brute force: every disk a candidate. */
 static int fits(ds_broadphase bp) { return bp == DS_BROADPHASE_CELLS || bp == DS_BROADPHASE_BRUTE; }
 
@@ -243,6 +254,7 @@ const ds_integrator_ops ds_event_chain_ops = {
     .now = now_of,
     .kinetic = kinetic,
     .resize = resize,
+    .take_rules = take_rules,
     /* No set_velocity: velocities are the chains' temperature only, so a
      * heat bath refuses them. No growing radii: growth refuses the chains. */
 };

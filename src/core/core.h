@@ -310,7 +310,9 @@ struct ds_integrator_ops {
      * sim->world.rules still the old ones: what the integrator keeps of
      * them made ready (a field's flights predicted again, each disk's
      * time of last collision). DS_ERR_NOMEM, nothing changed, without
-     * memory for that. NULL: it reads sim->world.rules as it goes. */
+     * memory for that; DS_ERR_ARG, nothing changed, for rules it cannot
+     * follow (event chains have no dynamics to make granular). NULL: it
+     * reads sim->world.rules as it goes. */
     ds_status (*take_rules)(ds_sim *sim, const ds_rules *rules);
 };
 

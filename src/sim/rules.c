@@ -51,6 +51,11 @@ ds_status ds_rules_check(const ds_world *w, const ds_rules *r, ds_error *err)
 static ds_status take(ds_sim *sim, const ds_rules *r, ds_error *err)
 {
     const ds_status st = sim->integrator->take_rules ? sim->integrator->take_rules(sim, r) : DS_OK;
+    if (st == DS_ERR_ARG)
+        return ds_refuse(err, st, "integrator", NAN, NAN,
+                         "integrator = %s has no dynamics to make granular: it takes neither a "
+                         "restitution below 1 nor a field",
+                         sim->integrator->name);
     if (st != DS_OK)
         return ds_refuse(err, st, "n", (double)sim->world.n, NAN,
                          "n = %zu disks: no memory for their times of last collision (the TC "
