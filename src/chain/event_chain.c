@@ -160,25 +160,6 @@ static double compressibility(const ds_sim *sim)
 
 static double now_of(const ds_sim *sim) { return (double)sim->steps * sim->world.dt; }
 
-/* The velocities as they were set: chains never change them, so they
- * only carry the temperature (the heat bath and the barostat, which
- * would need set_velocity and resize, refuse the chains). */
-static void kinetic(const ds_sim *sim, ds_kinetic *out)
-{
-    const ds_disks *d = &sim->disks;
-    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
-    for (size_t i = 0; i < d->n; ++i) {
-        const double m = d->m ? d->m[i] : 1.0;
-        k += m * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
-        px += m * d->vx[i];
-        py += m * d->vy[i];
-        mass += m;
-    }
-    out->k = 0.5 * k;
-    out->px = px;
-    out->py = py;
-    out->mass = mass;
-}
 
 /* A barostat's move: the box and the centres scaled, the chains' state
  * made anew for them (core/rescale.c); the chain under way ends there,
@@ -252,7 +233,7 @@ const ds_integrator_ops ds_event_chain_ops = {
     .temperature = temperature,
     .compressibility = compressibility,
     .now = now_of,
-    .kinetic = kinetic,
+    .kinetic = ds_disks_kinetic,
     .resize = resize,
     .take_rules = take_rules,
     /* No set_velocity: velocities are the chains' temperature only, so a

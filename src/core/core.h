@@ -173,6 +173,26 @@ typedef struct ds_kinetic {
  * conserves its component, and the centre of mass's motion along it is
  * no pair's), over the degrees of freedom left. A thermostat holds it
  * (protocols/thermostat.c). */
+/* The kinetic energy, momentum and mass of the disk columns: the kinetic
+ * service of the integrators whose state they are (the time step, event
+ * chains). */
+static inline void ds_disks_kinetic(const ds_sim *sim, ds_kinetic *out)
+{
+    const ds_disks *d = &sim->disks;
+    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0;
+        k += m * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
+        px += m * d->vx[i];
+        py += m * d->vy[i];
+        mass += m;
+    }
+    out->k = 0.5 * k;
+    out->px = px;
+    out->py = py;
+    out->mass = mass;
+}
+
 static inline double ds_kinetic_temperature(const ds_box *b, size_t n, const ds_kinetic *k)
 {
     if (n == 0)

@@ -221,24 +221,6 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk d)
     return DS_OK;
 }
 
-/* The kinetic energy, momentum and mass of the columns, which are the
- * state. */
-static void kinetic(const ds_sim *sim, ds_kinetic *out)
-{
-    const ds_disks *d = &sim->disks;
-    double k = 0.0, px = 0.0, py = 0.0, mass = 0.0;
-    for (size_t i = 0; i < d->n; ++i) {
-        const double m = d->m ? d->m[i] : 1.0;
-        k += m * (d->vx[i] * d->vx[i] + d->vy[i] * d->vy[i]);
-        px += m * d->vx[i];
-        py += m * d->vy[i];
-        mass += m;
-    }
-    out->k = 0.5 * k;
-    out->px = px;
-    out->py = py;
-    out->mass = mass;
-}
 
 /* A heat bath's collision that fell in the step just taken, at its end:
  * whether it fell early or late in the step, the step's flight and its
@@ -275,7 +257,7 @@ const ds_integrator_ops ds_time_step_ops = {
      * refuses it. It reads the rules each step (take_rules NULL). */
     .kick = kick,
     .now = now_of,
-    .kinetic = kinetic,
+    .kinetic = ds_disks_kinetic,
     .set_velocity = set_velocity,
     .resize = resize,
 };
