@@ -179,7 +179,7 @@ ds_status ds_writer_close(ds_writer *writer, ds_error *err);
  * parts of ds_sim_get_stress_integral), the integrator's own state (the
  * time step's strips; the event-driven records, cells and clock) and
  * each protocol's (a growth's). A loaded simulation goes on bit for bit as the saved one
- * would have, for both integrators, both boundaries, every broad phase
+ * would have, for every integrator, boundary and broad phase
  * and a growth; its area fraction is the same double.
  *
  * The format (docs/library.md): the 8 bytes "DSIMSTAT", the format

@@ -92,8 +92,9 @@ double ds_sim_get_growth_z(const ds_sim *sim);
  * DS_ERR_ARG (field "strength", value and limit) for a strength < 0, not
  * finite or above DS_DRIVE_MAX, or while a growth grows (err naming
  * "growth": growth takes out the heat its collisions add, and would take
- * the drive's); DS_ERR_NOMEM, nothing changed, without memory for the
- * kicks (16 bytes a disk twice). */
+ * the drive's), or (field "integrator") with event chains, which take no
+ * kicks; DS_ERR_NOMEM, nothing changed, without memory for the kicks (16
+ * bytes a disk twice). */
 #define DS_DRIVE_MAX 1e24
 ds_status ds_sim_set_drive(ds_sim *sim, double strength, ds_error *err);
 double ds_sim_get_drive(const ds_sim *sim); /* the strength; 0 without a drive or for NULL */
@@ -189,7 +190,7 @@ double ds_sim_get_thermostat_temperature(const ds_sim *sim);
  * Gamma(n + 1, 1 / (beta P)) distributed: <A> = (n + 1) / (beta P), and
  * the mean area fraction is the canonical one at the same pressure.
  * Temperature does not enter (hard disks have no potential energy), so
- * it samples the isobaric ensemble with either integrator, with a heat
+ * it samples the isobaric ensemble with any integrator, with a heat
  * bath or without. The time step's disks overlap a little at a step's
  * end (it sees each collision after it happens): a move is refused for a
  * pair it brings closer than contact that was not, which leaves the time

@@ -196,7 +196,8 @@ ds_status ds_sim_scale_velocities(ds_sim *sim, double factor, ds_error *err);
  *
  * DS_ERR_ARG (err naming "restitution" or "wall_restitution", the value
  * and the limit) for a coefficient not in (0, 1], or for e < 1 while a
- * growth grows (ds_sim_set_growth); DS_ERR_NOMEM, nothing changed,
+ * growth grows (ds_sim_set_growth), or (field "integrator") for e < 1
+ * with event chains, which have no dynamics; DS_ERR_NOMEM, nothing changed,
  * without memory for each disk's time of last collision (the
  * event-driven integrator's, 8 bytes a disk). */
 ds_status ds_sim_set_restitution(ds_sim *sim, double disks, double walls, ds_error *err);
@@ -227,7 +228,8 @@ double ds_sim_get_contact_time(const ds_sim *sim); /* as resolved; 0 for NULL */
  * the floor, which hard disks cannot hold still, hops once per t_c at
  * most). DS_ERR_ARG (field "gx" or "gy") for a component not finite, of
  * magnitude beyond DS_GRAVITY_MAX, or other than 0 along a periodic axis
- * (the disks would fall for ever); (0, 0) turns the field off. */
+ * (the disks would fall for ever), or (field "integrator") for a field
+ * with event chains, which have no dynamics; (0, 0) turns the field off. */
 #define DS_GRAVITY_MAX 1e12
 ds_status ds_sim_set_gravity(ds_sim *sim, double gx, double gy, ds_error *err);
 void ds_sim_get_gravity(const ds_sim *sim, double *gx, double *gy); /* (0, 0) for NULL */
