@@ -236,21 +236,6 @@ static void test_a_move_scales_the_centres_and_keeps_velocities_and_images(void 
     }
 }
 
-/* A copy through a checkpoint in memory. */
-static ds_sim *through_checkpoint(const ds_sim *a)
-{
-    const size_t len = ds_checkpoint_get_size(a);
-    uint8_t *buf = malloc(len);
-    assert_non_null(buf);
-    assert_int_equal(ds_checkpoint_format(a, buf, len, NULL, NULL), DS_OK);
-    ds_sim *b = NULL;
-    ds_error err;
-    if (ds_checkpoint_parse(buf, len, &b, &err) != DS_OK)
-        fail_msg("the checkpoint was refused: %s", err.message);
-    free(buf);
-    return b;
-}
-
 static void assert_same_run(const ds_sim *a, const ds_sim *b)
 {
     const size_t n = ds_sim_get_count(a);

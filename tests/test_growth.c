@@ -230,22 +230,6 @@ static void test_a_compression_to_jamming_stops_with_an_isostatic_packing(void *
 
 /* A growing run saved and loaded goes on to the bit, the thermostat's
  * windows and the growth's clock and all. */
-/* A copy through a checkpoint in memory. */
-static ds_sim *through_checkpoint(const ds_sim *a)
-{
-    const size_t len = ds_checkpoint_get_size(a);
-    uint8_t *buf = malloc(len);
-    assert_non_null(buf);
-    assert_int_equal(ds_checkpoint_format(a, buf, len, NULL, NULL), DS_OK);
-    ds_sim *b = NULL;
-    ds_error err;
-    const ds_status st = ds_checkpoint_parse(buf, len, &b, &err);
-    if (st != DS_OK)
-        fail_msg("the checkpoint at t = %g was refused: %s", ds_sim_get_time(a), err.message);
-    free(buf);
-    return b;
-}
-
 /* a and b, run on by the same steps, are the same to the bit. */
 static void assert_same_run(ds_sim *a, ds_sim *b, uint64_t steps)
 {

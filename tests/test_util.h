@@ -180,6 +180,22 @@ static inline double virial_series(double eta)
     return z;
 }
 
+/* A copy of a through a checkpoint in memory; a refusal fails the test
+ * with the library's reason. */
+static inline ds_sim *through_checkpoint(const ds_sim *a)
+{
+    const size_t len = ds_checkpoint_get_size(a);
+    uint8_t *buf = malloc(len);
+    assert_non_null(buf);
+    assert_int_equal(ds_checkpoint_format(a, buf, len, NULL, NULL), DS_OK);
+    ds_sim *b = NULL;
+    ds_error err;
+    if (ds_checkpoint_parse(buf, len, &b, &err) != DS_OK)
+        fail_msg("the checkpoint at t = %g was refused: %s", ds_sim_get_time(a), err.message);
+    free(buf);
+    return b;
+}
+
 /* The integrators with dynamics, whose velocities collisions change:
  * event chains sample equilibrium without them, and refuse what acts on
  * them (a heat bath, restitution, a field, a drive), which the tests of
