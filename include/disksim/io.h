@@ -199,7 +199,7 @@ ds_status ds_writer_close(ds_writer *writer, ds_error *err);
  * the stress integral's parts (an older file's run is elastic, without
  * a field); version 1 lacks the stress integral's parts (a run loaded
  * from it starts ds_sim_get_stress_integral at 0). */
-#define DS_CHECKPOINT_FORMAT_VERSION 4
+#define DS_CHECKPOINT_FORMAT_VERSION 5
 
 /* Bytes ds_checkpoint_format writes for sim (0 for NULL). */
 size_t ds_checkpoint_get_size(const ds_sim *sim);
