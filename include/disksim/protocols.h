@@ -255,8 +255,9 @@ double ds_sim_get_barostat_acceptance(const ds_sim *sim);
  * both axes (field "boundary"), an integrator that cannot shear (field
  * "integrator"), Andersen's heat bath (field "thermostat": its draws
  * know no profile; use the isokinetic one), a barostat (field
- * "barostat"), a growth that is growing (field "growth") or a field
- * (field "field"). DS_ERR_NOMEM, nothing changed. */
+ * "barostat") or a growth that is growing (field "growth"); a field
+ * cannot be, as it needs walls across it (ds_sim_set_gravity).
+ * DS_ERR_NOMEM, nothing changed. */
 ds_status ds_sim_set_shear(ds_sim *sim, double rate, ds_error *err);
 /* The rate set (0 without a shear, and for sim NULL). */
 double ds_sim_get_shear(const ds_sim *sim);

@@ -73,6 +73,9 @@ ds_status ds_sim_set_growth(ds_sim *sim, double rate, double until_eta, double u
         return ds_refuse(err, DS_ERR_ARG, "drive", ds_drive_strength(sim), 0.0,
                          "drive = %g: growth takes out the heat a drive puts in (stop it first)",
                          ds_drive_strength(sim));
+    if (rate > 0.0 && ds_protocols_get(sim, DS_PROTOCOL_SHEAR))
+        return ds_refuse(err, DS_ERR_ARG, "shear", ds_shear_rate(sim), NAN,
+                         "shear: growth needs a box at rest, not a sheared one");
     /* Growth takes out its own heat, in a box of its own. */
     if (rate > 0.0 && (ds_protocols_get(sim, DS_PROTOCOL_THERMOSTAT) ||
                        ds_protocols_get(sim, DS_PROTOCOL_BAROSTAT)))
@@ -360,9 +363,6 @@ ds_status ds_sim_set_shear(ds_sim *sim, double rate, ds_error *err)
     if (growing(sim))
         return ds_refuse(err, DS_ERR_ARG, "growth", NAN, NAN,
                          "growth: a growth is growing (stop it first)");
-    if (ds_rules_fall(&w->rules))
-        return ds_refuse(err, DS_ERR_ARG, "field", NAN, NAN,
-                         "field: falling disks cannot be sheared (set gravity 0 first)");
     if (ds_shear_start(sim, rate) != DS_OK)
         return ds_refuse(err, DS_ERR_NOMEM, "rate", rate, NAN, "rate = %g: no memory for the shear",
                          rate);
