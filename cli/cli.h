@@ -221,8 +221,8 @@ int carry_over_gsd(output *out, const ds_sim *sim);
  * integral there, and each row records its own for the next. */
 extern const char stats_header[];
 typedef struct stats_books {
-    int marked;          /* a previous row's (or the checkpoint's) integral is held */
-    double s_xy, time;   /* ds_sim_get_stress_integral's xy part, and the time */
+    int marked;        /* a previous row's (or the checkpoint's) integral is held */
+    double s_xy, time; /* ds_sim_get_stress_integral's xy part, and the time */
 } stats_books;
 void stats_mark(stats_books *b, const ds_sim *sim);
 void stats_row(output *out, long frame, const ds_sim *sim, stats_books *b);

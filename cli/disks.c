@@ -52,7 +52,7 @@ typedef struct run {
     size_t frame_cap;
     char *json; /* frames.json, written with the first frame */
     output stats, trajectory, gsd_file;
-    stats_books books; /* the stress integral at the last row, for the next */
+    stats_books books;     /* the stress integral at the last row, for the next */
     ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
     ds_writer *gsd;        /* --gsd's, into gsd_file.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */

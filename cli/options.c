@@ -66,7 +66,9 @@ static void check_combination(const options *o, int npos, const char *system_opt
         die(EXIT_USAGE,
             "%s cannot be given with --grow: growth takes out its own heat in a box "
             "of its own",
-            o->pressure > 0.0 ? "--pressure" : o->shear_given ? "--shear" : "--thermostat");
+            o->pressure > 0.0 ? "--pressure"
+            : o->shear_given  ? "--shear"
+                              : "--thermostat");
     /* Growth measures its own Z over windows of collisions, and its
      * pressure is not an equilibrium one to average. */
     if (o->measure_after > 0.0 && o->grow_rate > 0.0)
