@@ -70,12 +70,11 @@ static size_t format_header(const ds_sim *sim, char *out)
         memcpy(shear, " shear_offset=", 15);
         ds_format_shortest(shear + 14, sizeof shear - 14, w->box.offset);
     }
-    int len =
-        snprintf(out, XYZ_HEADER_MAX,
-                 "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
-                 "%s Time=%s pbc=\"%s\"%s\n",
-                 w->n, box, box_y, height, sim->disks.ix ? XYZ_IMAGE_PROPERTY : "", time, pbc,
-                 shear);
+    int len = snprintf(out, XYZ_HEADER_MAX,
+                       "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
+                       "%s Time=%s pbc=\"%s\"%s\n",
+                       w->n, box, box_y, height, sim->disks.ix ? XYZ_IMAGE_PROPERTY : "", time, pbc,
+                       shear);
     return len > 0 && len < XYZ_HEADER_MAX ? (size_t)len : 0;
 }
 
