@@ -13,20 +13,24 @@
  * Henderson's Z (as tools/transport): relaxation 200 t_E (1000 t_E from a
  * lattice, --lattice) under the shear, then B blocks (default 20) of T
  * time units (default 100 t_E), the disks looked at every H (default 0.1
- * t_E). In each block:
+ * t_E). At each look:
  *   - the apparent viscosity -P_xy / RATE, P_xy the change of the stress
  *     integral's xy component (ds_sim_get_stress_integral: kinetic part
  *     of the peculiar velocities, collisions' part exact) over A = W H and
- *     the block's duration;
- *   - the velocity profile: the mean v_x in K (default 10) bins of y over
- *     the block's looks, and its least-squares slope.
+ *     the time between looks;
+ *   - the velocity profile: the mean v_x in K (default 10) bins of y, and
+ *     its least-squares slope at each look.
+ * The means are over every look, their errors the standard errors
+ * corrected for the correlation between looks (Flyvbjerg and Petersen's
+ * blocking, analysis_util.h): the box's slowest shear mode relaxes in
+ * H^2 / (4 pi^2 nu), nu the kinematic viscosity, which can pass a block.
  * Prints '#' lines with the system, the measured mean free time t_c, the
  * reduced rate RATE t_c and Enskog's viscosity (Gass 1971) at the
  * measured Z, the profile (y, mean v_x and its error per bin), then one
  * line:
  *   eta N rate viscosity error temperature slope slope_error reduced_rate eta_enskog
- * each value the mean over the blocks and its standard error, then the
- * rate times the measured mean free time t_c and Enskog's viscosity. */
+ * the last two the rate times the measured mean free time t_c and
+ * Enskog's viscosity. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -177,44 +181,70 @@ int main(int argc, char **argv)
         fputs("rheology: out of memory\n", stderr);
         return 1;
     }
-    stats viscosity = {0, 0, 0}, temperature = {0, 0, 0}, slope = {0, 0, 0}, z = {0, 0, 0};
+    /* One viscosity and one slope per look (the stress integral's change
+     * over the interval, the profile of the one configuration): their
+     * means are the blocks' means, and their errors are corrected for
+     * the correlation (analysis_util.h's blocked_mean), which the slow
+     * shear modes of the box carry past a block's length. */
+    const size_t looks = (size_t)blocks * per_block;
+    double *visc = malloc(looks * sizeof *visc), *slopes = malloc(looks * sizeof *slopes);
+    double *here = malloc(2 * bins * sizeof *here); /* a look's own bins, for its slope */
+    if (!visc || !slopes || !here) {
+        fputs("rheology: out of memory for the samples\n", stderr);
+        return 1;
+    }
+    stats temperature = {0, 0, 0}, z = {0, 0, 0};
+    size_t look = 0;
+    double s0[3];
+    ds_sim_get_stress_integral(sim, s0, NULL);
     for (int b = 0; b < blocks; ++b) {
-        double s0[3], s1[3];
-        ds_sim_get_stress_integral(sim, s0, NULL);
-        const double start = ds_sim_get_time(sim);
         ds_sim_reset_observables(sim);
         for (size_t k = 0; k < bins; ++k)
             sum[k] = count[k] = 0.0;
-        for (uint64_t s = 0; s < per_block; ++s) {
+        for (uint64_t s = 0; s < per_block; ++s, ++look) {
+            const double start = ds_sim_get_time(sim);
             check(ds_sim_step(sim, &why), &why, "the run");
+            double s1[3];
+            ds_sim_get_stress_integral(sim, s1, NULL);
+            visc[look] = -(s1[2] - s0[2]) / (area * (ds_sim_get_time(sim) - start) * rate);
+            s0[0] = s1[0], s0[1] = s1[1], s0[2] = s1[2];
             ds_sim_get_disks(sim, d, NULL);
+            for (size_t k = 0; k < 2 * bins; ++k)
+                here[k] = 0.0;
             for (size_t i = 0; i < n; ++i) {
                 size_t k = (size_t)(d[i].y / height * (double)bins);
                 k = k < bins ? k : bins - 1;
                 sum[k] += d[i].vx;
                 count[k] += 1.0;
+                here[2 * k] += d[i].vx;
+                here[2 * k + 1] += 1.0;
             }
+            double sy = 0.0, syy = 0.0, su = 0.0, syu = 0.0, m = 0.0;
+            for (size_t f = 0; f < bins; ++f) {
+                if (here[2 * f + 1] == 0.0)
+                    continue;
+                const double y = ((double)f + 0.5) * height / (double)bins;
+                const double u = here[2 * f] / here[2 * f + 1];
+                sy += y;
+                syy += y * y;
+                su += u;
+                syu += y * u;
+                m += 1.0;
+            }
+            slopes[look] = (m * syu - sy * su) / (m * syy - sy * sy);
         }
-        ds_sim_get_stress_integral(sim, s1, NULL);
-        const double duration = ds_sim_get_time(sim) - start;
-        add(&viscosity, -(s1[2] - s0[2]) / (area * duration * rate));
         add(&temperature, ds_sim_get_temperature(sim));
         add(&z, ds_sim_get_compressibility_factor(sim));
-        /* The profile's least-squares slope over the bins' centres. */
-        double sy = 0.0, syy = 0.0, su = 0.0, syu = 0.0, m = 0.0;
-        for (size_t k = 0; k < bins; ++k) {
-            if (count[k] == 0.0)
-                continue;
-            const double y = ((double)k + 0.5) * height / (double)bins, u = sum[k] / count[k];
-            add(&profile[k], u);
-            sy += y;
-            syy += y * y;
-            su += u;
-            syu += y * u;
-            m += 1.0;
-        }
-        add(&slope, (m * syu - sy * su) / (m * syy - sy * sy));
+        for (size_t k = 0; k < bins; ++k)
+            if (count[k] > 0.0)
+                add(&profile[k], sum[k] / count[k]);
     }
+    double visc_error, slope_error;
+    const double visc_mean = blocked_mean(visc, looks, &visc_error);
+    const double slope_mean = blocked_mean(slopes, looks, &slope_error);
+    free(visc);
+    free(slopes);
+    free(here);
     const double nu = 2.0 * (double)(ds_sim_get_collision_count(sim) - collisions0) /
                       ((double)n * (ds_sim_get_time(sim) - time0));
     const double sigma = 2.0 * p.radius, g = (mean(&z) - 1.0) / (2.0 * eta);
@@ -226,7 +256,7 @@ int main(int argc, char **argv)
     printf("# Z %.6f +- %.6f g(sigma) %.6f nu %.6g t_c %.6g rate*t_c %.6g\n", mean(&z), error(&z), g,
            nu, 1.0 / nu, rate / nu);
     printf("# eta_E %.6g (Enskog, Gass 1971, at the measured Z) viscosity/eta_E %.5f +- %.5f\n",
-           eta_e, mean(&viscosity) / eta_e, error(&viscosity) / eta_e);
+           eta_e, visc_mean / eta_e, visc_error / eta_e);
     printf("# %llu collisions, %.1f s\n",
            (unsigned long long)(ds_sim_get_collision_count(sim) - collisions0),
            ds_timer_now() - t0);
@@ -235,8 +265,8 @@ int main(int argc, char **argv)
         printf("# %.6g %.6g %.3g\n", ((double)k + 0.5) * height / (double)bins, mean(&profile[k]),
                error(&profile[k]));
     printf("# eta N rate viscosity error temperature slope slope_error reduced_rate eta_enskog\n");
-    printf("%.6g %zu %.9g %.9g %.3g %.9g %.9g %.3g %.6g %.6g\n", eta, n, rate, mean(&viscosity),
-           error(&viscosity), mean(&temperature), mean(&slope), error(&slope), rate / nu, eta_e);
+    printf("%.6g %zu %.9g %.9g %.3g %.9g %.9g %.3g %.6g %.6g\n", eta, n, rate, visc_mean,
+           visc_error, mean(&temperature), slope_mean, slope_error, rate / nu, eta_e);
     free(d);
     free(sum);
     free(count);
