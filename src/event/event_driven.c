@@ -65,21 +65,12 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
     double rx = b->x - a->x, ry = b->y - a->y;
     double dvx = b->vx - a->vx;
     const double dvy = b->vy - a->vy;
-    if (e->lees_edwards) { /* the images that meet, as they stand and move at t */
-        const ds_box box = ds_ed_box_at(e, t);
-        ds_box_nearest_moving(&box, &rx, &ry, &dvx);
-    } else {
-        ds_box_nearest(&e->box, &rx, &ry);
-    }
+    ds_ed_nearest(e, t, &rx, &ry, &dvx);
     const double approach = rx * dvx + ry * dvy;
-    /* Across the top or bottom of a sheared box the pair meets as images
-     * moving apart along x: its lab energy is not kept, so the kinetic
-     * tensor's change is taken from the velocities themselves (the rules
-     * assume the energy kept). */
+    /* For a sheared box's stress tally (sheared.c). */
     const int across = e->lees_edwards && ry != b->y - a->y;
     const double before[3] = {tally->kinetic[0], tally->kinetic[1], tally->kinetic[2]};
     const double v0[4] = {a->vx, a->vy, b->vx, b->vy};
-    const double avy = a->vy;
     /* Rounding can leave a predicted pair a hair from approaching; then
      * there is nothing to exchange, and both are simply predicted again.
      * Restitution below 1 goes by the TC model (core/collide.h); the
@@ -95,19 +86,8 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
                           tally);
     else if (approach < 0.0)
         ds_collide(rx, ry, approach, &a->vx, &a->vy, &b->vx, &b->vy, tally);
-    /* The shear's moment sum m (y - H/2) vy: a's momentum change along y,
-     * b's the opposite, at the two centres in the box. */
-    if (tally->shear_rate != 0.0)
-        tally->shear_moment += (e->mass ? e->mass[i] : 1.0) * (a->vy - avy) * (a->y - b->y);
-    if (across) {
-        const double ma = e->mass ? e->mass[i] : 1.0, mb = e->mass ? e->mass[j] : 1.0;
-        tally->kinetic[0] = before[0] + ma * (a->vx * a->vx - v0[0] * v0[0]) +
-                            mb * (b->vx * b->vx - v0[2] * v0[2]);
-        tally->kinetic[1] = before[1] + ma * (a->vy * a->vy - v0[1] * v0[1]) +
-                            mb * (b->vy * b->vy - v0[3] * v0[3]);
-        tally->kinetic[2] = before[2] + ma * (a->vx * a->vy - v0[0] * v0[1]) +
-                            mb * (b->vx * b->vy - v0[2] * v0[3]);
-    }
+    if (e->lees_edwards)
+        ds_ed_sheared_collision(tally, e, i, j, across, before, v0);
     ++a->changes;
     ++b->changes;
     schedule(e, i);
@@ -144,36 +124,6 @@ static void turn_at_wall(ds_sim *sim, ds_events *e, uint32_t i, double t, int ax
     schedule(e, i);
 }
 
-/* Disk d (record i), wrapped at t across the top (up) or bottom of a
- * sheared box: it enters as the image it was, the image's shift along x
- * and its speed taken off (up) or added, and its x image count takes the
- * offset's whole widths so that its unwrapped centre, x + ix width + iy
- * offset, goes on continuously (ds_sim_get_shear_offset). Its velocity
- * changes (the kinetic tensor and the shear's moment with it) but not
- * its motion relative to anyone: what was predicted against it stays. */
-static void cross_sheared(ds_sim *sim, ds_events *e, uint32_t i, double t, int up)
-{
-    ed_disk *d = &e->disk[i];
-    ds_tally *tally = &sim->tally;
-    double turns;
-    const double shift = ds_ed_shift(e, t, &turns), sign = up ? 1.0 : -1.0;
-    const double m = e->mass ? e->mass[i] : 1.0, speed = e->box.shift_speed;
-    ds_tally_flight_to(tally, t);
-    ds_tally_velocity(tally, m, d->vx, d->vy, d->vx - sign * speed, d->vy);
-    tally->momentum[0] -= m * sign * speed;
-    tally->shear_moment -= sign * m * d->vy * e->box.side[1];
-    d->vx -= sign * speed;
-    int32_t *ix = &e->image[2 * (size_t)i];
-    const uint32_t w = ds_turns_u32(turns);
-    *ix = (int32_t)(up ? (uint32_t)*ix - w : (uint32_t)*ix + w);
-    /* A shift moves the disk along x into another column; none (the
-     * images standing at 0) leaves it in its own, to the bit. */
-    if (shift != 0.0) {
-        d->x = ds_wrap_counting(d->x - sign * shift, e->box.side[0], ix);
-        d->column = (uint16_t)ds_cells_column(&e->cells, d->x);
-    }
-}
-
 static void cross_cell(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis_y)
 {
     ed_disk *d = &e->disk[i];
@@ -193,7 +143,7 @@ static void cross_cell(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis
             if (image) /* none with walls, where only a forged state crosses */
                 *image = (int32_t)((uint32_t)*image + 1u);
             if (axis_y && e->lees_edwards)
-                cross_sheared(sim, e, i, t, 1);
+                ds_ed_cross_sheared(sim, e, i, t, 1);
         }
     } else if (*c == 0) {
         *c = (uint16_t)(count - 1);
@@ -201,7 +151,7 @@ static void cross_cell(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis
         if (image)
             *image = (int32_t)((uint32_t)*image - 1u);
         if (axis_y && e->lees_edwards)
-            cross_sheared(sim, e, i, t, 0);
+            ds_ed_cross_sheared(sim, e, i, t, 0);
     } else {
         --*c;
     }
@@ -238,22 +188,6 @@ static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
 /* Showing the disks, moving the epoch                                  */
 /* ------------------------------------------------------------------ */
 
-/* A sheared box's rate and moment sum m (y - H/2) vy for the stress
- * tally (core.h), from the disks as the arrays show them at the run's
- * start; 0 without shear. */
-static void start_shear_tally(ds_sim *sim, const ds_events *e)
-{
-    ds_tally *t = &sim->tally;
-    t->shear_rate = e->lees_edwards ? e->box.shift_speed / e->box.side[1] : 0.0;
-    t->shear_moment = 0.0;
-    if (t->shear_rate == 0.0)
-        return;
-    const ds_disks *d = &sim->disks;
-    const double middle = 0.5 * e->box.side[1];
-    for (size_t k = 0; k < d->n; ++k)
-        t->shear_moment += (d->m ? d->m[k] : 1.0) * (d->y[k] - middle) * d->vy[k];
-}
-
 static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
 {
     ds_events *e = sim->state;
@@ -265,7 +199,7 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
     sim->tally.falling = e->falls;
     sim->tally.field[0] = e->field[0];
     sim->tally.field[1] = e->field[1];
-    start_shear_tally(sim, e);
+    ds_ed_start_shear_tally(sim, e);
     for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
@@ -310,10 +244,7 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
     e->tested = 0;
     ds_ed_show_at(&sim->disks, e, target);
     ds_ed_show_radii(sim, e, target);
-    if (e->lees_edwards) {
-        sim->world.box.shift = ds_ed_box_at(e, target).shift;
-        sim->world.box.offset = ds_ed_offset(e, target);
-    }
+    ds_ed_show_shear(sim, e, target);
     return st;
 }
 
@@ -408,40 +339,6 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     return DS_OK;
 }
 
-/* The shear's streaming velocity along x at height y (the profile whose
- * slope is the rate, 0 at mid-height), for a disk of a sheared box. */
-static double streaming(const ds_events *e, double y)
-{
-    return e->box.shift_speed / e->box.side[1] * (y - 0.5 * e->box.side[1]);
-}
-
-/* A sheared box's velocities scaled about the profile (the peculiar
- * velocities times factor) at now, the records and arrays alike, the
- * kinetic tensor and the shear's moment summed afresh. */
-static void scale_peculiar(ds_sim *sim, ds_events *e, double now, double factor)
-{
-    ds_tally *t = &sim->tally;
-    const double middle = 0.5 * e->box.side[1];
-    double xx = 0.0, yy = 0.0, xy = 0.0, moment = 0.0;
-    for (size_t k = 0; k < sim->world.n; ++k) {
-        ed_disk *d = &e->disk[k];
-        ds_ed_advance(d, now);
-        const double u = streaming(e, d->y), m = e->mass ? e->mass[k] : 1.0;
-        d->vx = u + factor * (d->vx - u);
-        d->vy *= factor;
-        sim->disks.vx[k] = d->vx; /* the arrays' y is the wrapped record's: same profile */
-        sim->disks.vy[k] = d->vy;
-        xx += m * d->vx * d->vx;
-        yy += m * d->vy * d->vy;
-        xy += m * d->vx * d->vy;
-        moment += m * (d->y - middle) * d->vy;
-    }
-    t->kinetic[0] = xx;
-    t->kinetic[1] = yy;
-    t->kinetic[2] = xy;
-    t->shear_moment = moment;
-}
-
 /* Every velocity times factor at the present time, the records and the
  * arrays alike; a growth goes on from the radii of now. */
 static ds_status scale_velocities(ds_sim *sim, double factor)
@@ -450,7 +347,7 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     const size_t n = sim->world.n;
     const double now = now_of(sim);
     if (sim->tally.shear_rate != 0.0) {
-        scale_peculiar(sim, e, now, factor);
+        ds_ed_scale_peculiar(sim, e, now, factor);
         ds_ed_growth_go_on(e, n, now);
         return DS_OK;
     }
@@ -492,7 +389,7 @@ static void kinetic(const ds_sim *sim, ds_kinetic *out)
             vy += e->field[1] * now;
         }
         if (e->lees_edwards) /* the peculiar velocity: less the profile's */
-            vx -= streaming(e, d->y + d->vy * (now - d->t));
+            vx -= ds_ed_streaming(e, d->y + d->vy * (now - d->t));
         k += m * (vx * vx + vy * vy);
         px += m * vx;
         py += m * vy;
@@ -539,98 +436,6 @@ static ds_status resize(ds_sim *sim, double sx, double sy)
     if (st == DS_OK)
         ds_protocols_rebased(sim, now - now_of(sim));
     return st;
-}
-
-/* The disks of row `row` taken to t and predicted again there. */
-static void predict_row(ds_events *e, uint32_t row, double t)
-{
-    const ds_cells *cells = &e->cells;
-    for (uint32_t c = 0; c < cells->nx; ++c) {
-        const uint32_t cell = ds_cells_index(cells, c, row);
-        const uint32_t *slot = ds_cells_slots(cells, cell);
-        for (int j = 0; j < DS_CELL_SLOTS && slot[j] != cells->empty; ++j) {
-            ds_ed_advance(&e->disk[slot[j]], t);
-            schedule(e, slot[j]);
-        }
-        if (slot[DS_CELL_SLOTS - 1] != cells->empty)
-            for (uint32_t k = ds_cells_overflow(cells, cell); k != cells->empty;
-                 k = cells->next[k]) {
-                ds_ed_advance(&e->disk[k], t);
-                schedule(e, k);
-            }
-    }
-}
-
-/* Every disk at t takes the change of the shear's profile, du (y - H/2)
- * along x (a shear set afresh starts from its steady profile rather than
- * from rest, which momentum would take a diffusion time over the height
- * to reach); the kinetic tensor and the shear's moment summed afresh,
- * and everyone predicted again. */
-static void add_profile(ds_sim *sim, ds_events *e, double t, double du)
-{
-    ds_tally *tally = &sim->tally;
-    const double middle = 0.5 * e->box.side[1];
-    ds_tally_flight_to(tally, t);
-    double xx = 0.0, yy = 0.0, xy = 0.0;
-    for (size_t k = 0; k < sim->world.n; ++k) {
-        ed_disk *d = &e->disk[k];
-        ds_ed_advance(d, t);
-        const double m = e->mass ? e->mass[k] : 1.0;
-        d->vx += du * (d->y - middle);
-        xx += m * d->vx * d->vx;
-        yy += m * d->vy * d->vy;
-        xy += m * d->vx * d->vy;
-        ++d->changes; /* every prediction is stale */
-        d->next = INFINITY;
-    }
-    tally->kinetic[0] = xx;
-    tally->kinetic[1] = yy;
-    tally->kinetic[2] = xy;
-    ds_ed_schedule_all(e, sim->world.n);
-    ds_eq_build(e->queue, t);
-}
-
-/* The table's shear (core.h). The boundary rows' stencils reach the
- * columns shear_cell along (event_predict.c), valid while the offset
- * stays within that cell width: each time it passes an edge the count
- * moves by one and the two rows are predicted again, which costs 2 nx
- * disks' predictions per cell width of shift (rate H / w of them per
- * unit time). */
-static double shear(ds_sim *sim, double t, double speed, int moved)
-{
-    ds_events *e = sim->state;
-    /* The stencils change when the count moves, the speed changes, or a
-     * box that was not sheared stands shifted; a shear set again as it
-     * was, or at rate 0 on a box at rest, leaves every prediction true. */
-    const int again = moved || speed != e->box.shift_speed;
-    if (moved) {
-        e->shear_cell += moved;
-    } else {
-        if (speed != e->box.shift_speed)
-            add_profile(sim, e, t, (speed - e->box.shift_speed) / e->box.side[1]);
-        const double o = ds_ed_offset(e, t);
-        e->lees_edwards = 1;
-        e->box.shift_speed = sim->world.box.shift_speed = speed;
-        e->offset = o - speed * t;
-        e->shear_cell = (int64_t)floor(o * e->cells.inv_wx);
-        sim->world.box.shift = ds_ed_box_at(e, t).shift;
-        sim->world.box.offset = o;
-        sim->tally.shear_rate = speed / e->box.side[1];
-        ds_ed_show_at(&sim->disks, e, t); /* the profile's velocities */
-    }
-    if (again) {
-        predict_row(e, 0, t);
-        if (e->cells.ny > 1)
-            predict_row(e, e->cells.ny - 1, t);
-    }
-    sim->tally.pairs_tested += e->tested;
-    e->tested = 0;
-    double next = INFINITY;
-    if (speed > 0.0)
-        next = ((double)(e->shear_cell + 1) * e->cells.wx - e->offset) / speed;
-    else if (speed < 0.0)
-        next = ((double)e->shear_cell * e->cells.wx - e->offset) / speed;
-    return next > t ? next : t;
 }
 
 /* ------------------------------------------------------------------ */
@@ -691,5 +496,5 @@ const ds_integrator_ops ds_event_driven_ops = {
     .widen = ds_ed_widen,
     .kick = ds_ed_kick,
     .take_rules = ds_ed_take_rules,
-    .shear = shear,
+    .shear = ds_ed_shear,
 };

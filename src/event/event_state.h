@@ -205,6 +205,48 @@ static inline ds_box ds_ed_box_at(const ds_events *e, double t)
     return b;
 }
 
+/* The shear's streaming velocity along x at height y (the profile whose
+ * slope is the rate, 0 at mid-height), for a disk of a sheared box. */
+static inline double ds_ed_streaming(const ds_events *e, double y)
+{
+    return e->box.shift_speed / e->box.side[1] * (y - 0.5 * e->box.side[1]);
+}
+
+/* The separation (*rx, *ry) of two disks at t to its nearest image, and
+ * in a sheared box their relative velocity along x *dvx that of the
+ * images that meet, as they stand and move at t. */
+static inline void ds_ed_nearest(const ds_events *e, double t, double *rx, double *ry, double *dvx)
+{
+    if (e->lees_edwards) {
+        const ds_box box = ds_ed_box_at(e, t);
+        ds_box_nearest_moving(&box, rx, ry, dvx);
+    } else {
+        ds_box_nearest(&e->box, rx, ry);
+    }
+}
+
+/* A sheared box's images as they stand at t into the simulation's box
+ * (ds_sim_get_shear_shift, _offset); nothing without shear. */
+static inline void ds_ed_show_shear(ds_sim *sim, const ds_events *e, double t)
+{
+    if (!e->lees_edwards)
+        return;
+    sim->world.box.shift = ds_ed_box_at(e, t).shift;
+    sim->world.box.offset = ds_ed_offset(e, t);
+}
+
+/* Lees-Edwards (sheared.c): a crossing of the top (up) or bottom at t; the
+ * stress tally's shear terms at a run's start and after a collision of i
+ * and j (across: through the top or bottom; before[], v0[]: the kinetic
+ * tensor and the pair's velocities before it); the peculiar velocities
+ * scaled at now; the table's shear service (core.h). */
+void ds_ed_cross_sheared(ds_sim *sim, ds_events *e, uint32_t i, double t, int up);
+void ds_ed_start_shear_tally(ds_sim *sim, const ds_events *e);
+void ds_ed_sheared_collision(ds_tally *tally, const ds_events *e, uint32_t i, uint32_t j,
+                             int across, const double before[3], const double v0[4]);
+void ds_ed_scale_peculiar(ds_sim *sim, ds_events *e, double now, double factor);
+double ds_ed_shear(ds_sim *sim, double t, double speed, int moved);
+
 /* The cells around (column, row) at integrator time now: up to 9, or 11
  * for a boundary row of a sheared box (its row, and four columns of the
  * row across the edge, shear_cell along), each with the shift of the
