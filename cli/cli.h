@@ -5,7 +5,8 @@
  * frame); outputs.c checks every path and makes --out; frames_json.c
  * describes the run beside its frames; files.c writes files so that no
  * partial one is ever seen, and decides what a signal does; checkpoint.c
- * writes checkpoints; report.c says what went wrong; disks.c runs. The
+ * writes checkpoints; stats.c the --stats rows; report.c says what went
+ * wrong; disks.c runs. The
  * command uses the library only through disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H

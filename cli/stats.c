@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The --stats file: a header, then a row a frame of the observables at
- * that frame (docs/cli.md, "Statistics"). Numbers are written to their
+ * that frame (docs/cli.md, "Observables as CSV"). Numbers are written to their
  * last bit (%.17g), so a restart's rows are the uninterrupted run's to
  * the byte; a value the run does not have is "nan" (psi6 in a box too
  * narrow, the shear stress of the first row, the viscosity without
