@@ -13,15 +13,16 @@
 #include "render_request.h"
 
 const char rq_usage[] =
-    "usage: render [options] FRAME.txt... RUN.xyz...\n"
+    "usage: render [options] FRAME.txt... RUN.xyz... RUN.gsd...\n"
     "       render [options] --dir DIR\n"
     "Writes one PNG per frame: frame_0012.txt -> frame_0012.png, frame 12 of\n"
-    "run.xyz -> run_0012.png, next to the file or in --out DIR. Frames are lines\n"
-    "\"x y R\" (one colour) or \"x y R vx vy\" (coloured by speed, with a legend),\n"
-    "or the frames of an extended XYZ file (a disks trajectory, ASE); --colour\n"
-    "psi6 colours either by the local crystal orientation. The box and its\n"
-    "boundary come from the run's frames.json beside the frames, or the XYZ\n"
-    "header; the options below replace them.\n"
+    "run.xyz or run.gsd -> run_0012.png, next to the file or in --out DIR. Frames\n"
+    "are lines \"x y R\" (one colour) or \"x y R vx vy\" (coloured by speed, with\n"
+    "a legend), or the frames of an extended XYZ file (a disks trajectory, ASE)\n"
+    "or of a GSD file (disks --gsd, HOOMD); --colour psi6 colours any by the\n"
+    "local crystal orientation. The box and its boundary come from the run's\n"
+    "frames.json beside the frames, the XYZ header or the GSD box (GSD records\n"
+    "no boundary: periodic, as HOOMD's); the options below replace them.\n"
     "  --dir DIR    render every frame_*.txt in DIR, in name order\n"
     "  --out DIR    write the PNGs into DIR (created if missing); --out F.png\n"
     "               writes the one frame given as F.png\n"
@@ -213,9 +214,10 @@ static int check_frames(const rq_request *q, const ri_list *list)
         if (q->label == RQ_LABEL_TIME && !isfinite(f->time)) {
             fprintf(stderr, "render: --label time: %s has no time (%s): use --label frame\n",
                     f->path,
-                    f->xyz ? "its XYZ header has no Time="
-                           : "no frames.json with dt and steps_per_frame beside it, or not "
-                             "named frame_NNNN.txt");
+                    f->xyz   ? "its XYZ header has no Time="
+                    : f->gsd ? "its GSD frame has no log/disksim/time"
+                             : "no frames.json with dt and steps_per_frame beside it, or not "
+                               "named frame_NNNN.txt");
             return 1;
         }
         if (q->label == RQ_LABEL_FRAME && f->number < 0) {
