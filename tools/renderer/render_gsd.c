@@ -79,7 +79,8 @@ static int names(scan *s, uint64_t *index_at, uint64_t *index_cap)
     }
     const uint32_t version = (uint32_t)le(h + 44, 4);
     if (le(h, 8) != GSD_MAGIC)
-        snprintf(s->why, sizeof s->why, "not a GSD file: its first 8 bytes are not GSD's magic");
+        snprintf(s->why, sizeof s->why,
+                 "not a GSD file: it does not begin with the GSD magic number");
     else if (version >> 16 != 2)
         snprintf(s->why, sizeof s->why, "GSD file layer %u.%u: this reader reads 2.x",
                  version >> 16, version & 0xffffu);
