@@ -21,8 +21,10 @@ static const char *const wanted[WANTED] = {"configuration/box",  "particles/N",
                                            "particles/position", "particles/diameter",
                                            "particles/velocity", "log/disksim/time"};
 
-/* The GSD element types (gsd_type) and their sizes; 0: not a type. */
-enum { GSD_UINT32 = 3, GSD_UINT64 = 4, GSD_FLOAT = 9, GSD_DOUBLE = 10 };
+/* The GSD element types (gsd_type: 1 to 4 unsigned integers of 1 to 8
+ * bytes, 5 to 8 signed ones, 9 float, 10 double, 11 a character) and
+ * their sizes; 0: not a type. */
+enum { GSD_INT8 = 5, GSD_INT64 = 8, GSD_FLOAT = 9, GSD_DOUBLE = 10 };
 static uint64_t type_bytes(uint8_t type)
 {
     static const uint8_t bytes[] = {0, 1, 2, 4, 8, 1, 2, 4, 8, 4, 8, 1};
@@ -162,7 +164,7 @@ static int read_index(scan *s, uint64_t at, uint64_t cap, rg_chunk **chunks, siz
                          (unsigned long long)frame, (unsigned long long)k,
                          (unsigned long long)s->size);
             else
-                snprintf(s->why, sizeof s->why, "index entry %llu has GSD type %u, which is none",
+                snprintf(s->why, sizeof s->why, "index entry %llu has type %u, not one of GSD's",
                          (unsigned long long)k, c.type);
             return -1;
         }
@@ -196,9 +198,10 @@ static double element(const uint8_t *b, uint8_t type, uint64_t k)
         memcpy(&d, &u, sizeof d);
         return d;
     }
-    if (type >= 5 && type <= 8 && each < 8 && (u >> (8 * each - 1)) != 0)
-        return (double)(int64_t)(u | ~((UINT64_C(1) << (8 * each)) - 1)); /* signed, negative */
-    return type >= 5 && type <= 8 ? (double)(int64_t)u : (double)u;
+    const int is_signed = type >= GSD_INT8 && type <= GSD_INT64;
+    if (is_signed && each < 8 && (u >> (8 * each - 1)) != 0)
+        return (double)(int64_t)(u | ~((UINT64_C(1) << (8 * each)) - 1)); /* negative */
+    return is_signed ? (double)(int64_t)u : (double)u;
 }
 
 /* A small chunk's count elements (at most 8) into v. */
@@ -341,17 +344,21 @@ static uint8_t *chunk_data(FILE *f, const rg_chunk *c, size_t count, int *failed
 }
 
 /* Disk k of the chunks' bytes, its centre moved from HOOMD's box about
- * the origin to disksim's [0, L): in double, as the writer took it off. */
-static int disk_of(const rg_frame *fr, const uint8_t *pos, const uint8_t *dia, const uint8_t *vel,
-                   size_t k, ds_frame_disk *d)
+ * the origin to disksim's [0, L): in double, as the writer took it off.
+ * NULL, or what is wrong with it. */
+static const char *disk_of(const rg_frame *fr, const uint8_t *pos, const uint8_t *dia,
+                           const uint8_t *vel, size_t k, ds_frame_disk *d)
 {
     d->x = element(pos, fr->position.type, 3 * (uint64_t)k) + 0.5 * fr->box_x;
     d->y = element(pos, fr->position.type, 3 * (uint64_t)k + 1) + 0.5 * fr->box_y;
     d->r = dia ? 0.5 * element(dia, fr->diameter.type, k) : 0.5; /* HOOMD's diameter: 1 */
     d->vx = vel ? element(vel, fr->velocity.type, 3 * (uint64_t)k) : 0.0;
     d->vy = vel ? element(vel, fr->velocity.type, 3 * (uint64_t)k + 1) : 0.0;
-    return isfinite(d->x) && isfinite(d->y) && d->r > 0.0 && d->r < INFINITY && isfinite(d->vx) &&
-           isfinite(d->vy);
+    if (!(d->r > 0.0 && d->r < INFINITY))
+        return "its diameter is not a positive number";
+    if (!isfinite(d->x) || !isfinite(d->y) || !isfinite(d->vx) || !isfinite(d->vy))
+        return "its position or velocity is not finite";
+    return NULL;
 }
 
 int rg_read(const char *path, const rg_frame *fr, size_t number, ds_frame *frame, char *err,
@@ -372,8 +379,9 @@ int rg_read(const char *path, const rg_frame *fr, size_t number, ds_frame *frame
     fclose(f);
     ds_frame_disk *disks = failed ? NULL : malloc((fr->count ? fr->count : 1) * sizeof *disks);
     size_t bad = fr->count;
-    for (size_t k = 0; disks && k < fr->count && bad == fr->count; ++k)
-        if (!disk_of(fr, pos, dia, vel, k, &disks[k]))
+    const char *why = NULL;
+    for (size_t k = 0; disks && k < fr->count && !why; ++k)
+        if ((why = disk_of(fr, pos, dia, vel, k, &disks[k])) != NULL)
             bad = k;
     free(pos);
     free(dia);
@@ -381,17 +389,13 @@ int rg_read(const char *path, const rg_frame *fr, size_t number, ds_frame *frame
     if (!disks || bad < fr->count) {
         if (failed)
             snprintf(err, errlen,
-                     "%s: frame %zu: cannot read its chunks (changed since it was "
-                     "scanned?)",
+                     "%s: frame %zu: cannot read its chunks: the file changed since it was scanned",
                      path, number);
         else if (!disks)
             snprintf(err, errlen, "%s: frame %zu: out of memory for %zu disks", path, number,
                      fr->count);
         else
-            snprintf(err, errlen,
-                     "%s: frame %zu: particle %zu: a centre or velocity not finite, or a diameter "
-                     "not positive",
-                     path, number, bad);
+            snprintf(err, errlen, "%s: frame %zu: particle %zu: %s", path, number, bad, why);
         free(disks);
         return -1;
     }
