@@ -208,7 +208,8 @@ clean:
 # `make bench` prints the table of docs/performance.md (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
-BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_stats.c
+BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_chain.c \
+             tools/benchmark/bench_stats.c
 $(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) $(LDLIBS)
