@@ -240,9 +240,17 @@ $(OUT)tools/transport: tools/analysis/transport.c tools/analysis/analysis_util.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# tools/decorrelation: integrated autocorrelation times of psi6 and Z in
+# CPU seconds for one algorithm (public API only), run by
+# tools/analysis/decorrelation.sh. Built by `make`.
+all: $(OUT)tools/decorrelation
+$(OUT)tools/decorrelation: tools/analysis/decorrelation.c tools/analysis/analysis_util.h $(LIB) $(PUB_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 clean: clean-bench
 clean-bench:
-	rm -f tools/bench tools/pressure tools/gr tools/transport
+	rm -f tools/bench tools/pressure tools/gr tools/transport tools/decorrelation
 
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,
