@@ -50,15 +50,19 @@ typedef struct ch_front {
 typedef struct ch_stencil {
     uint32_t cell[6];
     double su[6], sv[6];
+    uint32_t along_at[2], across_at[3]; /* the cells' indices: cell 3 i + j is (i, j) */
 } ch_stencil;
 
 /* What a scan found: how far the active disk moves to touch the nearest
  * disk ahead (+infinity: none within reach), that disk, and the pair's
- * separation across the chain then (v_j - v_i, through the image). */
+ * separation across the chain then (v_j - v_i, through the image); for a
+ * disk in a slot, its stencil cell and slot (else cell 6), from which the
+ * next front is read without touching the disk's own records. */
 typedef struct ch_hit {
     double distance;
     uint32_t disk;
     double across;
+    uint32_t cell, slot;
 } ch_hit;
 
 static DS_ALWAYS_INLINE void stencil_of(const ch_grid *g, uint32_t axis, uint32_t up,
@@ -72,6 +76,10 @@ static DS_ALWAYS_INLINE void stencil_of(const ch_grid *g, uint32_t axis, uint32_
     const double across_shift[3] = {g->shift[across][2 * f->across], 0.0,
                                     g->shift[across][2 * f->across + 1]};
     const uint32_t along_stride = axis ? g->count[0] : 1u, across_stride = axis ? 1u : g->count[0];
+    st->along_at[0] = along_at[0];
+    st->along_at[1] = along_at[1];
+    for (int j = 0; j < 3; ++j)
+        st->across_at[j] = across_at[j];
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 3; ++j) {
             const int k = 3 * i + j;
@@ -145,6 +153,7 @@ static DS_ALWAYS_INLINE void nearest_of(const ch_grid *g, const ch_stencil *st, 
     hit->distance = best;
     hit->disk = CH_NONE;
     hit->across = 0.0;
+    hit->cell = 6;
     if (!(best < INFINITY))
         return;
     const ds_x2 b = ds_x2_set1(best);
@@ -157,6 +166,8 @@ static DS_ALWAYS_INLINE void nearest_of(const ch_grid *g, const ch_stencil *st, 
     const size_t cell = st->cell[k];
     hit->disk = g->who[cell * CH_SLOTS + (size_t)slot];
     hit->across = (g->pos[cell * 2 * CH_SLOTS + sc->across_at + (size_t)slot] - f->v) + st->sv[k];
+    hit->cell = (uint32_t)k;
+    hit->slot = (uint32_t)slot;
 }
 
 /* The nearest disk ahead among the stencil's slots. A cell's disks fill
@@ -214,6 +225,7 @@ static void scan_overflow(const ds_chain *c, const ds_disks *d, const ch_stencil
                 hit->distance = to_touch;
                 hit->disk = m;
                 hit->across = dv;
+                hit->cell = 6;
             }
         }
 }
@@ -234,6 +246,7 @@ static void scan_all(const ds_chain *c, const ds_disks *d, uint32_t axis, double
     hit->distance = INFINITY;
     hit->disk = CH_NONE;
     hit->across = 0.0;
+    hit->cell = 6;
     for (size_t m = 0; m < d->n; ++m) {
         double du = along[m] - f->u, dv = across[m] - f->v;
         if (wrap_u)
@@ -281,6 +294,27 @@ static DS_ALWAYS_INLINE void front_of(ds_chain *c, const ds_disks *d, double rad
     f->across = axis ? cd->column : cd->row;
     double *slot = ds_ch_slot_coord(c, k, axis);
     f->slot = slot ? slot : &c->scratch;
+}
+
+/* The same for the disk a lifting passes the chain to, when it is in a
+ * slot of the stencil: its centre, radius and cell from the stencil's
+ * cells, which the scan has just read, rather than from its records
+ * (the columns and c->disk), which at 10^5 disks are lines from beyond
+ * the second-level cache at each lifting. The slot holds the centre the
+ * columns hold, to the bit (write_u, ds_ch_add), so the chain is the
+ * same. */
+static DS_ALWAYS_INLINE void front_from_stencil(const ch_grid *g, const ch_stencil *st,
+                                                const ch_hit *hit, uint32_t axis, double radius,
+                                                int mixture, ch_front *f)
+{
+    double *line = g->pos + (size_t)st->cell[hit->cell] * 2 * CH_SLOTS;
+    f->disk = hit->disk;
+    f->u = line[axis * CH_SLOTS + hit->slot];
+    f->v = line[(axis ^ 1u) * CH_SLOTS + hit->slot];
+    f->r = mixture ? g->radius[(size_t)st->cell[hit->cell] * CH_SLOTS + hit->slot] : radius;
+    f->along = st->along_at[hit->cell / 3];
+    f->across = st->across_at[hit->cell % 3];
+    f->slot = line + axis * CH_SLOTS + hit->slot;
 }
 
 /* What a step adds to the tally, kept in registers until its end. */
@@ -379,10 +413,10 @@ static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, in
     while (left > 0.0) {
         const uint32_t axis = ch->axis, up = ch->sign > 0.0;
         ch_hit hit;
+        ch_stencil st;
         if (brute) {
             scan_all(c, d, axis, ch->sign, &f, sigma2, &hit);
         } else {
-            ch_stencil st;
             stencil_of(g, axis, up, &f, &st);
             scan_cells(g, &st, axis, ch->sign, &f, sigma2, mixture, &hit);
             if (g->overflowing)
@@ -419,7 +453,10 @@ static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, in
                 left -= rest;
                 ch->stalled = 0;
             }
-            front_of(c, d, radius, &f);
+            if (!brute && hit.cell < 6)
+                front_from_stencil(g, &st, &hit, axis, radius, mixture, &f);
+            else
+                front_of(c, d, radius, &f);
             if (ch->left > 0.0)
                 continue;
         } else {
