@@ -32,6 +32,7 @@
 
 #include "chain/chain_state.h"
 #include "core/lanes.h"
+#include "core/prefetch.h"
 
 /* The active disk as the loop holds it: its centre along and across the
  * chain, its radius, its cell's index along and across, and where its
@@ -88,6 +89,29 @@ static DS_ALWAYS_INLINE void stencil_of(const ch_grid *g, uint32_t axis, uint32_
                                  : (uint32_t)g->cells;
             st->su[k] = along_shift[i];
             st->sv[k] = across_shift[j];
+        }
+}
+
+/* The cells two along the chain ahead of the active disk's, three
+ * across, asked for now: a chain goes straight, so they are the next
+ * stencil's column after the one it reads now, and at 10^5 disks they
+ * come from beyond the second-level cache. */
+static DS_ALWAYS_INLINE void fetch_ahead(const ch_grid *g, uint32_t axis, uint32_t up,
+                                         const ch_stencil *st)
+{
+    const uint32_t beyond = st->along_at[1];
+    if (beyond == CH_NONE)
+        return;
+    const uint32_t ahead = g->near[axis][2 * beyond + up];
+    if (ahead == CH_NONE)
+        return;
+    const uint32_t along_stride = axis ? g->count[0] : 1u, across_stride = axis ? 1u : g->count[0];
+    for (int j = 0; j < 3; ++j)
+        if (st->across_at[j] != CH_NONE) {
+            const size_t cell =
+                (size_t)ahead * along_stride + (size_t)st->across_at[j] * across_stride;
+            ds_prefetch(g->pos + cell * 2 * CH_SLOTS);
+            ds_prefetch(g->who + cell * CH_SLOTS);
         }
 }
 
@@ -418,6 +442,7 @@ static DS_ALWAYS_INLINE void step_with(ds_sim *sim, ds_chain *c, int mixture, in
             scan_all(c, d, axis, ch->sign, &f, sigma2, &hit);
         } else {
             stencil_of(g, axis, up, &f, &st);
+            fetch_ahead(g, axis, up, &st);
             scan_cells(g, &st, axis, ch->sign, &f, sigma2, mixture, &hit);
             if (g->overflowing)
                 scan_overflow(c, d, &st, axis, ch->sign, &f, sigma2, &hit);
