@@ -10,14 +10,14 @@
 # OUT (default decorrelation.d) gets one summary line per run in
 # OUT/tau.txt (the columns of tools/analysis/decorrelation.c) and each
 # run's series in OUT/ALGO_ETA.txt; SECONDS CPU seconds of sampling per
-# run (default 210) after RELAX of relaxation (default 60), N disks
+# run (default 45) after RELAX of relaxation (default 15), N disks
 # (default 4096). The bath's rate is 0.5 collisions per disk per time unit,
 # about 1% of a disk's collisions at these densities.
 set -eu
 out=${1:-decorrelation.d}
 n=${2:-4096}
-seconds=${3:-210}
-relax=${4:-60}
+seconds=${3:-45}
+relax=${4:-15}
 mkdir -p "$out"
 : > "$out/tau.txt"
 for eta in 0.70 0.72; do
