@@ -208,7 +208,8 @@ clean:
 # `make bench` prints the table of docs/performance.md (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
-BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_stats.c
+BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_chain.c \
+             tools/benchmark/bench_stats.c
 $(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) $(LDLIBS)
@@ -247,9 +248,17 @@ $(OUT)tools/rheology: tools/analysis/rheology.c tools/analysis/analysis_util.h $
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# tools/decorrelation: integrated autocorrelation times of psi6 and Z in
+# CPU seconds for one algorithm (public API only), run by
+# tools/analysis/decorrelation.sh. Built by `make`.
+all: $(OUT)tools/decorrelation
+$(OUT)tools/decorrelation: tools/analysis/decorrelation.c tools/analysis/analysis_util.h $(LIB) $(PUB_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 clean: clean-bench
 clean-bench:
-	rm -f tools/bench tools/pressure tools/gr tools/transport tools/rheology
+	rm -f tools/bench tools/pressure tools/gr tools/transport tools/rheology tools/decorrelation
 
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,
