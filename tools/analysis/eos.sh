@@ -31,7 +31,7 @@
 # INTEGRATOR chain runs every point with event-chain Monte Carlo instead
 # of the dynamics (the same canonical Z, from the chains' liftings;
 # docs/physics.md), in a directory of its own, eos.chain.N16384.relax...:
-# a time unit of chains is far less work than one of dynamics, so give it
+# a time unit of chains costs less than one of dynamics, so give it
 # longer RELAX and BLOCK (docs/physics.md measures how long).
 #
 #   sh tools/analysis/eos.sh [-j JOBS] [N] [RELAX] [BLOCKS] [BLOCK] [INTEGRATOR]

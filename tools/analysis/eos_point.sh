@@ -21,9 +21,10 @@
 #
 # INTEGRATOR is event (the default: the exact dynamics) or chain (event-chain
 # Monte Carlo, which samples the same canonical ensemble; docs/physics.md).
-# A time unit of chains is N disks' displacement at unit speed, ~40
-# liftings per disk at 0.70, far cheaper than the dynamics' ~100
-# collisions, so a chain sweep wants longer RELAX and BLOCK. A chain sweep
+# A time unit of chains is N disks' displacement at unit speed: at
+# N = 16384 and 0.70, ~170 liftings per disk and 0.19 CPU seconds against
+# the dynamics' ~100 collisions and 1.5 s, so a chain sweep affords longer
+# RELAX and BLOCK, and needs them (docs/physics.md). A chain sweep
 # has a directory of its own, eos.chain.N16384.relax..., and each line of
 # its --list ends with "chain"; an event sweep's name and list are those
 # of the versions before the integrator was a choice, so that their
