@@ -414,7 +414,7 @@ RENDER_BACKENDS := $(if $(HAVE_PKG_CONFIG),$(strip $(foreach b,osmesa egl,$(if $
 BACKEND ?= $(firstword $(RENDER_BACKENDS))
 RENDER_HINT := the renderer needs libpng-dev and libosmesa6-dev, or libegl-dev libgl-dev libegl-mesa0
 RENDER_COMMON := render render_draw render_layout render_colormap render_font render_png \
-                 render_movie render_request render_inputs render_xyz frames_json
+                 render_movie render_request render_inputs render_xyz render_gsd frames_json
 RENDER_CFLAGS := $(if $(HAVE_PKG_CONFIG),$(shell $(PKG_CONFIG) --cflags libpng 2>/dev/null))
 RENDER_BIN := $(RENDER_BACKENDS:%=$(BUILD)/tools/render-%)
 RENDER_OBJ := $(foreach o,$(RENDER_COMMON) render_osmesa render_egl,$(BUILD)/tools/$(o).o)

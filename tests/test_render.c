@@ -613,6 +613,149 @@ static void test_a_label_shows_the_time_or_the_frame_number(void **state)
     assert_int_equal(count_files(bare), 1);
 }
 
+/* Runs disks with args writing r.gsd and r.xyz of the same frames into
+ * a fresh directory dir/name (its frames in dir/name/o); then renders
+ * each at size px with both_args, the GSD file with gsd_args too, into
+ * dir/name/gsd and dir/name/xyz. The directory's path. */
+static const char *gsd_and_xyz(const char *binary, const char *name, const char *args,
+                               const char *both_args, const char *gsd_args, int size)
+{
+    static char dir[512];
+    snprintf(dir, sizeof dir, "%s", fresh_dir(name));
+    char full[2048];
+    snprintf(full, sizeof full, "%s --quiet --out %s/o --gsd %s/r.gsd --trajectory %s/r.xyz", args,
+             dir, dir, dir);
+    if (run(RENDER_DISKS, full) != 0)
+        fail_msg("disks %s: %s", full, last_stderr());
+    snprintf(full, sizeof full, "--quiet --size %d %s %s --out %s/gsd %s/r.gsd", size, both_args,
+             gsd_args, dir, dir);
+    if (run(binary, full) != 0)
+        fail_msg("render %s: %s", full, last_stderr());
+    snprintf(full, sizeof full, "--quiet --size %d %s --out %s/xyz %s/r.xyz", size, both_args, dir,
+             dir);
+    if (run(binary, full) != 0)
+        fail_msg("render %s: %s", full, last_stderr());
+    return dir;
+}
+
+/* Frame k's PNGs from the GSD file and from the XYZ file of gsd_and_xyz. */
+static void gsd_and_xyz_pngs(const char *dir, int k, image *gsd, image *xyz)
+{
+    char png[600], name[32];
+    snprintf(name, sizeof name, "r_%04d.png", k);
+    snprintf(png, sizeof png, "%s/gsd/%s", dir, name);
+    *gsd = read_png(png);
+    snprintf(png, sizeof png, "%s/xyz/%s", dir, name);
+    *xyz = read_png(png);
+    assert_int_equal(gsd->width, xyz->width);
+    assert_int_equal(gsd->height, xyz->height);
+}
+
+/* A run started from centres and velocities a float holds exactly
+ * (multiples of 1/8 under 1024): its GSD file (floats about the box's
+ * centre) and its XYZ file (six decimals) hold the same numbers, so
+ * frame 0 must be the same image to the byte: the box, y up, the centres
+ * moved from HOOMD's box about the origin, radii from diameters, speeds,
+ * the time. Periodic with a disk across each edge (GSD says no boundary:
+ * periodic, as the XYZ's pbc says), and walls by --boundary walls. */
+static void test_a_gsd_frame_is_drawn_as_its_xyz_twin_to_the_byte(void **state)
+{
+    static const struct {
+        const char *name, *start, *args, *gsd_args;
+    } runs[] = {
+        {"gsd-exact-periodic",
+         "100.5 200.25 20 1.5 -0.5\n700.125 300.75 20 -2 1\n15 250 20 0.25 0.75\n"
+         "500 490 20 0 -3\n990.5 12 20 3 3\n",
+         "--periodic --box-y 500", ""},
+        {"gsd-exact-walls",
+         "100.5 200.25 20 1.5 -0.5\n700.125 300.75 20 -2 1\n25 250 20 0.25 0.75\n"
+         "500 470 20 0 -3\n970.5 22 20 3 3\n",
+         "--box-y 500", "--boundary walls"},
+    };
+    for (size_t k = 0; k < sizeof runs / sizeof runs[0]; ++k) {
+        char args[1200], start[600];
+        snprintf(start, sizeof start, "%s", path_in(scratch, "gsd-start.txt"));
+        write_text(start, runs[k].start);
+        snprintf(args, sizeof args, "--from %s --frames 1 %s", start, runs[k].args);
+        const char *dir =
+            gsd_and_xyz(*state, runs[k].name, args, "--label time", runs[k].gsd_args, 300);
+        image gsd, xyz;
+        gsd_and_xyz_pngs(dir, 0, &gsd, &xyz);
+        if (memcmp(gsd.rgb, xyz.rgb, (size_t)gsd.width * (size_t)gsd.height * 3) != 0)
+            fail_msg("%s: the GSD file's frame 0 is not drawn as the XYZ file's", runs[k].name);
+        rl_layout l;
+        rl_make_view(&l, 300, 1000.0, 500.0, 1, 1);
+        assert_label(&gsd, &l, "t = 0");
+        free(gsd.rgb);
+        free(xyz.rgb);
+    }
+}
+
+/* Whether pixel (x, y) is within 1.5 px of the rim of a disk of frame
+ * (lines "x y R"), or of its image across a periodic edge. */
+static int on_a_rim(const char *frame, const rl_layout *l, int x, int y)
+{
+    FILE *f = fopen(frame, "r");
+    assert_non_null(f);
+    double cx, cy, r;
+    int near_rim = 0;
+    while (!near_rim && fscanf(f, "%lf %lf %lf", &cx, &cy, &r) == 3)
+        for (int i = -1; i <= 1; ++i)
+            for (int j = -1; j <= 1; ++j) {
+                const double d = hypot(x + 0.5 - rl_px(l, cx + i * l->box),
+                                       y + 0.5 - rl_py(l, cy + j * l->box_y));
+                near_rim |= fabs(d - r * l->scale) < 1.5;
+            }
+    fclose(f);
+    return near_rim;
+}
+
+/* disks --gsd and --trajectory of the same runs (periodic, a mixture in
+ * a rectangular box, walls): every frame drawn from the GSD file is the
+ * XYZ file's image but where GSD's floats move a rim. A centre there is
+ * a float about the box's centre, within 2^-24 x 500 = 3e-5 of the
+ * double (and the XYZ's within 5e-7): at 400 px a rim moves by under
+ * 2e-5 px, which can turn a rim pixel's coverage across a rounding step
+ * of its 8-bit level, never by more than one level. */
+static void test_a_gsd_run_is_drawn_as_its_xyz_twin(void **state)
+{
+    static const struct {
+        const char *name, *args, *gsd_args;
+        double box_y;
+    } runs[] = {
+        {"gsd-periodic", "200 5 --periodic --frames 3", "", 1000.0},
+        {"gsd-mixture", "150 5 --periodic --box-y 500 --mixture 1.4:0.5 --frames 3", "", 500.0},
+        {"gsd-walls", "200 5 --frames 3", "--boundary walls", 1000.0},
+    };
+    for (size_t k = 0; k < sizeof runs / sizeof runs[0]; ++k) {
+        const char *dir =
+            gsd_and_xyz(*state, runs[k].name, runs[k].args, "", runs[k].gsd_args, 400);
+        rl_layout l;
+        rl_make_rect(&l, 400, 1000.0, runs[k].box_y, 1);
+        size_t differing = 0;
+        for (int frame = 0; frame < 3; ++frame) {
+            image gsd, xyz;
+            gsd_and_xyz_pngs(dir, frame, &gsd, &xyz);
+            char text[600];
+            snprintf(text, sizeof text, "%s/o/frame_%04d.txt", dir, frame);
+            for (int y = 0; y < gsd.height; ++y)
+                for (int x = 0; x < gsd.width; ++x) {
+                    const rgb8 a = pixel(&gsd, x + 0.5, y + 0.5), b = pixel(&xyz, x + 0.5, y + 0.5);
+                    if (a.r == b.r && a.g == b.g && a.b == b.b)
+                        continue;
+                    ++differing;
+                    if (!near(a, b) || !on_a_rim(text, &l, x, y))
+                        fail_msg("%s frame %d, pixel (%d,%d): GSD (%d,%d,%d), XYZ (%d,%d,%d)",
+                                 runs[k].name, frame, x, y, a.r, a.g, a.b, b.r, b.g, b.b);
+                }
+            free(gsd.rgb);
+            free(xyz.rgb);
+        }
+        print_message("%s: %zu rim pixels of 3 frames differ by one level\n", runs[k].name,
+                      differing);
+    }
+}
+
 /* --out F.png writes that one file for one frame, and with more frames
  * is refused, making nothing; a failed render leaves no directory it
  * made. */
@@ -1188,6 +1331,8 @@ static void test_osmesa_and_egl_draw_the_same_image(void **state)
                                   binary),                                                         \
         cmocka_unit_test_prestate(test_an_extended_xyz_trajectory_gives_a_png_per_frame, binary),  \
         cmocka_unit_test_prestate(test_an_xyz_file_is_read_by_its_properties_header, binary),      \
+        cmocka_unit_test_prestate(test_a_gsd_frame_is_drawn_as_its_xyz_twin_to_the_byte, binary),  \
+        cmocka_unit_test_prestate(test_a_gsd_run_is_drawn_as_its_xyz_twin, binary),                \
         cmocka_unit_test_prestate(test_a_label_shows_the_time_or_the_frame_number, binary),        \
         cmocka_unit_test_prestate(test_out_names_one_png_or_a_directory, binary)
 

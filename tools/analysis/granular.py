@@ -12,6 +12,8 @@ PYTHONPATH=python; long ones under `nice`.
                         the density's clumping against t / tau, frames to OUT
   driven E N T [DT]     the steady state of white-noise driving: T against the
                         theory's, a2 against van Noije and Ernst's, the powers
+  collisions E N T      the same state's collisions: their rate and the energy
+                        each loses against molecular chaos's, the pairs at contact
   barometric            a dilute elastic gas under gravity: n(y) and its fit
   sediment OUT          a dense inelastic gas falling to the floor, frames to OUT
 """
@@ -95,11 +97,10 @@ def sonine_white_noise(e, d=2):
     return 16.0 * (1 - e) * (1 - 2 * e * e) / (73 + 56 * d - 24 * d * e - 105 * e + 30 * (1 - e) * e * e)
 
 
-def driven(e, n, temperature, dt=0.01):
-    """The steady state of a driven gas at area fraction 0.05, the strength
-    chosen for the theory's T; blocks of 2000 steps (10 time units at the
-    default dt, about 10 collisions a disk at T = 2000)."""
-    eta, r, blocks = 0.05, 5.0, 40
+def driven_gas(e, n, temperature, dt=0.01, eta=0.05, r=5.0):
+    """A gas at area fraction eta driven by the strength for which the
+    theory's T is temperature, run five of the energy's relaxation times
+    1 / zeta into its steady state: the simulation, its box, the strength."""
     s, box = periodic_gas(n, eta, r, dt=dt, seed=7)
     a2 = sonine_white_noise(e)
     # m S (N - 1) / N = zeta T, zeta = (1 - e^2) omega_E(T) (1 + 3 a2 / 16) / 2
@@ -107,9 +108,18 @@ def driven(e, n, temperature, dt=0.01):
     strength = zeta * temperature * n / (n - 1)
     s.set_restitution(e)
     s.set_drive(strength)
-    relax = 5.0 / zeta  # five of the energy's relaxation times
-    s.run(int(relax / s.dt))
+    s.run(int(5.0 / zeta / s.dt))
     s.reset_observables()
+    return s, box, strength
+
+
+def driven(e, n, temperature, dt=0.01):
+    """The steady state of a driven gas at area fraction 0.05, the strength
+    chosen for the theory's T; blocks of 2000 steps (10 time units at the
+    default dt, about 10 collisions a disk at T = 2000)."""
+    blocks = 40
+    s, _, strength = driven_gas(e, n, temperature, dt)
+    a2 = sonine_white_noise(e)
     temps, moments, inputs, losses = [], [], [], []
     for _ in range(blocks):
         bt, ba = 0.0, 0.0
@@ -129,6 +139,95 @@ def driven(e, n, temperature, dt=0.01):
     print(f"{e}\t{strength:.6g}\t{temperature}\t{t.mean():.2f}\t{stderr(t):.2f}"
           f"\t{a2:.5f}\t{a.mean():.5f}\t{stderr(a):.5f}"
           f"\t{s.power_input:.6g}\t{s.power_lost:.6g}\t{stderr(p_in - p_lost):.4g}", flush=True)
+
+
+def approaching_pairs(positions, velocities, box, reach):
+    """The pairs of a periodic square box closer than reach (minimum
+    image): their distances and their radial speeds dr/dt (< 0 approaching)."""
+    x, y = positions[:, 0], positions[:, 1]
+    dx = x[None, :] - x[:, None]
+    dx -= box * np.round(dx / box)
+    i, j = np.nonzero(np.triu(np.abs(dx) < reach, 1))  # a strip first: few pairs
+    dx = dx[i, j]
+    dy = y[j] - y[i]
+    dy -= box * np.round(dy / box)
+    dist = np.hypot(dx, dy)
+    near = dist < reach
+    i, j, dx, dy, dist = i[near], j[near], dx[near], dy[near], dist[near]
+    g = velocities[j] - velocities[i]
+    return dist, (g[:, 0] * dx + g[:, 1] * dy) / dist
+
+
+def collisions(e, n, temperature):
+    """Why the driven gas's T departs from the theory's: the steady state
+    balances (N - 1) m S = (N / 2) omega <Delta E>, omega = k omega_E(T)
+    and <Delta E> = l (1 - e^2) T, so T^(3/2) k l is fixed, and the theory
+    (first Sonine, molecular chaos) takes k l = 1 + 3 a2 / 16. Measured
+    over the blocks of `driven`: k from the collisions counted, l from the
+    energy lost (each collision loses (1 - e^2) m (g.n)^2 / 4, so l is
+    <(g.n)^2> over collisions / (4 T / m)); the same under molecular chaos
+    for the measured velocities (random pairs: omega = n sigma chi pi
+    <|g_x|>, <(g.n)^2> = <|g_x|^3> / <|g_x|>); and the pairs closer than
+    sigma + sigma / 40 that are heading for their contact: their density
+    against Henderson's chi and their mean approach speed against chaos's
+    2 sqrt(T / (pi m)), whose product is the collision rate's factor, and
+    the collisions' mean |g.n| (the pairs weighted by their speed, as they
+    cross the shell) against a Maxwell gas's sqrt(pi T / m) and chaos's."""
+    eta, r, blocks, frames, every = 0.05, 5.0, 40, 100, 20
+    s, box, strength = driven_gas(e, n, temperature)
+    a2 = sonine_white_noise(e)
+    sigma, shell = 2.0 * r, 2.0 * r / 40.0
+    chi, density = CHI(eta), n / box**2
+    # pairs per frame in the shell for g = 1: (N / 2) n 2 pi (sigma + shell / 2) shell
+    ideal = 0.5 * n * density * 2.0 * math.pi * (sigma + 0.5 * shell) * shell
+    rng = np.random.default_rng(11)
+    rows = []
+    for _ in range(blocks):
+        c0, lost0, t0 = s.collision_count, s.energy_lost, s.time
+        temp = k_chaos = l_chaos = hit_chaos = 0.0
+        shell_all, shell_in, speed_in, flux, flux_speed = 0, 0, 0.0, 0.0, 0.0
+        for _ in range(frames):
+            s.run(every)
+            v, tf = s.velocities, s.temperature
+            temp += tf / frames
+            half = rng.permutation(n)
+            g = np.abs(v[half[: n // 2]] - v[half[n // 2 : 2 * (n // 2)]]).ravel()
+            k_chaos += g.mean() / (2.0 * math.sqrt(tf / math.pi)) / frames
+            l_chaos += (g**3).mean() / g.mean() / (4.0 * tf) / frames
+            hit_chaos += (g**2).mean() / g.mean() / math.sqrt(math.pi * tf) / frames
+            dist, speed = approaching_pairs(s.positions, v, box, sigma + shell)
+            shell_all += len(dist)
+            shell_in += int((speed < 0).sum())
+            approach = -speed[speed < 0]
+            speed_in += approach.sum() / (2.0 * math.sqrt(tf / math.pi))
+            # the pairs cross the shell in proportion to their speed: the
+            # collisions' mean |g.n| against sqrt(pi T / m), a Maxwell gas's
+            flux += approach.sum()
+            flux_speed += (approach**2).sum() / math.sqrt(math.pi * tf)
+        count = s.collision_count - c0
+        omega = 2.0 * count / n / (s.time - t0)
+        rows.append((temp, omega / enskog_frequency(n, r, box, eta, temp), k_chaos,
+                     (s.energy_lost - lost0) / count / ((1 - e * e) * temp), l_chaos,
+                     shell_all / (frames * ideal * chi), 2.0 * shell_in / (frames * ideal * chi),
+                     speed_in / max(shell_in, 1), flux_speed / max(flux, 1e-300), hit_chaos))
+    q = np.array(rows)
+    mean, err = q.mean(axis=0), q.std(axis=0, ddof=1) / math.sqrt(blocks)
+    t, k, kc, l, lc = mean[:5]
+    # T / T_theory = [P / P_theory (1 + 3 a2 / 16) / (k l)]^(2/3), in parts:
+    # the input's noise (the power that came in, which the loss matched,
+    # against its mean (N - 1) m S), the distribution's (chaos with the
+    # measured velocities against the first Sonine theory's), and the
+    # correlations' in the rate and in the loss
+    theory = 1.0 + 3.0 * a2 / 16.0
+    parts = [(s.power_lost / ((n - 1) * strength)) ** (2 / 3), (theory / (kc * lc)) ** (2 / 3),
+             (kc / k) ** (2 / 3), (lc / l) ** (2 / 3)]
+    cells = [f"{e}", f"{t:.1f}", f"{err[0]:.1f}", f"{temperature * np.prod(parts):.1f}"]
+    for j in (1, 2, 3, 4):
+        cells += [f"{mean[j]:.4f}", f"{err[j]:.4f}"]
+    cells += [f"{100 * (p - 1):+.2f}" for p in parts]
+    for j in (5, 6, 7, 8, 9):
+        cells += [f"{mean[j]:.3f}", f"{err[j]:.3f}"]
+    print("\t".join(cells), flush=True)
 
 
 def barometric():
@@ -194,6 +293,16 @@ if __name__ == "__main__":
                   "the error of their difference")
         else:
             driven(float(args[0]), int(args[1]), float(args[2]), *map(float, args[3:4]))
+    elif what == "collisions":
+        if args[0] == "header":
+            print("# e, T, error, T from the parts, k = omega / omega_E(T), error, k under "
+                  "molecular chaos, error, l = <(g.n)^2>_coll / (4 T / m), error, l under chaos, "
+                  "error, T's excess (%) from the input's noise, the distribution, the rate's "
+                  "correlations, the loss's correlations; at contact: g / chi, error, g of "
+                  "approaching pairs / chi, error, their mean approach speed / chaos's, error, "
+                  "the collisions' <|g.n|> / sqrt(pi T / m), error, the same under chaos, error")
+        else:
+            collisions(float(args[0]), int(args[1]), float(args[2]))
     elif what == "barometric":
         barometric()
     elif what == "sediment":

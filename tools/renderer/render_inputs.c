@@ -16,6 +16,8 @@ struct ri_source {
     fj_run run;    /* ... and says this */
     rx_frame *xyz; /* an XYZ file's frames */
     size_t xyz_count;
+    rg_frame *gsd; /* a GSD file's frames */
+    size_t gsd_count;
     int warned; /* a contradiction with the options has been said */
 };
 
@@ -56,7 +58,7 @@ static long add_source(ri_list *l, const char *path)
 static long dir_source(ri_list *l, const char *dir)
 {
     for (size_t k = 0; k < l->nsources; ++k)
-        if (!l->sources[k].xyz && strcmp(l->sources[k].path, dir) == 0)
+        if (!l->sources[k].xyz && !l->sources[k].gsd && strcmp(l->sources[k].path, dir) == 0)
             return (long)k;
     const long k = add_source(l, dir);
     if (k < 0) {
@@ -94,10 +96,11 @@ static ri_frame *add_frame(ri_list *l, const char *path, size_t source)
     return f;
 }
 
-/* The options' box where given, else the file's, else 1000 x 1000 with
- * walls; a contradiction said once per source. what names the file. */
+/* The options' box where given, else the file's, else 1000 x 1000; the
+ * options' boundary, else the file's, else `otherwise`; a contradiction
+ * said once per source. what names the file. */
 static void place(ri_frame *f, ri_source *s, const ri_box *given, double file_x, double file_y,
-                  int file_boundary, const char *what)
+                  int file_boundary, ds_boundary otherwise, const char *what)
 {
     const int box_given = given->box > 0.0 || given->box_y > 0.0;
     const double gx = given->box > 0.0 ? given->box : 1000.0;
@@ -107,7 +110,7 @@ static void place(ri_frame *f, ri_source *s, const ri_box *given, double file_x,
     f->box_y = box_given ? gy : have_box ? file_y : 1000.0;
     f->boundary = (ds_boundary)(given->boundary >= 0 ? given->boundary
                                 : file_boundary >= 0 ? file_boundary
-                                                     : DS_BOUNDARY_WALLS);
+                                                     : (int)otherwise);
     if (s->warned)
         return;
     if (box_given && have_box && (gx != file_x || gy != file_y)) {
@@ -159,7 +162,7 @@ static int add_text_frame(ri_list *l, const char *path, const ri_box *given, lon
     char what[4300];
     snprintf(what, sizeof what, "%s/%s", s->path, FJ_NAME);
     place(f, s, given, s->has_run ? run->box_x : 0.0, s->has_run ? run->box_y : 0.0,
-          s->has_run ? run->boundary : -1, what);
+          s->has_run ? run->boundary : -1, DS_BOUNDARY_WALLS, what);
     f->number = frame_number(base);
     if (s->has_run && f->number >= 0)
         f->time = fj_frame_time(run, f->number);
@@ -186,14 +189,44 @@ static int add_xyz(ri_list *l, const char *path, const ri_box *given)
         f->xyz = fr;
         f->number = (long)i;
         f->time = fr->time;
-        place(f, s, given, fr->box_x, fr->box_y, fr->boundary, path);
+        place(f, s, given, fr->box_x, fr->box_y, fr->boundary, DS_BOUNDARY_WALLS, path);
+    }
+    return 0;
+}
+
+/* A GSD file's frames, each in its own box. GSD records no boundary:
+ * periodic, as HOOMD's boxes are, unless the options say otherwise (and
+ * then nothing contradicts them). */
+static int add_gsd(ri_list *l, const char *path, const ri_box *given)
+{
+    const long k = add_source(l, path);
+    if (k < 0)
+        return out_of_memory();
+    char why[1400];
+    ri_source *s = &l->sources[k];
+    if (rg_scan(path, &s->gsd, &s->gsd_count, why, sizeof why) != 0) {
+        fprintf(stderr, "render: %s\n", why);
+        return -1;
+    }
+    for (size_t i = 0; i < s->gsd_count; ++i) {
+        ri_frame *f = add_frame(l, path, (size_t)k);
+        if (!f)
+            return out_of_memory();
+        s = &l->sources[k];
+        const rg_frame *fr = &s->gsd[i];
+        f->gsd = fr;
+        f->number = (long)i;
+        f->time = fr->time;
+        place(f, s, given, fr->box_x, fr->box_y, -1, DS_BOUNDARY_PERIODIC, path);
     }
     return 0;
 }
 
 int ri_add_file(ri_list *l, const char *path, const ri_box *given)
 {
-    return rx_is_xyz(path) ? add_xyz(l, path, given) : add_text_frame(l, path, given, -1);
+    return rx_is_xyz(path)   ? add_xyz(l, path, given)
+           : rg_is_gsd(path) ? add_gsd(l, path, given)
+                             : add_text_frame(l, path, given, -1);
 }
 
 static int name_order(const void *a, const void *b)
@@ -255,14 +288,16 @@ int ri_add_dir(ri_list *l, const char *dir, const ri_box *given)
     return rc;
 }
 
-/* frame_0012.txt -> frame_0012.png; run.xyz's frame 12 -> run_0012.png;
+/* frame_0012.txt -> frame_0012.png; run.xyz's (or run.gsd's) frame 12 ->
+ * run_0012.png;
  * in out_dir if given, else beside the file. */
 static char *png_name(const ri_frame *f, const char *out_dir)
 {
     const char *slash = strrchr(f->path, '/');
     const char *base = slash ? slash + 1 : f->path;
     size_t stem = strlen(base);
-    const char *suffix = f->xyz ? strrchr(base, '.') : NULL;
+    const int trajectory = f->xyz || f->gsd;
+    const char *suffix = trajectory ? strrchr(base, '.') : NULL;
     if (suffix)
         stem = (size_t)(suffix - base);
     else if (stem > 4 && strcmp(base + stem - 4, ".txt") == 0)
@@ -276,7 +311,7 @@ static char *png_name(const ri_frame *f, const char *out_dir)
     else
         memcpy(s, f->path, dir);
     memcpy(s + dir, base, stem);
-    if (f->xyz)
+    if (trajectory)
         sprintf(s + dir + stem, "_%04ld.png", f->number);
     else
         memcpy(s + dir + stem, ".png", 5);
@@ -298,6 +333,8 @@ int ri_read(const ri_list *l, size_t i, ds_frame *frame, char *err, size_t errle
     const ri_frame *f = &l->frames[i];
     if (f->xyz)
         return rx_read(f->path, f->xyz, frame, err, errlen);
+    if (f->gsd)
+        return rg_read(f->path, f->gsd, (size_t)f->number, frame, err, errlen);
     ds_error fe;
     if (ds_frame_read(f->path, frame, &fe) != DS_OK) {
         if (fe.index)
@@ -334,6 +371,7 @@ void ri_free(ri_list *l)
     for (size_t k = 0; k < l->nsources; ++k) {
         free(l->sources[k].path);
         free(l->sources[k].xyz);
+        free(l->sources[k].gsd);
     }
     free(l->frames);
     free(l->sources);

@@ -13,15 +13,16 @@
 #include "render_request.h"
 
 const char rq_usage[] =
-    "usage: render [options] FRAME.txt... RUN.xyz...\n"
+    "usage: render [options] FRAME.txt... RUN.xyz... RUN.gsd...\n"
     "       render [options] --dir DIR\n"
     "Writes one PNG per frame: frame_0012.txt -> frame_0012.png, frame 12 of\n"
-    "run.xyz -> run_0012.png, next to the file or in --out DIR. Frames are lines\n"
-    "\"x y R\" (one colour) or \"x y R vx vy\" (coloured by speed, with a legend),\n"
-    "or the frames of an extended XYZ file (a disks trajectory, ASE); --colour\n"
-    "psi6 colours either by the local crystal orientation. The box and its\n"
-    "boundary come from the run's frames.json beside the frames, or the XYZ\n"
-    "header; the options below replace them.\n"
+    "run.xyz or run.gsd -> run_0012.png, next to the file or in --out DIR. Frames\n"
+    "are lines \"x y R\" (one colour) or \"x y R vx vy\" (coloured by speed, with\n"
+    "a legend), or the frames of an extended XYZ file (a disks trajectory, ASE)\n"
+    "or of a GSD file (a disks or HOOMD trajectory); --colour psi6 colours any\n"
+    "by the local crystal orientation. The box and its boundary come from the\n"
+    "run's frames.json beside the frames, the XYZ header or the GSD box (GSD\n"
+    "records no boundary: periodic, as HOOMD's); the options below replace them.\n"
     "  --dir DIR    render every frame_*.txt in DIR, in name order\n"
     "  --out DIR    write the PNGs into DIR (created if missing); --out F.png\n"
     "               writes the one frame given as F.png\n"
@@ -31,7 +32,8 @@ const char rq_usage[] =
     "  --box-y H    height of the box (default: the run's, else the width)\n"
     "  --boundary B walls, periodic or channel (periodic along x only): a disk\n"
     "               across a periodic edge is drawn on both sides, and psi6\n"
-    "               counts neighbours across it (default: the run's, else walls)\n"
+    "               counts neighbours across it (default: the run's, else walls;\n"
+    "               periodic for a GSD file)\n"
     "  --periodic   the same as --boundary periodic\n"
     "  --colour C   what the colours show (also --color): speed (the default for\n"
     "               \"x y R vx vy\" frames) or psi6, the orientation arg(psi6)/6\n"
@@ -39,8 +41,8 @@ const char rq_usage[] =
     "               +30 degrees on a cyclic colour wheel, darker where |psi6| is\n"
     "               small (brightness 0.3 + 0.7 |psi6|), or size, the radius\n"
     "               from the frame's smallest to its largest (mixtures)\n"
-    "  --label L    write above the box each frame's time (time: from frames.json\n"
-    "               or the XYZ Time=) or number (frame)\n"
+    "  --label L    write above the box each frame's time (time: from frames.json,\n"
+    "               the XYZ Time= or the GSD log/disksim/time) or number (frame)\n"
     "  --vmax V     speed at the top of the colour scale (default 2.5 x rms speed)\n"
     "  -j N         frames rendered at once, 1..256 (default: number of cores)\n"
     "  --movie FILE write one movie of the frames instead of PNGs: FILE.mp4 (H.264)\n"
@@ -213,9 +215,10 @@ static int check_frames(const rq_request *q, const ri_list *list)
         if (q->label == RQ_LABEL_TIME && !isfinite(f->time)) {
             fprintf(stderr, "render: --label time: %s has no time (%s): use --label frame\n",
                     f->path,
-                    f->xyz ? "its XYZ header has no Time="
-                           : "no frames.json with dt and steps_per_frame beside it, or not "
-                             "named frame_NNNN.txt");
+                    f->xyz   ? "its XYZ header has no Time="
+                    : f->gsd ? "its GSD frame has no log/disksim/time"
+                             : "no frames.json with dt and steps_per_frame beside it, or not "
+                               "named frame_NNNN.txt");
             return 1;
         }
         if (q->label == RQ_LABEL_FRAME && f->number < 0) {
