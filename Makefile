@@ -131,7 +131,7 @@ test: all $(TEST_BIN)
 .PHONY: check-docs
 check-docs: all
 	sh tests/check_docs.sh $(DISKS) $(OUT)tools/render $(OUT)tools/gr $(OUT)tools/pressure \
-	    $(OUT)tools/transport
+	    $(OUT)tools/transport $(OUT)tools/rheology
 test: check-docs
 
 # The structure docs/architecture.md promises (tests/check_structure.sh):
@@ -208,7 +208,8 @@ clean:
 # `make bench` prints the table of docs/performance.md (under a minute
 # on 2 cores; run it on an otherwise idle machine).
 .PHONY: bench
-BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_stats.c
+BENCH_SRC := tools/benchmark/bench.c tools/benchmark/bench_events.c tools/benchmark/bench_chain.c \
+             tools/benchmark/bench_stats.c
 $(OUT)tools/bench: $(BENCH_SRC) tools/benchmark/bench.h $(LIB) $(PUB_HDR)
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $(BENCH_SRC) $(LIB) $(LDLIBS)
@@ -239,9 +240,25 @@ $(OUT)tools/transport: tools/analysis/transport.c tools/analysis/analysis_util.h
 	@mkdir -p $(dir $@)
 	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
+# tools/rheology: the shear viscosity from a sheared flow (Lees-Edwards,
+# public API only), the other way to tools/transport's Helfand moments.
+# Built by `make`.
+all: $(OUT)tools/rheology
+$(OUT)tools/rheology: tools/analysis/rheology.c tools/analysis/analysis_util.h $(LIB) $(PUB_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
+# tools/decorrelation: integrated autocorrelation times of psi6 and Z in
+# CPU seconds for one algorithm (public API only), run by
+# tools/analysis/decorrelation.sh. Built by `make`.
+all: $(OUT)tools/decorrelation
+$(OUT)tools/decorrelation: tools/analysis/decorrelation.c tools/analysis/analysis_util.h $(LIB) $(PUB_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(WARN) -Iinclude $(CFLAGS) $(LDFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 clean: clean-bench
 clean-bench:
-	rm -f tools/bench tools/pressure tools/gr tools/transport
+	rm -f tools/bench tools/pressure tools/gr tools/transport tools/rheology tools/decorrelation
 
 # ---------------------------------------------------------------- packaging
 # The shared library beside the static one, disksim.pc, `make examples`,
@@ -321,11 +338,11 @@ $(OUT)examples/%: examples/%.c $(PUB_HDR) $(LIB)
 # tools/analysis/*.c and the sweeps a user runs (docs/sweeps.md). The
 # scripts those sweeps run in turn, and the gnuplot scripts, go to
 # share/disksim/.
-ANALYSIS_PROGRAMS = gr pressure transport
+ANALYSIS_PROGRAMS = gr pressure transport rheology
 ANALYSIS_SCRIPTS  = eos.sh:disks-eos eos.sbatch:disks-eos-slurm \
                     diffusion_sweep.sh:disks-diffusion jamming.sh:disks-jamming
 ANALYSIS_HELPERS  = eos_point.sh eos_gather.sh sweep_dir.sh
-ANALYSIS_MAN      = disks-gr disks-pressure disks-transport disks-eos disks-diffusion \
+ANALYSIS_MAN      = disks-gr disks-pressure disks-transport disks-rheology disks-eos disks-diffusion \
                     disks-jamming
 ANALYSIS_BIN      = $(ANALYSIS_PROGRAMS:%=disks-%) $(foreach s,$(ANALYSIS_SCRIPTS),$(lastword $(subst :, ,$(s))))
 # In the checkout each script finds the others beside itself and the

@@ -5,7 +5,8 @@
  * frame); outputs.c checks every path and makes --out; frames_json.c
  * describes the run beside its frames; files.c writes files so that no
  * partial one is ever seen, and decides what a signal does; checkpoint.c
- * writes checkpoints; report.c says what went wrong; disks.c runs. The
+ * writes checkpoints; stats.c the --stats rows; report.c says what went
+ * wrong; disks.c runs. The
  * command uses the library only through disk_sim.h, and only it prints. */
 #ifndef DISKS_CLI_H
 #define DISKS_CLI_H
@@ -67,6 +68,10 @@ typedef struct options {
     double pressure, barostat_step;
     uint64_t barostat_every;
     int barostat_aspect;
+    /* --shear RATE (any finite number; shear_given: it was given, so
+     * that --shear 0 stops a checkpoint's shear) */
+    double shear;
+    int shear_given;
     /* Which of the run's settings the command line gave: a restart takes
      * the others from its checkpoint (run_settings.c). */
     int frames_given, steps_given, out_given;
@@ -128,8 +133,8 @@ void start_growth(const options *o, ds_sim *sim);
  * --drive set on the simulation, or refused with the library's reason
  * (a usage error), before anything is made. */
 void start_granular(const options *o, ds_sim *sim);
-/* --thermostat and --pressure set likewise (a checkpoint's go on unless
- * given again). */
+/* --thermostat, --pressure and --shear set likewise (a checkpoint's go
+ * on unless given again). */
 void start_ensemble(const options *o, ds_sim *sim);
 ds_sim *restart_from(const char *path);
 long restart_frame(const options *o, const ds_sim *sim); /* the checkpoint's frame */
@@ -210,6 +215,18 @@ void output_publish(output *out);
 int carry_over_stats(output *out, const char *header, long last);
 int carry_over_trajectory(output *out, const ds_sim *sim, uint64_t steps_per_frame, long last);
 int carry_over_gsd(output *out, const ds_sim *sim);
+
+/* stats.c: the --stats file's header and its rows. The shear stress of a
+ * row is the mean over the time since the row before (or since the
+ * checkpoint a restart starts from): stats_mark records the stress
+ * integral there, and each row records its own for the next. */
+extern const char stats_header[];
+typedef struct stats_books {
+    int marked;        /* a previous row's (or the checkpoint's) integral is held */
+    double s_xy, time; /* ds_sim_get_stress_integral's xy part, and the time */
+} stats_books;
+void stats_mark(stats_books *b, const ds_sim *sim);
+void stats_row(output *out, long frame, const ds_sim *sim, stats_books *b);
 
 /* checkpoint.c */
 void checkpoint_write(const ds_sim *sim, const char *path);

@@ -52,6 +52,7 @@ typedef struct run {
     size_t frame_cap;
     char *json; /* frames.json, written with the first frame */
     output stats, trajectory, gsd_file;
+    stats_books books;     /* the stress integral at the last row, for the next */
     ds_writer *xyz;        /* --trajectory's writer, into trajectory.f */
     ds_writer *gsd;        /* --gsd's, into gsd_file.f */
     long checkpoint_frame; /* the frame of the last checkpoint written, -1 */
@@ -60,32 +61,6 @@ typedef struct run {
     double sim_seconds, out_seconds;
     int measuring; /* --measure-after's reset has been made (or needs none) */
 } run;
-
-static const char stats_header[] =
-    "frame,time,kinetic_energy,px,py,collisions,wall_reflections,pressure,virial_pressure,psi6,"
-    "area_fraction,granular_temperature,energy_lost,energy_input,power_lost,power_input,"
-    "potential_energy\n";
-
-static void stats_row(output *out, long frame, const ds_sim *sim)
-{
-    char row[640];
-    double px, py, psi6 = NAN; /* psi6 NaN where the library has none: a box too narrow */
-    ds_sim_get_momentum(sim, &px, &py);
-    (void)ds_sim_get_psi6(sim, &psi6, NULL);
-    int l =
-        snprintf(row, sizeof row, "%ld,%.6f,%.17g,%.17g,%.17g,%llu,%llu,%.17g,%.17g,%.17g,%.17g,",
-                 frame, ds_sim_get_time(sim), ds_sim_get_kinetic_energy(sim), px, py,
-                 (unsigned long long)ds_sim_get_collision_count(sim),
-                 (unsigned long long)ds_sim_get_wall_count(sim), ds_sim_get_pressure(sim),
-                 ds_sim_get_virial_pressure(sim), psi6, ds_sim_get_area_fraction(sim));
-    /* The granular gas's: its temperature (ds_sim_get_temperature) and
-     * energy books. */
-    l += snprintf(row + l, sizeof row - (size_t)l, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                  ds_sim_get_temperature(sim), ds_sim_get_energy_lost(sim),
-                  ds_sim_get_energy_input(sim), ds_sim_get_power_lost(sim),
-                  ds_sim_get_power_input(sim), ds_sim_get_potential_energy(sim));
-    output_write(out, row, (size_t)l);
-}
 
 /* A trajectory's frame: a write that fails ends the run. */
 static void trajectory_frame(ds_writer *w, const output *out, const ds_sim *sim)
@@ -123,7 +98,7 @@ static void emit_frame(run *r, long frame, int jammed)
     trajectory_frame(r->xyz, &r->trajectory, r->sim);
     trajectory_frame(r->gsd, &r->gsd_file, r->sim);
     if (r->stats.f)
-        stats_row(&r->stats, frame, r->sim);
+        stats_row(&r->stats, frame, r->sim, &r->books);
     keep_created_dirs(); /* --out holds a frame now */
     release_signals(&old);
 }
@@ -228,7 +203,7 @@ static void open_outputs(run *r)
         /* A restart going on with its run's file keeps its header and rows. */
         if (!(o->stats_continues && r->stats.slot >= 0 &&
               carry_over_stats(&r->stats, stats_header, r->first - 1)))
-            output_write(&r->stats, stats_header, sizeof stats_header - 1);
+            output_write(&r->stats, stats_header, strlen(stats_header));
     }
 }
 
@@ -258,7 +233,8 @@ static void print_start(const run *r)
         snprintf(frames, sizeof frames, "%ld frames", o->frames);
     else
         snprintf(frames, sizeof frames, "frames %ld to %ld", r->first, r->last);
-    /* The ensemble is named only when a heat bath or a barostat is set. */
+    /* The ensemble is named only when a heat bath, a barostat or a shear is
+     * set. */
     char ensemble[128] = "";
     if (ds_sim_get_thermostat(sim) != DS_THERMOSTAT_NONE)
         snprintf(ensemble, sizeof ensemble, ", thermostat = %s at kT = %g",
@@ -267,6 +243,9 @@ static void print_start(const run *r)
     if (ds_sim_get_barostat_pressure(sim) > 0.0)
         snprintf(ensemble + strlen(ensemble), sizeof ensemble - strlen(ensemble), ", pressure = %g",
                  ds_sim_get_barostat_pressure(sim));
+    if (ds_sim_get_shear(sim) != 0.0)
+        snprintf(ensemble + strlen(ensemble), sizeof ensemble - strlen(ensemble),
+                 ", shear rate = %g", ds_sim_get_shear(sim));
     printf("disks: %sN = %zu, R = %g, %s%s, integrator = %s, broad phase = %s%s, %s x %llu steps "
            "-> %s\n",
            start, ds_sim_get_count(sim), ds_sim_get_radius(sim), what, box,
@@ -365,6 +344,10 @@ static void run_frames(run *r)
 {
     const options *o = r->o;
     frames_begin();
+    /* A restart's first row is over the time since its checkpoint's
+     * frame, as the uninterrupted run's is since its row before. */
+    if (o->restart_path)
+        stats_mark(&r->books, r->sim);
     for (long k = 0; k < o->frames; ++k) {
         const long frame = r->first + k;
         /* Frame 0 is the start; a restart's first frame is one frame on. */

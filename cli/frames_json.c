@@ -110,6 +110,13 @@ char *frames_json_text(const ds_sim *sim, const options *o, long jammed_frame)
         add(&t, ",\n  \"pressure\": ");
         add_number(&t, ds_sim_get_barostat_pressure(sim));
     }
+    /* A sheared box's images above move at shear_rate box_y along x
+     * (the frames keep each disk inside the box; --trajectory and --gsd
+     * record the images' offset frame by frame). */
+    if (ds_sim_get_shear(sim) != 0.0) {
+        add(&t, ",\n  \"shear_rate\": ");
+        add_number(&t, ds_sim_get_shear(sim));
+    }
     if (jammed_frame >= 0) {
         add(&t, ",\n  \"jammed_frame\": %ld,\n  \"jammed_time\": ", jammed_frame);
         add_number(&t, ds_sim_get_time(sim));

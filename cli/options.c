@@ -61,11 +61,14 @@ static void check_combination(const options *o, int npos, const char *system_opt
                                      : "--barostat-aspect");
     if (o->pressure > 0.0 && !o->restart_path && o->boundary != DS_BOUNDARY_PERIODIC)
         die(EXIT_USAGE, "--pressure needs --periodic (the barostat moves a periodic box only)");
-    if (o->grow_rate > 0.0 && (o->thermostat != DS_THERMOSTAT_NONE || o->pressure > 0.0))
+    if (o->grow_rate > 0.0 &&
+        (o->thermostat != DS_THERMOSTAT_NONE || o->pressure > 0.0 || o->shear_given))
         die(EXIT_USAGE,
             "%s cannot be given with --grow: growth takes out its own heat in a box "
             "of its own",
-            o->pressure > 0.0 ? "--pressure" : "--thermostat");
+            o->pressure > 0.0 ? "--pressure"
+            : o->shear_given  ? "--shear"
+                              : "--thermostat");
     /* Growth measures its own Z over windows of collisions, and its
      * pressure is not an equilibrium one to average. */
     if (o->measure_after > 0.0 && o->grow_rate > 0.0)
@@ -114,7 +117,8 @@ enum {
     THERMOSTAT_RATE,
     PRESSURE,
     BAROSTAT_EVERY,
-    BAROSTAT_STEP
+    BAROSTAT_STEP,
+    SHEAR
 };
 /* Those that describe the system with a system flag. */
 static const struct {
@@ -155,7 +159,8 @@ static const struct {
              {"--thermostat-rate", 0},
              {"--pressure", 0},
              {"--barostat-every", 0},
-             {"--barostat-step", 0}};
+             {"--barostat-step", 0},
+             {"--shear", 0}};
 
 /* The first option given that describes the system, the first that
  * describes the placement (see check_combination), and the boundary
@@ -192,8 +197,8 @@ static void granular_arg(options *o, int which, const char *value)
         o->gravity = positive_arg("--gravity", value, 0.0);
 }
 
-/* The heat bath's and the barostat's options: numbers > 0 here, held to
- * their bounds by the library (start.c). */
+/* The heat bath's, the barostat's and the shear's options: numbers (> 0
+ * but the shear's) here, held to their bounds by the library (start.c). */
 static void ensemble_option(options *o, int which, const char *value)
 {
     ds_error err;
@@ -212,6 +217,10 @@ static void ensemble_option(options *o, int which, const char *value)
         break;
     case BAROSTAT_EVERY:
         o->barostat_every = count_arg("--barostat-every", value, 1, 1000000000u);
+        break;
+    case SHEAR: /* either sign; 0 stops a checkpoint's shear */
+        o->shear = number_arg("--shear", value);
+        o->shear_given = 1;
         break;
     default:
         o->barostat_step = positive_arg("--barostat-step", value, 0.0);

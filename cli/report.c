@@ -45,6 +45,7 @@ static const char *const command_names[][2] = {
     {"collision_rate", "--thermostat-rate"},
     {"pressure", "--pressure"},
     {"max_step", "--barostat-step"},
+    {"barostat", "--pressure"},
 };
 
 const char *in_command_words(const ds_error *err, char *out, size_t cap)

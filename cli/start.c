@@ -2,8 +2,8 @@
 /* Where a run starts, checked before any work: a new request (what the
  * library refuses, its reason in the command's words, and what this
  * machine cannot hold), a checkpoint (--restart) or a frame (--from); and
- * --grow, the granular rules, --thermostat and --pressure, which the
- * library refuses or sets. */
+ * --grow, the granular rules, --thermostat, --pressure and --shear,
+ * which the library refuses or sets. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <fcntl.h>
@@ -318,9 +318,10 @@ void start_growth(const options *o, ds_sim *sim)
     if (err.status == DS_ERR_NOMEM)
         die(EXIT_RUN, "cannot grow the disks: %s", err.message);
     const char *source = o->restart_path ? o->restart_path : o->from_path;
-    /* A checkpoint's integrator or box (the command's own options refuse
-     * a new run's, options.c). */
-    if (strcmp(err.field, "integrator") == 0 || strcmp(err.field, "boundary") == 0)
+    /* A checkpoint's integrator, box or shear (the command's own options
+     * refuse a new run's, options.c). */
+    if (strcmp(err.field, "integrator") == 0 || strcmp(err.field, "boundary") == 0 ||
+        strcmp(err.field, "shear") == 0)
         die(EXIT_USAGE, "cannot grow the disks of %s: %s", source ? source : "the request",
             err.message);
     /* The area fraction a target is held to is the source's. */
@@ -360,16 +361,23 @@ void start_granular(const options *o, ds_sim *sim)
     die(EXIT_USAGE, "%s", in_command_words(&err, words, sizeof words));
 }
 
-/* A refusal of --thermostat or --pressure: a checkpoint's integrator or
- * box named as the checkpoint's, the rest in the command's words. */
+/* A refusal of --thermostat, --pressure or --shear: a checkpoint's
+ * integrator, box or shear named as the checkpoint's, the rest in the
+ * command's words. */
 static void refuse_ensemble(const options *o, const char *what, const ds_error *err)
 {
     if (err->status == DS_ERR_NOMEM)
         die(EXIT_RUN, "cannot set the %s: %s", what, err->message);
     const char *source = o->restart_path ? o->restart_path : o->from_path;
-    if (strcmp(err->field, "integrator") == 0 || strcmp(err->field, "boundary") == 0)
+    if (strcmp(err->field, "integrator") == 0 || strcmp(err->field, "boundary") == 0 ||
+        strcmp(err->field, "shear") == 0)
         die(EXIT_USAGE, "cannot set the %s of %s: %s", what, source ? source : "the request",
             err->message);
+    /* The shear's "rate = 2000 ..." is --shear's (report.c's "rate" is
+     * --grow's). */
+    if (strcmp(what, "shear") == 0 && strcmp(err->field, "rate") == 0 &&
+        strncmp(err->message, "rate = ", 7) == 0)
+        die(EXIT_USAGE, "--shear %s", err->message + 7);
     /* No --temperature: the library was asked for the disks' own. */
     if (strcmp(err->field, "kt") == 0 && !(o->temperature > 0.0))
         die(EXIT_USAGE,
@@ -380,9 +388,12 @@ static void refuse_ensemble(const options *o, const char *what, const ds_error *
     die(EXIT_USAGE, "%s", in_command_words(err, words, sizeof words));
 }
 
-/* --thermostat and --pressure, once the simulation exists: the library
- * checks them against the disks as they are (the temperature of now when
- * --temperature is not given) and says why it refuses. */
+/* --thermostat, --pressure and --shear, once the simulation exists: the
+ * library checks them against the disks as they are (the temperature of
+ * now when --temperature is not given) and says why it refuses. The
+ * shear comes last, so that its refusal names a heat bath or a barostat
+ * in its way. A checkpoint's shear goes on unless --shear is given (its
+ * own rate again changes nothing; 0 stops it). */
 void start_ensemble(const options *o, ds_sim *sim)
 {
     ds_error err;
@@ -394,4 +405,6 @@ void start_ensemble(const options *o, ds_sim *sim)
         ds_sim_set_barostat(sim, o->pressure, o->barostat_every, o->barostat_step,
                             o->barostat_aspect, &err) != DS_OK)
         refuse_ensemble(o, "barostat", &err);
+    if (o->shear_given && ds_sim_set_shear(sim, o->shear, &err) != DS_OK)
+        refuse_ensemble(o, "shear", &err);
 }

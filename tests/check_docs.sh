@@ -40,11 +40,12 @@ export LC_ALL=C
 
 # A program path without a slash is run from here, not looked up on PATH.
 here() { case $1 in */* | '') echo "$1" ;; *) echo "./$1" ;; esac; }
-disks=$(here "${1:?usage: check_docs.sh DISKS [RENDER [GR [PRESSURE [TRANSPORT]]]]}")
+disks=$(here "${1:?usage: check_docs.sh DISKS [RENDER [GR [PRESSURE [TRANSPORT [RHEOLOGY]]]]]}")
 render=$(here "${2:-}")
 gr=$(here "${3:-}")
 pressure=$(here "${4:-}")
 transport=$(here "${5:-}")
+rheology=$(here "${6:-}")
 
 MD_FILES="README.md CHANGELOG.md $(ls docs/*.md)"
 MAN_FILES=$(ls man/*.[0-9])
@@ -243,6 +244,10 @@ if [ -n "$transport" ] && [ -x "$transport" ]; then
     check_program transport "$transport" man/disks-transport.1 docs/cli.md transport &&
         checked_programs="$checked_programs transport"
 fi
+if [ -n "$rheology" ] && [ -x "$rheology" ]; then
+    check_program rheology "$rheology" man/disks-rheology.1 docs/cli.md rheology &&
+        checked_programs="$checked_programs rheology"
+fi
 # The sweeps installed as disks-eos, disks-eos-slurm, disks-diffusion and
 # disks-jamming: their help against their man pages and docs/sweeps.md
 # (disks-eos-slurm shares the page of disks-eos, whose OPTIONS are eos's).
@@ -264,7 +269,7 @@ command_lines() {
     awk '
     FNR == 1 { fence = 0; table = 0; ex = 0; held = "" }
     function commands(text, where,    w, rest, seg, prog) {
-        while (match(text, /(^|[ \/;&|(`$])(disks-render|disks-gr|disks-pressure|disks-transport|disks-eos-slurm|disks-eos|disks-diffusion|disks-jamming|disks|render-osmesa|render-egl|render|gr|pressure|transport|eos\.sh|eos\.sbatch|diffusion_sweep\.sh|jamming\.sh)( |$)/)) {
+        while (match(text, /(^|[ \/;&|(`$])(disks-render|disks-gr|disks-pressure|disks-transport|disks-rheology|disks-eos-slurm|disks-eos|disks-diffusion|disks-jamming|disks|render-osmesa|render-egl|render|gr|pressure|transport|rheology|eos\.sh|eos\.sbatch|diffusion_sweep\.sh|jamming\.sh)( |$)/)) {
             w = substr(text, RSTART, RLENGTH); rest = substr(text, RSTART + RLENGTH)
             sub(/^[ \/;&|(`$]/, "", w); sub(/ $/, "", w)
             prog = w

@@ -42,6 +42,8 @@ plot() {
     checked=$((checked + 1))
 }
 
+plot plot_rheology.plt shear_thinning "low='$data/rheo030.dat'; high='$data/rheo050.dat'; helfand_low=0.995; helfand_low_error=0.023; helfand_high=1.011; helfand_high_error=0.026" \
+    "N = 1024" "area fraction 0.3" "area fraction 0.5"
 plot plot_diffusion.plt diffusion "big='$data/diffusion4096.dat'; small='$data/diffusion1024.dat'" \
     "N = 4096" "N = 1024" "periodic 1000 x 1000 box"
 # The jamming plot's log axis reads at 1, 2 and 5 of each decade.

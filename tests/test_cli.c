@@ -767,6 +767,9 @@ static void test_a_restart_writes_the_frames_of_an_uninterrupted_run(void **stat
     restart_matches_one_run("--integrator event --periodic --thermostat andersen --pressure 30 "
                             "--barostat-every 2 --barostat-aspect");
     restart_matches_one_run("--periodic --thermostat isokinetic --temperature 2000 --pressure 30");
+    /* The checkpoint's shear goes on without --shear: the images' offset,
+     * the trajectory's shear_offset and the stats' shear columns. */
+    restart_matches_one_run("--integrator event --periodic --shear 40 --thermostat isokinetic");
 }
 
 /* Starts disks in dir with the given arguments and sends sig once
@@ -1153,7 +1156,7 @@ static void test_the_box_speed_dt_and_area_fraction_options_reach_the_run(void *
         char *csv = slurp_in(dir, "s.csv", &len);
         assert_non_null(csv);
         char *cols[24];
-        assert_int_equal(last_row(csv, cols, 24), 17);
+        assert_int_equal(last_row(csv, cols, 24), 20);
         assert_true(fabs(strtod(cols[1], NULL) - 0.1) < 1e-9);                /* time */
         assert_true(fabs(strtod(cols[2], NULL) / (500 * 4.5) - 1.0) < 1e-12); /* K */
         assert_true(fabs(strtod(cols[10], NULL) - 0.25) < 1e-12);             /* eta */
@@ -1206,7 +1209,7 @@ static void test_a_mixture_run_writes_its_two_radii(void **state)
     char *csv = slurp_in(dir, "a.csv", NULL), *cols[24];
     assert_non_null(csv);
     assert_non_null(strstr(csv, ",psi6,area_fraction,granular_temperature,"));
-    assert_int_equal(last_row(csv, cols, 24), 17);
+    assert_int_equal(last_row(csv, cols, 24), 20);
     assert_true(fabs(strtod(cols[10], NULL) / (3.14159265358979 * 3220e-6) - 1.0) < 1e-12);
     free(csv);
     remove_tree(dir);
@@ -1232,7 +1235,7 @@ static void test_a_granular_run_writes_its_energy_books(void **state)
     char *csv = slurp_in(dir, "a.csv", NULL);
     assert_non_null(csv);
     assert_non_null(strstr(csv, ",area_fraction,granular_temperature,energy_lost,energy_input,"
-                                "power_lost,power_input,potential_energy\n"));
+                                "power_lost,power_input,potential_energy,"));
     char *line = strchr(csv, '\n') + 1;
     double start = NAN;
     for (int row = 0; row < 7; ++row) {
@@ -1257,6 +1260,103 @@ static void test_a_granular_run_writes_its_energy_books(void **state)
     remove_tree(dir);
 }
 
+/* --shear RATE from the command line, as the library runs it: the
+ * --stats columns are the rate, the shear stress over each row's interval
+ * (the change of ds_sim_get_stress_integral's xy part over W H times the
+ * interval's time) and the apparent viscosity -P_xy / RATE, to the bit
+ * what the library gives with ds_sim_set_thermostat (isokinetic) and
+ * ds_sim_set_shear in that order; the first row's interval is none
+ * (nan). frames.json names the rate. A run without shear writes rate 0
+ * and a viscosity of nan. */
+static void test_a_sheared_run_writes_its_stress_and_viscosity(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    must_run(dir, "200 10 --seed 5 --integrator event --periodic --box 400 --shear -25 "
+                  "--thermostat isokinetic --steps-per-frame 40 --frames 4 --quiet --out a "
+                  "--stats a.csv");
+    ds_params p = ds_params_default(200, 10.0);
+    p.seed = 5;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    p.box = 400.0;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    assert_int_equal(ds_sim_set_thermostat(sim, DS_THERMOSTAT_ISOKINETIC, 0.0, 0.0, NULL), DS_OK);
+    assert_int_equal(ds_sim_set_shear(sim, -25.0, NULL), DS_OK);
+    char *csv = slurp_in(dir, "a.csv", NULL);
+    assert_non_null(csv);
+    assert_non_null(strstr(csv, ",potential_energy,shear_rate,shear_stress,viscosity\n"));
+    char *row = strchr(csv, '\n') + 1;
+    assert_non_null(strstr(row, ",-25,nan,nan\n")); /* frame 0: no interval yet */
+    double s0[3], s1[3], t0 = 0.0;
+    ds_sim_get_stress_integral(sim, s0, NULL);
+    for (int frame = 1; frame < 4; ++frame) {
+        ds_sim_run(sim, 40, NULL);
+        ds_sim_get_stress_integral(sim, s1, NULL);
+        const double t1 = ds_sim_get_time(sim);
+        const double p_xy = (s1[2] - s0[2]) / (400.0 * 400.0 * (t1 - t0));
+        t0 = t1;
+        char want[128];
+        snprintf(want, sizeof want, "\n%d,%s", frame, "");
+        row = strstr(row, want);
+        assert_non_null(row);
+        snprintf(want, sizeof want, ",-25,%.17g,%.17g\n", p_xy, -p_xy / -25.0);
+        char *end = strchr(row + 1, '\n');
+        assert_non_null(end);
+        assert_true(strncmp(end - strlen(want) + 1, want, strlen(want)) == 0);
+        memcpy(s0, s1, sizeof s0);
+        ++row;
+    }
+    ds_sim_destroy(sim);
+    free(csv);
+    char *json = slurp_in(dir, "a/frames.json", NULL);
+    assert_non_null(json);
+    assert_non_null(strstr(json, "\"shear_rate\": -25\n"));
+    free(json);
+    must_run(dir, "200 10 --integrator event --periodic --frames 2 --quiet --out b --stats b.csv");
+    csv = slurp_in(dir, "b.csv", NULL);
+    assert_non_null(csv);
+    char *cols[24];
+    assert_int_equal(last_row(csv, cols, 24), 20);
+    assert_string_equal(cols[17], "0");
+    assert_true(isfinite(strtod(cols[18], NULL))); /* the stress at rest is there */
+    assert_string_equal(cols[19], "nan");
+    free(csv);
+    remove_tree(dir);
+}
+
+/* A sheared run's checkpoint restarts sheared, without --shear given
+ * again: `disks --restart` alone writes the frames of the run that did
+ * not stop (restart_matches_one_run checks the rows and the trajectory),
+ * and --shear 0 stops the images: the rate column is 0 from there on. */
+static void test_a_restart_without_shear_goes_on_shearing(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/ds_test_cli_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    const char *run = "100 5 --integrator event --periodic --shear 30 --thermostat isokinetic "
+                      "--steps-per-frame 50 --velocities --quiet";
+    must_run(dir, "%s --frames 8 --out one", run);
+    must_run(dir, "%s --frames 4 --out two --checkpoint c.ckpt", run);
+    must_run(dir, "--restart c.ckpt --frames 4 --stats two.csv");
+    assert_same_files(dir, "one/frame_0007.txt", "two/frame_0007.txt");
+    char *csv = slurp_in(dir, "two.csv", NULL), *cols[24];
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 24), 20);
+    assert_string_equal(cols[17], "30");
+    free(csv);
+    must_run(dir, "--restart c.ckpt --frames 4 --shear 0 --out three --stats three.csv");
+    csv = slurp_in(dir, "three.csv", NULL);
+    assert_non_null(csv);
+    assert_int_equal(last_row(csv, cols, 24), 20);
+    assert_string_equal(cols[17], "0");
+    assert_string_equal(cols[19], "nan");
+    free(csv);
+    remove_tree(dir);
+}
+
 /* --grow to --until-eta: the growth stops at the target exactly (to
  * rounding: 1e-12), the radii keep their ratio, the run goes on to its
  * last frame with the kinetic energy of the start (the heat taken out
@@ -1271,7 +1371,7 @@ static void test_a_growth_stops_at_its_target_area_fraction(void **state)
     assert_true(exists_in(dir, "g/frame_0049.txt"));
     char *csv = slurp_in(dir, "g.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 24), 17);
+    assert_int_equal(last_row(csv, cols, 24), 20);
     assert_true(fabs(strtod(cols[10], NULL) - 0.5) < 1e-12);
     assert_true(fabs(strtod(cols[2], NULL) / (64 * 5000.0) - 1.0) < 1e-12);
     free(csv);
@@ -1309,7 +1409,7 @@ static void test_measure_after_discards_the_start(void **state)
     ds_sim_destroy(sim);
     char *csv = slurp_in(dir, "a.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 24), 17);
+    assert_int_equal(last_row(csv, cols, 24), 20);
     assert_string_equal(cols[6], want[0]);
     assert_string_equal(cols[7], want[1]);
     assert_string_equal(cols[8], want[2]);
@@ -1322,7 +1422,7 @@ static void test_measure_after_discards_the_start(void **state)
     must_run(dir, "--restart b.ckpt --frames 3 --measure-after 0.5 --quiet --out b --stats b.csv");
     csv = slurp_in(dir, "b.csv", NULL);
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 24), 17);
+    assert_int_equal(last_row(csv, cols, 24), 20);
     char restarted[256];
     snprintf(restarted, sizeof restarted, "%s,%s,%s", cols[6], cols[7], cols[8]);
     assert_string_equal(restarted, whole);
@@ -1357,7 +1457,7 @@ static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
      * times (steps of 0.001, 100 to a frame). */
     char *csv = slurp_in(dir, "j.csv", NULL), *cols[24];
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 24), 17);
+    assert_int_equal(last_row(csv, cols, 24), 20);
     assert_int_equal(strtol(cols[0], NULL, 10), last);
     const double jammed_at = strtod(cols[1], NULL);
     assert_true(jammed_at > 0.1 * (double)(last - 1) && jammed_at <= 0.1 * (double)last);
@@ -1378,7 +1478,7 @@ static void test_a_growth_that_jams_ends_the_run_with_the_packing(void **state)
     assert_true(exists_in(dir, name));
     csv = slurp_in(dir, "r.csv", NULL);
     assert_non_null(csv);
-    assert_int_equal(last_row(csv, cols, 24), 17);
+    assert_int_equal(last_row(csv, cols, 24), 20);
     assert_int_equal(strtol(cols[0], NULL, 10), last + 2);
     assert_true(fabs(strtod(cols[1], NULL) - 0.1 * (double)(last + 2)) < 1e-6);
     free(csv);
@@ -1699,6 +1799,8 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_a_growth_stops_at_its_target_area_fraction),
         cmocka_unit_test(test_a_growth_that_jams_ends_the_run_with_the_packing),
         cmocka_unit_test(test_measure_after_discards_the_start),
+        cmocka_unit_test(test_a_sheared_run_writes_its_stress_and_viscosity),
+        cmocka_unit_test(test_a_restart_without_shear_goes_on_shearing),
     };
     /* Sized for what goes in: a fixed array overflowed once the cases
      * outgrew its slack (a garbage test name, cases overwritten). */

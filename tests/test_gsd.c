@@ -428,6 +428,48 @@ static void test_a_file_opened_again_is_gone_on_with(void **state)
     ds_sim_destroy(sim);
 }
 
+/* A sheared box logs its images' offset every frame, to the bit
+ * (log/disksim/shear_offset, ds_sim_get_shear_offset), so that x + ix Lx
+ * + iy offset unwraps; its box stays rectangular (no tilt). Unsheared,
+ * the offset is 0. */
+static void test_a_sheared_run_logs_its_images_offset(void **state)
+{
+    (void)state;
+    ds_params p = ds_params_default(60, 5.0);
+    p.box = 200.0;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    FILE *f = tmpfile();
+    assert_non_null(f);
+    ds_writer *w = open_gsd(f);
+    double want[4];
+    for (int k = 0; k < 4; ++k) {
+        if (k == 1)
+            assert_int_equal(ds_sim_set_shear(sim, -2.5, NULL), DS_OK);
+        if (k > 0)
+            ds_sim_run(sim, 500, NULL);
+        want[k] = ds_sim_get_shear_offset(sim);
+        assert_int_equal(ds_writer_write(w, sim, NULL), DS_OK);
+    }
+    assert_int_equal(ds_writer_close(w, NULL), DS_OK);
+    gsd_file g;
+    read_back(&g, f);
+    assert_int_equal(g.frames, 4);
+    assert_true(want[0] == 0.0 && want[3] != 0.0);
+    for (uint64_t k = 0; k < 4; ++k) {
+        const double got = f64_at(chunk(&g, k, "log/disksim/shear_offset", 10, 1, 1));
+        assert_memory_equal(&got, &want[k], sizeof got);
+    }
+    const uint8_t *box = chunk(&g, 0, "configuration/box", 9, 6, 1);
+    for (int k = 2; k < 6; ++k)
+        assert_true(f32_at(box + 4 * k) == 0.0f);
+    free_file(&g);
+    fclose(f);
+    ds_sim_destroy(sim);
+}
+
 /* A file of no frames is a valid file too. */
 static void test_a_writer_closed_at_once_leaves_an_empty_trajectory(void **state)
 {
@@ -438,7 +480,7 @@ static void test_a_writer_closed_at_once_leaves_an_empty_trajectory(void **state
     gsd_file g;
     read_back(&g, f);
     assert_int_equal(g.frames, 0);
-    assert_int_equal(g.name_count, 21);
+    assert_int_equal(g.name_count, 22);
     free_file(&g);
     fclose(f);
 }
@@ -496,6 +538,7 @@ int main(void)
         cmocka_unit_test(test_later_frames_hold_what_changed),
         cmocka_unit_test(test_the_file_is_valid_after_every_write),
         cmocka_unit_test(test_a_file_opened_again_is_gone_on_with),
+        cmocka_unit_test(test_a_sheared_run_logs_its_images_offset),
         cmocka_unit_test(test_a_writer_closed_at_once_leaves_an_empty_trajectory),
         cmocka_unit_test(test_a_stream_that_cannot_hold_a_gsd_file_is_refused),
     };

@@ -30,6 +30,8 @@ typedef struct xyz_frame {
     double *mass;         /* of each disk (the two mass columns agree) */
     char (*kind)[16];     /* each disk's kind's name */
     long *image;          /* ix, iy of each disk when periodic, else NULL */
+    int sheared;          /* the comment ends with shear_offset= */
+    double shear_offset;  /* its value (0 when not sheared) */
 } xyz_frame;
 
 /* Reads one number followed by a space or a newline; fails the test if
@@ -93,7 +95,11 @@ static size_t parse_trajectory(const char *text, xyz_frame *frames, size_t max)
         f->periodic = f->periodic_y || next_is(&p, "T F F");
         if (!f->periodic)
             expect(&p, "F F F");
-        expect(&p, "\"\n");
+        expect(&p, "\"");
+        f->sheared = next_is(&p, " shear_offset=");
+        f->shear_offset = f->sheared ? number(&p) : 0.0;
+        if (!f->sheared)
+            expect(&p, "\n");
         assert_int_equal(images, f->periodic); /* the image column iff periodic */
         f->disks = malloc(f->count * sizeof *f->disks);
         f->momenta = malloc(2 * f->count * sizeof *f->momenta);
@@ -271,6 +277,55 @@ static void test_the_documented_xyz_form_is_what_is_written(void **state)
         free(buf);
         ds_sim_destroy(sim);
     }
+}
+
+/* A sheared box's frames end their comment line with shear_offset=, the
+ * images' offset unwrapped in the shortest form that reads back
+ * (ds_sim_get_shear_offset, to the bit), so that pos + map_shift x the
+ * sides + iy shear_offset along x is ds_sim_get_unwrapped (to the six
+ * decimals of the positions); the cell stays rectangular. An unsheared
+ * box writes no such key. */
+static void test_a_sheared_frame_names_its_images_offset(void **state)
+{
+    (void)state;
+    enum { N = 60 };
+    ds_params p = ds_params_default(N, 5.0);
+    p.box = 200.0;
+    p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
+    p.boundary = DS_BOUNDARY_PERIODIC;
+    ds_sim *sim = NULL;
+    assert_int_equal(ds_sim_create(&p, NULL, &sim, NULL), DS_OK);
+    for (int sheared = 0; sheared < 2; ++sheared) {
+        if (sheared)
+            assert_int_equal(ds_sim_set_shear(sim, 1.7, NULL), DS_OK);
+        ds_sim_run(sim, 3000, NULL); /* t = 3: many disks cross the top or bottom */
+        size_t cap = ds_xyz_get_size(sim), len = 0;
+        char *buf = malloc(cap + 1);
+        assert_non_null(buf);
+        assert_int_equal(ds_xyz_format(sim, buf, cap, &len, NULL), DS_OK);
+        buf[len] = '\0';
+        xyz_frame f;
+        assert_int_equal(parse_trajectory(buf, &f, 1), 1);
+        assert_int_equal(f.sheared, sheared);
+        assert_true(f.box == 200.0 && f.box_y == 200.0); /* Lattice="Lx 0 0 0 Ly 0 ...": no tilt */
+        if (sheared) {
+            assert_true(f.shear_offset == ds_sim_get_shear_offset(sim));
+            assert_true(f.shear_offset > 200.0); /* past a width: the unwrapped one */
+            double xy[2 * N];
+            assert_int_equal(ds_sim_get_unwrapped(sim, xy, NULL), DS_OK);
+            int crossed = 0;
+            for (size_t i = 0; i < N; ++i) {
+                const double x = f.disks[i].x + (double)f.image[2 * i] * f.box +
+                                 (double)f.image[2 * i + 1] * f.shear_offset;
+                assert_true(fabs(x - xy[2 * i]) <= 5e-7 + 1e-12 * fabs(xy[2 * i]));
+                crossed += f.image[2 * i + 1] != 0;
+            }
+            assert_true(crossed > 0); /* the offset was put to the test */
+        }
+        free_frames(&f, 1);
+        free(buf);
+    }
+    ds_sim_destroy(sim);
 }
 
 static void test_frames_written_one_after_another_make_a_trajectory(void **state)
@@ -507,6 +562,7 @@ int main(void)
 {
     const struct CMUnitTest library[] = {
         cmocka_unit_test(test_an_xyz_frame_reads_back_as_the_simulation),
+        cmocka_unit_test(test_a_sheared_frame_names_its_images_offset),
         cmocka_unit_test(test_the_documented_xyz_form_is_what_is_written),
         cmocka_unit_test(test_frames_written_one_after_another_make_a_trajectory),
         cmocka_unit_test(test_formatting_reports_the_bytes_needed),

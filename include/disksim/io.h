@@ -78,7 +78,11 @@ void ds_frame_free(ds_frame *frame);
  * decimals), r its own radius (ds_sim_get_radii) and m its mass
  * (ds_sim_get_masses) in the shortest form that reads back exactly, and
  * ix, iy its image counts (ds_sim_get_images), so x + ix Lx, y + iy Ly is
- * its unwrapped centre. The 2D box is written as a cell of height H with
+ * its unwrapped centre. A sheared box (ds_sim_set_shear) ends the
+ * comment line with " shear_offset=S", S its images' offset unwrapped
+ * (ds_sim_get_shear_offset) in the shortest form that reads back: the
+ * unwrapped x is then x + ix Lx + iy S; the cell stays rectangular. The
+ * 2D box is written as a cell of height H with
  * every disk at z = 0, periodic along x and y only. The columns are named
  * for the two readers: OVITO maps type, pos, radius, velo, mass and
  * map_shift to Particle Type, Position, Radius, Velocity, Mass and
@@ -126,7 +130,12 @@ ds_status ds_format_parse(const char *name, ds_format *out, ds_error *err);
  *                             kinetic_energy, px, py, pressure,
  *                             virial_pressure, psi6 (NaN where the library
  *                             has none), area_fraction (float64) and
- *                             collisions, wall_reflections (uint64)
+ *                             collisions, wall_reflections (uint64); and
+ *                             shear_offset (float64): a sheared box's
+ *                             image above stands that far along x, unwrapped
+ *                             (ds_sim_get_shear_offset, 0 without shear),
+ *                             so x + ix Lx + iy shear_offset unwraps; the
+ *                             box keeps no tilt (its xy 0)
  * in generation order (HOOMD's tag order), every number little-endian.
  * Frame 0 holds every chunk; a later frame holds the step, positions,
  * velocities and log, and the other chunks only where they differ from
@@ -199,7 +208,7 @@ ds_status ds_writer_close(ds_writer *writer, ds_error *err);
  * the stress integral's parts (an older file's run is elastic, without
  * a field); version 1 lacks the stress integral's parts (a run loaded
  * from it starts ds_sim_get_stress_integral at 0). */
-#define DS_CHECKPOINT_FORMAT_VERSION 4
+#define DS_CHECKPOINT_FORMAT_VERSION 5
 
 /* Bytes ds_checkpoint_format writes for sim (0 for NULL). */
 size_t ds_checkpoint_get_size(const ds_sim *sim);

@@ -217,6 +217,57 @@ ds_status ds_sim_set_barostat(ds_sim *sim, double pressure, uint64_t every, doub
 double ds_sim_get_barostat_pressure(const ds_sim *sim);
 double ds_sim_get_barostat_acceptance(const ds_sim *sim);
 
+/* ------------------------------------------------------------------ */
+/* Shear: Lees-Edwards boundaries                                       */
+/* ------------------------------------------------------------------ */
+
+/* The largest strain a shear may put in per step, |rate| dt: a heat bath
+ * acts at the ends of steps, and the profile must not run away between
+ * them. */
+#define DS_SHEAR_MAX_STRAIN_PER_STEP 1.0
+
+/* Shears the box at rate = dv_x / dy (per unit time; negative shears the
+ * other way) from now on, with Lees and Edwards' boundaries (1972): the
+ * box periodic along both axes, the images above moving at +rate H
+ * along x (H the height), those below at -rate H. A disk that leaves
+ * through the top comes in at the bottom shifted by the images' offset
+ * (ds_sim_get_shear_shift) and rate H slower along x (and the reverse);
+ * pairs across the top or bottom meet as their images do. The disks take
+ * the profile's velocity, rate (y - H / 2) along x, added to theirs (set
+ * again, the change of it), so that the flow starts from its steady
+ * profile. Rate 0 stops the images where they stand. The viscous heat
+ * the shear puts in is for a thermostat to take out: the isokinetic one
+ * (ds_sim_set_thermostat) then scales the peculiar velocities, the
+ * velocity less the profile's, which are also what ds_sim_get_temperature
+ * and the kinetic part of the pressure tensor's xy component
+ * (ds_sim_get_stress_integral) take; its xx component keeps the
+ * velocities as they are. In the shear flow's steady state the
+ * viscosity is -P_xy / rate.
+ *
+ * Image counts under shear: the unwrapped centre of a disk is (x + ix W +
+ * iy ds_sim_get_shear_offset, y + iy H), continuous in time (W the
+ * width).
+ *
+ * Event-driven integrator only. DS_ERR_ARG (err naming the argument, its
+ * value and its limit) for sim NULL, rate not finite, |rate| dt above
+ * DS_SHEAR_MAX_STRAIN_PER_STEP or |rate| H above DS_VELOCITY_MAX / 4 (a
+ * disk crossing would outrun the speed limit), a box not periodic along
+ * both axes (field "boundary"), an integrator that cannot shear (field
+ * "integrator"), Andersen's heat bath (field "thermostat": its draws
+ * know no profile; use the isokinetic one), a barostat (field
+ * "barostat") or a growth that is growing (field "growth"); a field
+ * cannot be, as it needs walls across it (ds_sim_set_gravity).
+ * DS_ERR_NOMEM, nothing changed. */
+ds_status ds_sim_set_shear(ds_sim *sim, double rate, ds_error *err);
+/* The rate set (0 without a shear, and for sim NULL). */
+double ds_sim_get_shear(const ds_sim *sim);
+/* The images' offset along x at the present time: the image above
+ * stands shift along (in [0, W)), the one below -shift; offset is the
+ * same unwrapped (shift plus whole widths), for the image counts. 0
+ * without shear. */
+double ds_sim_get_shear_shift(const ds_sim *sim);
+double ds_sim_get_shear_offset(const ds_sim *sim);
+
 #ifdef __cplusplus
 }
 #endif

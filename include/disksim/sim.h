@@ -115,7 +115,8 @@ const char *ds_sim_get_kind_name(const ds_sim *sim, size_t k);
 ds_status ds_sim_get_images(const ds_sim *sim, int32_t *image, ds_error *err);
 /* Unwrapped centres: xy[2 i], xy[2 i + 1] = x + ix box, y + iy box_y
  * (ds_sim_get_images), each one rounding of the sum from the exact image
- * sum; with walls the centres themselves. A free disk's unwrapped centre
+ * sum; with walls the centres themselves; in a sheared box x + ix box +
+ * iy ds_sim_get_shear_offset (protocols.h). A free disk's unwrapped centre
  * is x0 + v t up to the rounding of its flight: within (s + 2) eps (box +
  * |x0 + v t|) after s steps of the time step or s events of the
  * event-driven integrator (eps = DBL_EPSILON). */

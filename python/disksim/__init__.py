@@ -31,8 +31,8 @@ Error         every failure the library reports; ArgumentError (also a
 
 INTEGRATORS, BOUNDARIES, PLACEMENTS, BROADPHASES, MASS_RULES, GROWTH_STATES,
 THERMOSTATS and FORMATS are the names the arguments and properties take;
-DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z and
-VELOCITY_MAX the library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
+DEFAULT_SEED, CONTACT_TOLERANCE, MAX_AREA_FRACTION, MANY_DISKS, JAMMED_Z,
+VELOCITY_MAX and SHEAR_MAX_STRAIN_PER_STEP the library's constants. Contacts is what Sim.contacts() returns. docs/python.md in the repository is the manual.
 """
 from ._disksim import (
     BOUNDARIES,
@@ -47,6 +47,7 @@ from ._disksim import (
     MASS_RULES,
     MAX_AREA_FRACTION,
     PLACEMENTS,
+    SHEAR_MAX_STRAIN_PER_STEP,
     THERMOSTATS,
     VELOCITY_MAX,
     ArgumentError,
@@ -95,6 +96,7 @@ __all__ = [
     "FORMATS",
     "JAMMED_Z",
     "VELOCITY_MAX",
+    "SHEAR_MAX_STRAIN_PER_STEP",
     "DEFAULT_SEED",
     "CONTACT_TOLERANCE",
     "MAX_AREA_FRACTION",

@@ -7,7 +7,8 @@
  * parameters of a simulation from keyword arguments (params.c), the Sim
  * type (sim.c), its properties (properties.c), its state as arrays
  * (state.c), exact checkpoints and pickles (checkpoint.c), frames
- * (frames.c), the analysis functions (analysis.c), ASE (ase.c), freud
+ * (frames.c), the analysis functions (analysis.c), shear flow
+ * (shear.c), ASE (ase.c), freud
  * and HOOMD-blue's view (freud.c) and trajectory files (writer.c). Only
  * the public header disk_sim.h is used: the module is a thin face over
  * the library.
@@ -236,6 +237,10 @@ extern const char dspy_set_restitution_doc[], dspy_set_contact_time_doc[], dspy_
 PyObject *dspy_sim_set_thermostat(dspy_sim *self, PyObject *args, PyObject *kwargs);
 PyObject *dspy_sim_set_barostat(dspy_sim *self, PyObject *args, PyObject *kwargs);
 extern const char dspy_set_thermostat_doc[], dspy_set_barostat_doc[];
+/* shear.c: Lees-Edwards shear, the velocity profile. */
+PyObject *dspy_sim_set_shear(dspy_sim *self, PyObject *args, PyObject *kwargs);
+PyObject *dspy_sim_velocity_profile(dspy_sim *self, PyObject *args, PyObject *kwargs);
+extern const char dspy_set_shear_doc[], dspy_velocity_profile_doc[];
 
 /* frames.c */
 PyObject *dspy_sim_write_frame(dspy_sim *self, PyObject *args, PyObject *kwargs);

@@ -77,7 +77,9 @@ static int add_constants(PyObject *m)
         PyModule_AddObject(m, "MAX_AREA_FRACTION", PyFloat_FromDouble(DS_MAX_AREA_FRACTION)) < 0 ||
         PyModule_AddIntConstant(m, "MANY_DISKS", DS_MANY_DISKS) < 0 ||
         PyModule_AddObject(m, "JAMMED_Z", PyFloat_FromDouble(DS_JAMMED_Z)) < 0 ||
-        PyModule_AddObject(m, "VELOCITY_MAX", PyFloat_FromDouble(DS_VELOCITY_MAX)) < 0)
+        PyModule_AddObject(m, "VELOCITY_MAX", PyFloat_FromDouble(DS_VELOCITY_MAX)) < 0 ||
+        PyModule_AddObject(m, "SHEAR_MAX_STRAIN_PER_STEP",
+                           PyFloat_FromDouble(DS_SHEAR_MAX_STRAIN_PER_STEP)) < 0)
         return -1;
     return 0;
 }

@@ -37,6 +37,9 @@ static const real_getter get_time = {ds_sim_get_time}, get_radius = {ds_sim_get_
                          get_thermostat_kt = {ds_sim_get_thermostat_temperature},
                          get_barostat_pressure = {ds_sim_get_barostat_pressure},
                          get_barostat_acceptance = {ds_sim_get_barostat_acceptance},
+                         get_shear_rate = {ds_sim_get_shear},
+                         get_shear_shift = {ds_sim_get_shear_shift},
+                         get_shear_offset = {ds_sim_get_shear_offset},
                          get_temperature = {ds_sim_get_temperature},
                          get_compressibility_factor = {ds_sim_get_compressibility_factor},
                          get_restitution = {ds_sim_get_restitution},
@@ -181,6 +184,18 @@ static PyObject *momentum_property(dspy_sim *self, void *closure)
     return Py_BuildValue("(dd)", px, py);
 }
 
+/* The stress integral's (xx, yy, xy): a tuple, as momentum. */
+static PyObject *stress_integral_property(dspy_sim *self, void *closure)
+{
+    (void)closure;
+    ds_sim *sim = dspy_sim_of(self);
+    if (!sim)
+        return NULL;
+    double s[3];
+    ds_sim_get_stress_integral(sim, s, NULL);
+    return Py_BuildValue("(ddd)", s[0], s[1], s[2]);
+}
+
 static PyObject *params_property(dspy_sim *self, void *closure)
 {
     (void)closure;
@@ -257,7 +272,8 @@ PyGetSetDef dspy_sim_getset[] = {
      "The unwrapped centres as a new (n, 2) float64 array, row i disk i: the\n"
      "position plus the box side times the times disk i has crossed the box that\n"
      "way since it was placed (set_state starts them again), so displacements over\n"
-     "any time are differences of these; with walls, the positions.",
+     "any time are differences of these; with walls, the positions. Under shear\n"
+     "(set_shear) each crossing of the top adds shear_offset along x too.",
      NULL},
     {"images", (getter)dspy_images_property, NULL,
      "The periodic image counts as a new (n, 2) int32 array, row i disk i: how many\n"
@@ -265,11 +281,22 @@ PyGetSetDef dspy_sim_getset[] = {
      "leaving through the far edge, -1 through 0; LAMMPS' ix iy, GSD's\n"
      "particles/image), so unwrapped = positions + images * (box, box_y). set_state\n"
      "sets them to 0; checkpoints and pickles carry them; with walls (and along a\n"
-     "channel's y) they are 0. They wrap past 2**31 crossings.",
+     "channel's y) they are 0. They wrap past 2**31 crossings. Under shear\n"
+     "unwrapped adds images[:, 1] * shear_offset along x.",
      NULL},
     REAL(kinetic_energy, "Kinetic energy, the sum of m v^2 / 2 (masses 1 unless a mixture's)."),
     {"momentum", (getter)momentum_property, NULL,
      "Total momentum (px, py), the sum of m v. Pairs conserve it; walls do not.", NULL},
+    {"stress_integral", (getter)stress_integral_property, NULL,
+     "The time integral of the pressure tensor times the area since creation,\n"
+     "(s_xx, s_yy, s_xy) (ds_sim_get_stress_integral; not reset, checkpoints carry\n"
+     "it): the kinetic part integrated exactly between velocity changes, the\n"
+     "collisions' impulses added. The mean pressure tensor over a stretch is its\n"
+     "change over A t (A = box * box_y in a periodic box), so under shear the\n"
+     "apparent viscosity is -(change of s_xy) / (A t shear_rate); the kinetic xy\n"
+     "part is then the peculiar velocities'. At rest its increments are the\n"
+     "Helfand moments of the shear viscosity.",
+     NULL},
     REAL(pressure, "Wall pressure: the wall impulse per unit time per unit length of wall the\n"
                    "centres reach (perimeter 2 (box - 2R) + 2 (box_y - 2R)), averaged since the\n"
                    "last reset; 0 before any step. A force per length: the ideal gas has\n"
@@ -337,6 +364,12 @@ PyGetSetDef dspy_sim_getset[] = {
     REAL(barostat_acceptance,
          "The fraction of the barostat's area moves accepted since it was set (0 before\n"
          "the first): about a third to a half is a good max_step."),
+    REAL(shear_rate, "The shear rate dv_x/dy of set_shear (0 without a shear)."),
+    REAL(shear_shift, "How far along x the image above the box stands now, in [0, box): the\n"
+                      "Lees-Edwards images' offset (0 without a shear; the image below stands\n"
+                      "-shear_shift)."),
+    REAL(shear_offset, "shear_shift unwrapped (plus whole box widths), continuous in time: an\n"
+                       "unwrapped centre is x + ix box + iy shear_offset (unwrapped takes it)."),
     {"params", (getter)params_property, NULL,
      "The arguments this Sim was created with, as a dict: Sim(**s.params) makes the\n"
      "same simulation at time 0. A Sim from load() has those the library tells: no\n"

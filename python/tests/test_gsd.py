@@ -31,6 +31,7 @@ LOGGED = {
     "virial_pressure": lambda s: s.virial_pressure,
     "psi6": lambda s: s.psi6,
     "area_fraction": lambda s: s.area_fraction,
+    "shear_offset": lambda s: s.shear_offset,
 }
 
 

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The event-chain integrator's state, shared by its parts: event_chain.c
- * (the table), chain_grid.c (the cells), chain_move.c (the chains) and
+ * (the table), chain_grid.c (the cells), chain_move.c (the chains, with
+ * chain_scan.h, what lies ahead of the moving disk) and
  * chain_checkpoint.c. Private to chain/; the rest of the library sees
  * chain.h.
  *

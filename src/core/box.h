@@ -23,6 +23,13 @@ typedef struct ds_box {
      * shift further along x, the one below -shift; 0 without shear. Kept
      * in [0, side[0]) by whoever moves it with time. */
     double shift;
+    /* How fast that image moves along x (Lees-Edwards: the shear rate
+     * times the height), 0 without shear; the one below moves at
+     * -shift_speed. A disk seen through the image above moves that much
+     * faster than it does (ds_box_nearest_moving). */
+    double shift_speed;
+    /* The shift unwrapped (shift plus whole widths), for image counts. */
+    double offset;
 } ds_box;
 
 /* A box of the given sides, walls or periodic along each axis. */
@@ -34,6 +41,8 @@ static inline ds_box ds_box_make(double width, double height, ds_edge along_x, d
     b.edge[0] = along_x;
     b.edge[1] = along_y;
     b.shift = 0.0;
+    b.shift_speed = 0.0;
+    b.offset = 0.0;
     return b;
 }
 
@@ -181,6 +190,23 @@ static inline void ds_box_nearest(const ds_box *b, double *dx, double *dy)
         else
             *dx = ds_nearest(*dx, b->side[0]);
     }
+}
+
+/* ds_box_nearest of a separation (*dx, *dy) and the relative velocity
+ * *dvx along x of the same two disks: a disk seen through the image
+ * above (the separation taken down by the height) moves shift_speed
+ * faster along x, one through the image below that much slower, so the
+ * relative motion of the pair is that of the images that meet. */
+static inline void ds_box_nearest_moving(const ds_box *b, double *dx, double *dy, double *dvx)
+{
+    if (b->edge[1] == DS_EDGE_PERIODIC && b->shift_speed != 0.0) {
+        const double half = 0.5 * b->side[1];
+        if (*dy > half)
+            *dvx -= b->shift_speed;
+        else if (*dy < -half)
+            *dvx += b->shift_speed;
+    }
+    ds_box_nearest(b, dx, dy);
 }
 
 /* ------------------------------------------------------------------ */

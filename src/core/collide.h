@@ -56,6 +56,18 @@ static inline void ds_tally_fall(ds_tally *t, double span)
     t->momentum[1] += t->mass * gy * span;
 }
 
+/* The kinetic tensor's integral over span in a sheared box: xy that of
+ * the peculiar velocities, sum m vx vy - rate M(t) with the moment M =
+ * sum m (y - H/2) vy growing at K_yy = sum m vy^2 (core.h). */
+static inline void ds_tally_shear_flight(ds_tally *t, double span)
+{
+    t->kinetic_integral[0] += t->kinetic[0] * span;
+    t->kinetic_integral[1] += t->kinetic[1] * span;
+    t->kinetic_integral[2] +=
+        (t->kinetic[2] - t->shear_rate * (t->shear_moment + 0.5 * t->kinetic[1] * span)) * span;
+    t->shear_moment += t->kinetic[1] * span;
+}
+
 /* The same from the integrator time tally->stress_clock to t, which it
  * then is: before a velocity changes at t. Straight flights keep their
  * bits; falling ones (tally->falling) change the tensor as they go. */
@@ -63,6 +75,8 @@ static inline void ds_tally_flight_to(ds_tally *t, double to)
 {
     if (t->falling)
         ds_tally_fall(t, to - t->stress_clock);
+    else if (t->shear_rate != 0.0)
+        ds_tally_shear_flight(t, to - t->stress_clock);
     else
         ds_tally_flight(t, to - t->stress_clock);
     t->stress_clock = to;

@@ -130,6 +130,13 @@ typedef struct ds_tally {
      * sums them with the kinetic tensor) carry it (collide.h). */
     int falling;
     double field[2], momentum[2], mass;
+    /* A sheared box (Lees-Edwards): the pressure tensor's kinetic xy part
+     * is that of the peculiar velocities, vx less the profile shear_rate
+     * (y - H/2): sum m vx vy less shear_rate times the moment sum m (y -
+     * H/2) vy, which the flights change at the rate sum m vy^2 and the
+     * collisions and crossings by their jumps (collide.h, the integrator
+     * that shears sets both at a run's start). 0 without shear. */
+    double shear_rate, shear_moment;
     /* The energy books since the reset: kinetic energy the collisions and
      * wall turns took out (a TC model's elastic ones none), and what a
      * drive put in. */
@@ -334,6 +341,15 @@ struct ds_integrator_ops {
      * follow (event chains have no dynamics to make granular). NULL: it
      * reads sim->world.rules as it goes. */
     ds_status (*take_rules)(ds_sim *sim, const ds_rules *rules);
+
+    /* Lees-Edwards: from integrator time t (the present step boundary, or
+     * a moment of the shear protocol's, with no event between) the box's
+     * images above and below move at +-speed along x (the shear rate
+     * times the height) from where they stand at t; moved: the images
+     * have just passed a cell edge in that direction (+1 or -1), or 0: a
+     * shear set afresh. Returns the time they pass the next (+infinity
+     * at rest). NULL: the integrator cannot shear its box. */
+    double (*shear)(ds_sim *sim, double t, double speed, int moved);
 };
 
 #if defined(__GNUC__)

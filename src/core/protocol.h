@@ -20,12 +20,15 @@
 
 /* The kinds, one slot each; a new protocol is one enumerator here and
  * one line in sim/tables.c. The hooks are called in this order: a drive's
- * kicks, then a heat bath's step's end, then a barostat's move. */
+ * kicks, then a heat bath's step's end, then a barostat's move (a
+ * shear's moments are its images passing cell edges, between events).
+ * Checkpoints name a protocol by its number here: a new one goes last. */
 typedef enum ds_protocol_kind {
     DS_PROTOCOL_GROWTH = 0,
     DS_PROTOCOL_DRIVE,
     DS_PROTOCOL_THERMOSTAT,
     DS_PROTOCOL_BAROSTAT,
+    DS_PROTOCOL_SHEAR,
     DS_PROTOCOL_KIND_COUNT
 } ds_protocol_kind;
 

@@ -11,25 +11,48 @@
 #include "core/large_alloc.h"
 #include "event/event_state.h"
 
-/* Record k is the disk of slot k (created so, see create). A disk shown
- * a hair past the box edge before its crossing event is wrapped here, and
- * its shown image counts that wrap too. */
+void ds_ed_show_disk(const ds_events *e, size_t k, double t, const ds_box *box, double turns,
+                     double out[4], int32_t image[2])
+{
+    const ed_disk *d = &e->disk[k];
+    ds_ed_lab_at(e, d, t, &out[0], &out[1], &out[2], &out[3]);
+    if (!e->image) /* walls */
+        return;
+    const int32_t iy_before = image[1];
+    ds_box_wrap(box, &out[0], &out[1], &image[0], &image[1]);
+    if (e->lees_edwards && image[1] != iy_before) {
+        /* Wrapped across the top or bottom of a sheared box: the disk
+         * takes the image's velocity and keeps its unwrapped centre, as
+         * a crossing does (event_driven.c). */
+        const int32_t crossed = (int32_t)((uint32_t)image[1] - (uint32_t)iy_before);
+        out[2] -= (double)crossed * box->shift_speed;
+        image[0] = (int32_t)((uint32_t)image[0] - (uint32_t)crossed * ds_turns_u32(turns));
+    }
+}
+
+/* Record k is the disk of slot k (created so, see create). */
 void ds_ed_show_at(ds_disks *disks, const ds_events *e, double t)
 {
+    const ds_box box = ds_ed_box_at(e, t);
+    double turns = 0.0;
+    if (e->lees_edwards)
+        (void)ds_ed_shift(e, t, &turns);
     for (size_t k = 0; k < disks->n; ++k) {
-        const ed_disk *d = &e->disk[k];
-        double x, y, vx, vy;
-        ds_ed_lab_at(e, d, t, &x, &y, &vx, &vy);
-        if (e->image) { /* a periodic axis */
-            int32_t ix = e->image[2 * k], iy = e->image[2 * k + 1];
-            ds_box_wrap(&e->box, &x, &y, &ix, &iy);
-            disks->ix[k] = ix;
-            disks->iy[k] = iy;
+        double u[4];
+        int32_t image[2] = {0, 0};
+        if (e->image) {
+            image[0] = e->image[2 * k];
+            image[1] = e->image[2 * k + 1];
         }
-        disks->x[k] = x;
-        disks->y[k] = y;
-        disks->vx[k] = vx;
-        disks->vy[k] = vy;
+        ds_ed_show_disk(e, k, t, &box, turns, u, image);
+        if (e->image) {
+            disks->ix[k] = image[0];
+            disks->iy[k] = image[1];
+        }
+        disks->x[k] = u[0];
+        disks->y[k] = u[1];
+        disks->vx[k] = u[2];
+        disks->vy[k] = u[3];
     }
 }
 
@@ -53,6 +76,7 @@ void ds_ed_rebase(ds_events *e, size_t n, double t)
     if (e->last_hit)
         for (size_t k = 0; k < n; ++k)
             e->last_hit[k] -= t;
+    e->offset = ds_ed_offset(e, t);
     ds_eq_build(e->queue, 0.0);
     e->epoch += t;
     e->law.from -= t;
@@ -169,6 +193,9 @@ ds_status ds_ed_alloc(ds_sim *sim)
         return DS_ERR_NOMEM;
     sim->state = e;
     e->box = w->box;
+    /* A sheared box's images go on from where they stand now. */
+    e->lees_edwards = w->box.offset != 0.0 || w->box.shift_speed != 0.0;
+    e->offset = w->box.offset;
     e->one_radius = w->radius;
     e->sigma2 = 4.0 * w->radius * w->radius;
     /* The clock starts at the present step boundary (ds_sim_set_disks comes
@@ -186,6 +213,8 @@ ds_status ds_ed_alloc(ds_sim *sim)
     if (st == DS_OK)
         st = ds_cells_init(&e->cells, n, e->box.side[0], e->box.side[1], 2.0 * w->radius_max,
                            w->broadphase == DS_BROADPHASE_BRUTE ? 1u : UINT32_MAX);
+    if (st == DS_OK)
+        e->shear_cell = (int64_t)floor(e->offset * e->cells.inv_wx);
     if (st == DS_OK)
         st = ds_eq_create(&e->queue, n, DS_EQ_CALENDAR, &e->disk[0].next, sizeof(ed_disk));
     /* Fetching ahead pays once the state outgrows the caches; below, it is

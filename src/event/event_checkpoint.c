@@ -48,14 +48,50 @@ void ds_ed_save(const ds_sim *sim, ds_state_writer *w)
      * protocol's part is its own, core/protocol.h). */
     const ds_ed_law *g = &e->law;
     ds_put_u32(w, g->base ? 1u : 0u);
-    if (!g->base)
-        return;
-    ds_put_f64(w, g->rate);
-    ds_put_f64(w, g->scale);
-    ds_put_f64(w, g->from);
-    ds_put_f64(w, g->eta);
-    for (size_t k = 0; k < n; ++k)
-        ds_put_f64(w, g->base[k]);
+    if (g->base) {
+        ds_put_f64(w, g->rate);
+        ds_put_f64(w, g->scale);
+        ds_put_f64(w, g->from);
+        ds_put_f64(w, g->eta);
+        for (size_t k = 0; k < n; ++k)
+            ds_put_f64(w, g->base[k]);
+    }
+    /* A sheared box (since format version 5): the images' offset at the
+     * clock's origin, their speed and the stencils' cell count. */
+    ds_put_u32(w, (uint32_t)e->lees_edwards);
+    ds_put_f64(w, e->offset);
+    ds_put_f64(w, e->box.shift_speed);
+    ds_put_u64(w, (uint64_t)e->shear_cell);
+}
+
+/* A sheared box's part (format version 5 on; before, none): it must be a
+ * periodic box's, its numbers finite, its cell count that of its offset
+ * at the present within one (the count lags the offset by at most the
+ * edge it is passing). */
+static ds_status read_shear(ds_sim *sim, ds_events *e, double now, ds_reader *r, uint32_t version,
+                            ds_error *err)
+{
+    if (version < 5)
+        return DS_OK;
+    const uint32_t on = ds_get_u32(r);
+    const double offset = ds_get_f64(r), speed = ds_get_f64(r);
+    const int64_t cell = (int64_t)ds_get_u64(r);
+    if (r->failed || on > 1u)
+        return ds_state_refuse(err, DS_ERR_FORMAT, "its shear's part is not one");
+    if (!on)
+        return DS_OK;
+    e->lees_edwards = 1;
+    e->offset = offset;
+    e->box.shift_speed = speed;
+    const double o = ds_ed_offset(e, now), at = floor(o * e->cells.inv_wx);
+    if (!ds_box_periodic(&e->box, 0) || !ds_box_periodic(&e->box, 1) || !isfinite(o) ||
+        !(fabs(speed) <= DS_VELOCITY_MAX) || !(fabs((double)cell - at) <= 1.0))
+        return ds_state_refuse(err, DS_ERR_FORMAT, "its shear does not fit its box");
+    e->shear_cell = cell;
+    sim->world.box.shift_speed = speed;
+    sim->world.box.shift = ds_ed_box_at(e, now).shift;
+    sim->world.box.offset = o;
+    return DS_OK;
 }
 
 /* Format versions 1 and 2 kept the growth protocol's fields between the
@@ -242,6 +278,10 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_e
     const ds_disks *a = &sim->disks;
     const ds_cells *c = &e->cells;
     const double slack = 1e-9 * fmax(e->box.side[0], e->box.side[1]);
+    const ds_box box = ds_ed_box_at(e, now);
+    double turns = 0.0;
+    if (e->lees_edwards)
+        (void)ds_ed_shift(e, now, &turns);
     for (size_t k = 0; k < a->n; ++k) {
         const ed_disk *d = &e->disk[k];
         double x, y, vx, vy;
@@ -249,10 +289,15 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_e
         if (e->image) {
             /* The records' image counts: the arrays' less the wrap of
              * showing (ds_ed_show_at). */
-            int32_t ix = 0, iy = 0;
-            ds_box_wrap(&e->box, &x, &y, &ix, &iy);
-            e->image[2 * k] = (int32_t)((uint32_t)a->ix[k] - (uint32_t)ix);
-            e->image[2 * k + 1] = (int32_t)((uint32_t)a->iy[k] - (uint32_t)iy);
+            double u[4];
+            int32_t image[2] = {0, 0};
+            ds_ed_show_disk(e, k, now, &box, turns, u, image);
+            x = u[0];
+            y = u[1];
+            vx = u[2];
+            vy = u[3];
+            e->image[2 * k] = (int32_t)((uint32_t)a->ix[k] - (uint32_t)image[0]);
+            e->image[2 * k + 1] = (int32_t)((uint32_t)a->iy[k] - (uint32_t)image[1]);
         }
         /* Where the record's centre is in the box at its own time. */
         const double cx = ds_ed_lab_coordinate(e, d, 0), cy = ds_ed_lab_coordinate(e, d, 1);
@@ -312,6 +357,8 @@ ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *leg
         st = read_cells(e, n, r, err);
     if (st == DS_OK)
         st = read_growth(sim, e, now, r, version, legacy, err);
+    if (st == DS_OK)
+        st = read_shear(sim, e, now, r, version, err);
     if (st == DS_OK)
         st = check_records(sim, e, now, err);
     if (st == DS_OK)

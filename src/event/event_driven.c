@@ -63,9 +63,14 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
     ds_ed_advance(a, t);
     ds_ed_advance(b, t);
     double rx = b->x - a->x, ry = b->y - a->y;
-    ds_box_nearest(&e->box, &rx, &ry);
-    const double dvx = b->vx - a->vx, dvy = b->vy - a->vy;
+    double dvx = b->vx - a->vx;
+    const double dvy = b->vy - a->vy;
+    ds_ed_nearest(e, t, &rx, &ry, &dvx);
     const double approach = rx * dvx + ry * dvy;
+    /* For a sheared box's stress tally (sheared.c). */
+    const int across = e->lees_edwards && ry != b->y - a->y;
+    const double before[3] = {tally->kinetic[0], tally->kinetic[1], tally->kinetic[2]};
+    const double v0[4] = {a->vx, a->vy, b->vx, b->vy};
     /* Rounding can leave a predicted pair a hair from approaching; then
      * there is nothing to exchange, and both are simply predicted again.
      * Restitution below 1 goes by the TC model (core/collide.h); the
@@ -81,6 +86,8 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
                           tally);
     else if (approach < 0.0)
         ds_collide(rx, ry, approach, &a->vx, &a->vy, &b->vx, &b->vy, tally);
+    if (e->lees_edwards)
+        ds_ed_sheared_collision(tally, e, i, j, across, before, v0);
     ++a->changes;
     ++b->changes;
     schedule(e, i);
@@ -117,7 +124,7 @@ static void turn_at_wall(ds_sim *sim, ds_events *e, uint32_t i, double t, int ax
     schedule(e, i);
 }
 
-static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
+static void cross_cell(ds_sim *sim, ds_events *e, uint32_t i, double t, int axis_y)
 {
     ed_disk *d = &e->disk[i];
     ds_cells *cells = &e->cells;
@@ -135,12 +142,16 @@ static void cross_cell(ds_events *e, uint32_t i, double t, int axis_y)
             *u -= box;
             if (image) /* none with walls, where only a forged state crosses */
                 *image = (int32_t)((uint32_t)*image + 1u);
+            if (axis_y && e->lees_edwards)
+                ds_ed_cross_sheared(sim, e, i, t, 1);
         }
     } else if (*c == 0) {
         *c = (uint16_t)(count - 1);
         *u += box;
         if (image)
             *image = (int32_t)((uint32_t)*image - 1u);
+        if (axis_y && e->lees_edwards)
+            ds_ed_cross_sheared(sim, e, i, t, 0);
     } else {
         --*c;
     }
@@ -161,7 +172,7 @@ static void handle_event(ds_sim *sim, ds_events *e, uint32_t i, double t)
         return;
     case EV_CELL_X:
     case EV_CELL_Y:
-        cross_cell(e, i, t, partner == EV_CELL_Y);
+        cross_cell(sim, e, i, t, partner == EV_CELL_Y);
         return;
     default:
         if (ds_fetch_note_current(d->partner_changes, e->disk[partner].changes)) {
@@ -188,6 +199,7 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
     sim->tally.falling = e->falls;
     sim->tally.field[0] = e->field[0];
     sim->tally.field[1] = e->field[1];
+    ds_ed_start_shear_tally(sim, e);
     for (uint64_t s = 0; s < steps && st == DS_OK; ++s) {
         /* From the step count, not a running sum: no drift. */
         target = (double)(sim->steps + 1) * sim->world.dt - e->epoch;
@@ -232,6 +244,7 @@ static ds_status run(ds_sim *sim, uint64_t steps, ds_error *err)
     e->tested = 0;
     ds_ed_show_at(&sim->disks, e, target);
     ds_ed_show_radii(sim, e, target);
+    ds_ed_show_shear(sim, e, target);
     return st;
 }
 
@@ -296,7 +309,7 @@ static ds_status set(ds_sim *sim, size_t k, ds_disk nd)
     }
     /* Refuse an overlap before changing anything. */
     ds_ed_stencil_cells st;
-    ds_ed_stencil(e, column, row, &st);
+    ds_ed_stencil(e, column, row, now, &st);
     for (uint32_t c = 0; c < st.count; ++c)
         if (cell_overlaps(e, st.cell[c], (uint32_t)k, now, f.x - st.sx[c], f.y - st.sy[c]))
             return DS_ERR_OVERLAP;
@@ -333,6 +346,11 @@ static ds_status scale_velocities(ds_sim *sim, double factor)
     ds_events *e = sim->state;
     const size_t n = sim->world.n;
     const double now = now_of(sim);
+    if (sim->tally.shear_rate != 0.0) {
+        ds_ed_scale_peculiar(sim, e, now, factor);
+        ds_ed_growth_go_on(e, n, now);
+        return DS_OK;
+    }
     for (int c = 0; c < 3; ++c)
         sim->tally.kinetic[c] *= factor * factor;
     for (size_t k = 0; k < n; ++k) {
@@ -370,6 +388,8 @@ static void kinetic(const ds_sim *sim, ds_kinetic *out)
             vx += e->field[0] * now;
             vy += e->field[1] * now;
         }
+        if (e->lees_edwards) /* the peculiar velocity: less the profile's */
+            vx -= ds_ed_streaming(e, d->y + d->vy * (now - d->t));
         k += m * (vx * vx + vy * vy);
         px += m * vx;
         py += m * vy;
@@ -476,4 +496,5 @@ const ds_integrator_ops ds_event_driven_ops = {
     .widen = ds_ed_widen,
     .kick = ds_ed_kick,
     .take_rules = ds_ed_take_rules,
+    .shear = ds_ed_shear,
 };

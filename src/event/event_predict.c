@@ -55,16 +55,50 @@ static inline void boundary_event(const ds_events *e, const ed_disk *d, uint32_t
     *best = earlier ? first : *best;
 }
 
-void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st)
+/* The four cells of row r, across the top (up) or bottom edge of a
+ * sheared box, that a disk in `column` may meet while the shear's cell
+ * count stays: the image above stands shift = k w + f along (w the cell
+ * width, k = shear_cell modulo the columns, 0 <= f <= w until the count
+ * moves), so a partner within contact (less than w) of the disk through
+ * it has its centre in columns column - k - 2 to column - k + 1; through
+ * the image below, which stands -shift along, column + k - 1 to column +
+ * k + 2. Each cell carries the image's shift (plus the width for each
+ * time the column wrapped) and its speed. */
+static void sheared_row(const ds_events *e, uint32_t column, uint32_t r, int up, double sy,
+                        double now, ds_ed_stencil_cells *st)
+{
+    const ds_cells *cells = &e->cells;
+    const int64_t nx = (int64_t)cells->nx;
+    double turns;
+    const double shift = ds_ed_shift(e, now, &turns);
+    const int64_t k = ((e->shear_cell % nx) + nx) % nx;
+    const int64_t first = up ? (int64_t)column - k - 2 : (int64_t)column + k - 1;
+    for (int64_t j = 0; j < 4; ++j) {
+        const int64_t c = first + j;
+        const int64_t wraps = c >= 0 ? c / nx : -((-c + nx - 1) / nx);
+        st->cell[st->count] = ds_cells_index(cells, (uint32_t)(c - wraps * nx), r);
+        st->sx[st->count] = (up ? shift : -shift) + (double)wraps * e->box.side[0];
+        st->sy[st->count] = sy;
+        st->su[st->count++] = up ? e->box.shift_speed : -e->box.shift_speed;
+    }
+}
+
+void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, double now,
+                   ds_ed_stencil_cells *st)
 {
     const ds_cells *cells = &e->cells;
     st->count = 0;
     for (int oy = -1; oy <= 1; ++oy) {
         int64_t r = (int64_t)row + oy;
+        const int across = r < 0 || r >= (int64_t)cells->ny;
         double sy = 0.0;
         r = ds_box_cell_along(&e->box, 1, (long)r, (long)cells->ny, &sy);
         if (r < 0)
             continue;
+        if (across && e->lees_edwards) {
+            sheared_row(e, column, (uint32_t)r, oy > 0, sy, now, st);
+            continue;
+        }
         for (int ox = -1; ox <= 1; ++ox) {
             int64_t c = (int64_t)column + ox;
             double sx = 0.0;
@@ -73,7 +107,8 @@ void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_sten
                 continue;
             st->cell[st->count] = ds_cells_index(cells, (uint32_t)c, (uint32_t)r);
             st->sx[st->count] = sx;
-            st->sy[st->count++] = sy;
+            st->sy[st->count] = sy;
+            st->su[st->count++] = 0.0;
         }
     }
 }
@@ -83,7 +118,7 @@ void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_sten
  * unpredictable branches. */
 #define GATHER_CAP 64
 /* The 3 x 3 cells' slots fit at once (C99 has no static assertion). */
-typedef char gather_holds_nine_cells[9 * DS_CELL_SLOTS <= GATHER_CAP ? 1 : -1];
+typedef char gather_holds_a_stencil[DS_ED_STENCIL_MAX * DS_CELL_SLOTS <= GATHER_CAP ? 1 : -1];
 
 typedef struct predictor {
     const ds_events *e;
@@ -96,7 +131,7 @@ typedef struct predictor {
     uint64_t tested;
     uint32_t disk[GATHER_CAP + 1]; /* + 1: room to pad to an even count */
     uint8_t image[GATHER_CAP + 1]; /* index into sx, sy */
-    double sx[9], sy[9];
+    double sx[DS_ED_STENCIL_MAX], sy[DS_ED_STENCIL_MAX], su[DS_ED_STENCIL_MAX];
 } predictor;
 
 /* Pair times: when disk d (at time now) and disk p (at its own time, its
@@ -156,7 +191,11 @@ static inline void test_gathered(predictor *pr, int shifted, int mixed)
         }
         rx = ds_x2_sub(rx, dx);
         ry = ds_x2_sub(ry, dy);
-        const ds_x2 vx = ds_x2_sub(pvx, dvx), vy = ds_x2_sub(pvy, dvy);
+        /* A sheared image's speed (0 elsewhere: the same difference). */
+        const ds_x2 ivx =
+            shifted ? ds_x2_add(pvx, ds_x2_load_pair(&pr->su[pr->image[j]], &pr->su[pr->image[j + 1]]))
+                    : pvx;
+        const ds_x2 vx = ds_x2_sub(ivx, dvx), vy = ds_x2_sub(pvy, dvy);
         const ds_x2 b = ds_x2_add(ds_x2_mul(rx, vx), ds_x2_mul(ry, vy));
         ds_x2 contact2 = sigma2;
         if (mixed) {
@@ -301,7 +340,7 @@ double ds_ed_predict_growing(ds_events *e, uint32_t i)
     else
         boundary_event(e, d, i, now, &best, &kind);
     ds_ed_stencil_cells st;
-    ds_ed_stencil(e, d->column, d->row, &st);
+    ds_ed_stencil(e, d->column, d->row, now, &st);
     uint64_t tested = 0;
     for (uint32_t c = 0; c < st.count; ++c) {
         const uint32_t *slot = ds_cells_slots(cells, st.cell[c]);
@@ -415,10 +454,11 @@ double ds_ed_predict(ds_events *e, uint32_t i)
         pr.tested -= 1u - found; /* the disk itself, if it was tested */
     } else {
         ds_ed_stencil_cells st;
-        ds_ed_stencil(e, d->column, d->row, &st);
+        ds_ed_stencil(e, d->column, d->row, pr.now, &st);
         for (uint32_t c = 0; c < st.count; ++c) {
             pr.sx[c] = st.sx[c];
             pr.sy[c] = st.sy[c];
+            pr.su[c] = st.su[c];
             gather_cell(&pr, cells, st.cell[c], (uint8_t)c);
         }
         test_candidates(&pr);

@@ -102,6 +102,17 @@ struct ds_events {
     double restitution, wall_restitution, contact_time;
     double field[2];
     double *last_hit;
+    /* Lees-Edwards (a sheared periodic box, ds_sim_set_shear): nonzero
+     * once a shear was set. The image above then stands offset +
+     * box.shift_speed t further along x at integrator time t (offset
+     * unwrapped; box.shift is its value modulo the width, at the time the
+     * disks were last shown), and the boundary rows' stencils reach
+     * across the top and bottom to the columns shear_cell whole cell
+     * widths along, which the shear protocol's moments move one at a
+     * time (ds_ed_shear). */
+    int lees_edwards;
+    double offset;
+    int64_t shear_cell;
 };
 typedef struct ds_events ds_events;
 
@@ -152,15 +163,104 @@ static inline int ds_ed_leaves_up(const ds_events *e, const ed_disk *d, int axis
     return ds_ed_lab_coordinate(e, d, axis) > ((axis ? d->row : d->column) + 0.5) * w;
 }
 
-/* The cells around (column, row): up to 9, each with the shift of the
- * image it stands for (a periodic box), or fewer at walls. */
+/* The image above's offset along x at integrator time t, unwrapped, and
+ * modulo the width into [0, width) with the whole widths in *turns: the
+ * one function every part takes it from, so that they agree to the bit. */
+static inline double ds_ed_offset(const ds_events *e, double t)
+{
+    return e->offset + e->box.shift_speed * t;
+}
+
+static inline double ds_ed_shift(const ds_events *e, double t, double *turns)
+{
+    const double o = ds_ed_offset(e, t), width = e->box.side[0];
+    double w = floor(o / width), s = o - w * width;
+    if (s >= width) { /* rounding */
+        s -= width;
+        w += 1.0;
+    } else if (s < 0.0) {
+        s += width;
+        w -= 1.0;
+    }
+    *turns = w;
+    return s;
+}
+
+/* Whole widths (a double from ds_ed_shift) as an image count's change,
+ * modulo 2^32 as the counts wrap. */
+static inline uint32_t ds_turns_u32(double turns)
+{
+    const double t = fmod(turns, 4294967296.0);
+    return (uint32_t)(int64_t)(t == t ? t : 0.0);
+}
+
+/* The box as it stands at integrator time t: its images' shift then. */
+static inline ds_box ds_ed_box_at(const ds_events *e, double t)
+{
+    ds_box b = e->box;
+    if (e->lees_edwards) {
+        double turns;
+        b.shift = ds_ed_shift(e, t, &turns);
+    }
+    return b;
+}
+
+/* The shear's streaming velocity along x at height y (the profile whose
+ * slope is the rate, 0 at mid-height), for a disk of a sheared box. */
+static inline double ds_ed_streaming(const ds_events *e, double y)
+{
+    return e->box.shift_speed / e->box.side[1] * (y - 0.5 * e->box.side[1]);
+}
+
+/* The separation (*rx, *ry) of two disks at t to its nearest image, and
+ * in a sheared box their relative velocity along x *dvx that of the
+ * images that meet, as they stand and move at t. */
+static inline void ds_ed_nearest(const ds_events *e, double t, double *rx, double *ry, double *dvx)
+{
+    if (e->lees_edwards) {
+        const ds_box box = ds_ed_box_at(e, t);
+        ds_box_nearest_moving(&box, rx, ry, dvx);
+    } else {
+        ds_box_nearest(&e->box, rx, ry);
+    }
+}
+
+/* A sheared box's images as they stand at t into the simulation's box
+ * (ds_sim_get_shear_shift, _offset); nothing without shear. */
+static inline void ds_ed_show_shear(ds_sim *sim, const ds_events *e, double t)
+{
+    if (!e->lees_edwards)
+        return;
+    sim->world.box.shift = ds_ed_box_at(e, t).shift;
+    sim->world.box.offset = ds_ed_offset(e, t);
+}
+
+/* Lees-Edwards (sheared.c): a crossing of the top (up) or bottom at t; the
+ * stress tally's shear terms at a run's start and after a collision of i
+ * and j (across: through the top or bottom; before[], v0[]: the kinetic
+ * tensor and the pair's velocities before it); the peculiar velocities
+ * scaled at now; the table's shear service (core.h). */
+void ds_ed_cross_sheared(ds_sim *sim, ds_events *e, uint32_t i, double t, int up);
+void ds_ed_start_shear_tally(ds_sim *sim, const ds_events *e);
+void ds_ed_sheared_collision(ds_tally *tally, const ds_events *e, uint32_t i, uint32_t j,
+                             int across, const double before[3], const double v0[4]);
+void ds_ed_scale_peculiar(ds_sim *sim, ds_events *e, double now, double factor);
+double ds_ed_shear(ds_sim *sim, double t, double speed, int moved);
+
+/* The cells around (column, row) at integrator time now: up to 9, or 11
+ * for a boundary row of a sheared box (its row, and four columns of the
+ * row across the edge, shear_cell along), each with the shift of the
+ * image it stands for (a periodic box) and that image's speed along x
+ * (a sheared box's images above and below), or fewer at walls. */
+#define DS_ED_STENCIL_MAX 12
 typedef struct ds_ed_stencil_cells {
     uint32_t count;
-    uint32_t cell[9];
-    double sx[9], sy[9];
+    uint32_t cell[DS_ED_STENCIL_MAX];
+    double sx[DS_ED_STENCIL_MAX], sy[DS_ED_STENCIL_MAX], su[DS_ED_STENCIL_MAX];
 } ds_ed_stencil_cells;
 
-void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, ds_ed_stencil_cells *st);
+void ds_ed_stencil(const ds_events *e, uint32_t column, uint32_t row, double now,
+                   ds_ed_stencil_cells *st);
 
 /* Whether the 3 x 3 cells around (column, row) are all inside the grid,
  * none across an edge (unsigned arithmetic: column 0 wraps to a huge
@@ -181,6 +281,12 @@ static inline int ds_ed_interior(const ds_cells *cells, const ed_disk *d)
  * the calendar from the records' times, at integrator time now. */
 ds_status ds_ed_alloc(ds_sim *sim);
 void ds_ed_start(ds_events *e, double now);
+
+/* Record k's disk at integrator time t (x, y, vx, vy into out), wrapped
+ * into box (ds_ed_box_at(e, t), turns its offset's whole widths), its
+ * image counts moved by what the wrap crossed (ed_state.c). */
+void ds_ed_show_disk(const ds_events *e, size_t k, double t, const ds_box *box, double turns,
+                     double out[4], int32_t image[2]);
 
 /* Writes every disk at integrator time t into the simulation's arrays
  * (record k is slot k), wrapped into a periodic box, with its image

@@ -192,6 +192,18 @@ static void fill_image(const ds_sim *sim, const ds_gsd_log *log, ds_state_writer
     *cols = 3;
 }
 
+/* The Lees-Edwards images' offset along x, unwrapped (the box's, 0
+ * without shear): a reader unfolds x + ix Lx + iy offset with it, where
+ * the box itself stays rectangular (HOOMD's tilt xy would shear the frame
+ * the positions are in, which disksim's is not). */
+static void fill_shear_offset(const ds_sim *sim, const ds_gsd_log *log, ds_state_writer *w,
+                              uint64_t *rows, uint32_t *cols)
+{
+    (void)log;
+    ds_put_f64(w, sim->world.box.offset);
+    *rows = *cols = 1;
+}
+
 /* The logged values, one scalar each. */
 #define GSD_LOG_FILL(name, put, value)                                                             \
     static void fill_##name(const ds_sim *sim, const ds_gsd_log *log, ds_state_writer *w,          \
@@ -239,6 +251,7 @@ const ds_gsd_chunk ds_gsd_chunks[] = {
     {"log/disksim/virial_pressure", DS_GSD_DOUBLE, 1, fill_virial_pressure},
     {"log/disksim/psi6", DS_GSD_DOUBLE, 1, fill_psi6},
     {"log/disksim/area_fraction", DS_GSD_DOUBLE, 1, fill_area_fraction},
+    {"log/disksim/shear_offset", DS_GSD_DOUBLE, 1, fill_shear_offset},
 };
 typedef char ds_gsd_chunks_all_counted
     [sizeof ds_gsd_chunks / sizeof ds_gsd_chunks[0] == DS_GSD_CHUNK_COUNT ? 1 : -1];

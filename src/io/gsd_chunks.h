@@ -44,7 +44,7 @@ typedef struct ds_gsd_chunk {
 /* Every chunk, in the order of the file's name list: a chunk's id is its
  * row. GSD sorts the index by frame, then id, so a frame's chunks are
  * written in this order. */
-#define DS_GSD_CHUNK_COUNT 21
+#define DS_GSD_CHUNK_COUNT 22
 extern const ds_gsd_chunk ds_gsd_chunks[DS_GSD_CHUNK_COUNT];
 
 /* Bytes the largest chunk of sim takes. */

@@ -29,8 +29,8 @@
 #define XYZ_IMAGE_PROPERTY ":map_shift:I:3"
 #define XYZ_IMAGE_MAX (2 * 12 + 2) /* " -2147483648" twice, " 0" */
 
-/* Count line, and a comment line of fixed text plus four numbers. */
-#define XYZ_HEADER_MAX (32 + 200 + 4 * DS_FIELD_MAX)
+/* Count line, and a comment line of fixed text plus five numbers. */
+#define XYZ_HEADER_MAX (32 + 220 + 5 * DS_FIELD_MAX)
 /* A disk's line: its kind's name, six fixed fields, three zeros, the
  * radius and the mass twice, the images, each with a space. */
 #define XYZ_LINE_MAX                                                                               \
@@ -51,7 +51,7 @@ size_t ds_xyz_get_size(const ds_sim *sim)
 /* The count and comment lines; returns their length. */
 static size_t format_header(const ds_sim *sim, char *out)
 {
-    char box[32], box_y[32], height[32], time[DS_FIELD_MAX];
+    char box[32], box_y[32], height[32], time[DS_FIELD_MAX], shear[48] = "";
     const ds_world *w = &sim->world;
     ds_format_shortest(box, sizeof box, w->box.side[0]);
     ds_format_shortest(box_y, sizeof box_y, w->box.side[1]);
@@ -63,11 +63,18 @@ static size_t format_header(const ds_sim *sim, char *out)
     char pbc[6] = "F F F";
     pbc[0] = ds_box_periodic(&w->box, 0) ? 'T' : 'F';
     pbc[2] = ds_box_periodic(&w->box, 1) ? 'T' : 'F';
-    int len =
-        snprintf(out, XYZ_HEADER_MAX,
-                 "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
-                 "%s Time=%s pbc=\"%s\"\n",
-                 w->n, box, box_y, height, sim->disks.ix ? XYZ_IMAGE_PROPERTY : "", time, pbc);
+    /* A sheared box (Lees-Edwards) names its image above's offset along
+     * x, unwrapped: the unwrapped centre is pos + map_shift x the sides +
+     * iy shear_offset along x. The cell stays rectangular. */
+    if (w->box.shift_speed != 0.0 || w->box.offset != 0.0) {
+        memcpy(shear, " shear_offset=", 15);
+        ds_format_shortest(shear + 14, sizeof shear - 14, w->box.offset);
+    }
+    int len = snprintf(out, XYZ_HEADER_MAX,
+                       "%zu\nLattice=\"%s 0 0 0 %s 0 0 0 %s\" Properties=" XYZ_PROPERTIES
+                       "%s Time=%s pbc=\"%s\"%s\n",
+                       w->n, box, box_y, height, sim->disks.ix ? XYZ_IMAGE_PROPERTY : "", time, pbc,
+                       shear);
     return len > 0 && len < XYZ_HEADER_MAX ? (size_t)len : 0;
 }
 

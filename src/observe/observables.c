@@ -108,6 +108,25 @@ double ds_sim_get_virial_pressure(const ds_sim *sim)
  * longer conserved, and its share P^2 / (2 M) averages kT, so K_int / (N
  * - 1) still averages kT). An integrator that knows its temperature
  * otherwise (a sampler with no velocities) says so through its table. */
+/* A sheared box's kinetic energy and momentum of the peculiar
+ * velocities, the velocity less the profile's rate (y - H/2) along x:
+ * the heat, not the flow. */
+static void peculiar(const ds_sim *sim, ds_kinetic *k)
+{
+    const ds_disks *d = &sim->disks;
+    const double height = sim->world.box.side[1], rate = sim->world.box.shift_speed / height;
+    double e = 0.0, px = 0.0, py = 0.0;
+    for (size_t i = 0; i < d->n; ++i) {
+        const double m = d->m ? d->m[i] : 1.0, cx = d->vx[i] - rate * (d->y[i] - 0.5 * height);
+        e += m * (cx * cx + d->vy[i] * d->vy[i]);
+        px += m * cx;
+        py += m * d->vy[i];
+    }
+    k->k = 0.5 * e;
+    k->px = px;
+    k->py = py;
+}
+
 double ds_sim_get_temperature(const ds_sim *sim)
 {
     if (!sim || sim->world.n == 0)
@@ -124,6 +143,8 @@ double ds_sim_get_temperature(const ds_sim *sim)
         for (size_t i = 0; i < sim->disks.n; ++i)
             k.mass += sim->disks.m[i];
     }
+    if (sim->world.box.shift_speed != 0.0)
+        peculiar(sim, &k);
     return ds_kinetic_temperature(&sim->world.box, sim->world.n, &k);
 }
 

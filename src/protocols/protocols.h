@@ -3,7 +3,8 @@
  * its dynamics, each a table of hooks (core/protocol.h) and a setter the
  * public API calls. growth.c: the Lubachevsky-Stillinger compression;
  * drive.c: white-noise driving; thermostat.c: a heat bath (Andersen's,
- * isokinetic); barostat.c: Monte Carlo moves of the box at a pressure.
+ * isokinetic); barostat.c: Monte Carlo moves of the box at a pressure;
+ * shear.c: Lees-Edwards boundaries.
  * Not installed. */
 #ifndef DS_PROTOCOLS_H
 #define DS_PROTOCOLS_H
@@ -53,5 +54,14 @@ ds_status ds_barostat_start(ds_sim *sim, double pressure, uint64_t every, double
 /* The pressure set (0 without a barostat) and the fraction of the area
  * moves accepted since (0 before the first). */
 double ds_barostat_get(const ds_sim *sim, double *acceptance);
+
+extern const ds_protocol_ops ds_shear_ops;
+
+/* Lees-Edwards boundaries at rate (dv_x / dy, checked by the caller) from
+ * now on, set again: the images go on from where they stand at the new
+ * speed, and the disks take the change of the profile. DS_ERR_NOMEM with
+ * nothing changed. The rate installed (0 without). */
+ds_status ds_shear_start(ds_sim *sim, double rate);
+double ds_shear_rate(const ds_sim *sim);
 
 #endif

@@ -92,9 +92,11 @@ ds_status ds_sim_get_unwrapped(const ds_sim *sim, double *xy, ds_error *err)
         return refuse_null(err, sim ? "xy" : "sim");
     const ds_disks *a = &sim->disks;
     const double box_x = sim->world.box.side[0], box_y = sim->world.box.side[1];
+    /* A sheared box's image above stands offset along x (protocols.h). */
+    const double offset = sim->world.box.offset;
     for (size_t k = 0; k < a->n; ++k) {
         const size_t i = a->id[k];
-        xy[2 * i] = a->ix ? a->x[k] + (double)a->ix[k] * box_x : a->x[k];
+        xy[2 * i] = a->ix ? a->x[k] + (double)a->ix[k] * box_x + (double)a->iy[k] * offset : a->x[k];
         xy[2 * i + 1] = a->iy ? a->y[k] + (double)a->iy[k] * box_y : a->y[k];
     }
     return DS_OK;

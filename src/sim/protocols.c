@@ -73,6 +73,9 @@ ds_status ds_sim_set_growth(ds_sim *sim, double rate, double until_eta, double u
         return ds_refuse(err, DS_ERR_ARG, "drive", ds_drive_strength(sim), 0.0,
                          "drive = %g: growth takes out the heat a drive puts in (stop it first)",
                          ds_drive_strength(sim));
+    if (rate > 0.0 && ds_protocols_get(sim, DS_PROTOCOL_SHEAR))
+        return ds_refuse(err, DS_ERR_ARG, "shear", ds_shear_rate(sim), NAN,
+                         "shear: growth needs a box at rest, not a sheared one");
     /* Growth takes out its own heat, in a box of its own. */
     if (rate > 0.0 && (ds_protocols_get(sim, DS_PROTOCOL_THERMOSTAT) ||
                        ds_protocols_get(sim, DS_PROTOCOL_BAROSTAT)))
@@ -213,6 +216,10 @@ ds_status ds_sim_set_thermostat(ds_sim *sim, ds_thermostat kind, double kt, doub
                          "thermostat = %s: a growth is growing, and takes out its own heat: stop "
                          "it first (rate 0)",
                          ds_thermostat_name(kind));
+    if (kind == DS_THERMOSTAT_ANDERSEN && ds_shear_rate(sim) != 0.0)
+        return ds_refuse(err, DS_ERR_ARG, "thermostat", (double)kind, NAN,
+                         "thermostat = andersen draws velocities about rest, not the shear's "
+                         "profile: use the isokinetic one, which scales the peculiar velocities");
     ds_status st = check_kt(sim, kind, &kt, err);
     if (st == DS_OK)
         st = check_rate_of(sim, kind, kt, &collision_rate, err);
@@ -277,6 +284,9 @@ ds_status ds_sim_set_barostat(ds_sim *sim, double pressure, uint64_t every, doub
         ds_protocols_remove(sim, DS_PROTOCOL_BAROSTAT);
         return DS_OK;
     }
+    if (ds_protocols_get(sim, DS_PROTOCOL_SHEAR))
+        return ds_refuse(err, DS_ERR_ARG, "shear", NAN, NAN,
+                         "shear: a sheared box cannot change its sides");
     ds_status st = check_barostat(sim, pressure, max_step, err);
     if (st != DS_OK)
         return st;
@@ -307,4 +317,66 @@ double ds_sim_get_barostat_acceptance(const ds_sim *sim)
     if (sim)
         (void)ds_barostat_get(sim, &acceptance);
     return acceptance;
+}
+
+/* ------------------------------------------------------------------ */
+/* Shear                                                                */
+/* ------------------------------------------------------------------ */
+
+ds_status ds_sim_set_shear(ds_sim *sim, double rate, ds_error *err)
+{
+    ds_error_clear(err);
+    if (!sim)
+        return ds_refuse(err, DS_ERR_ARG, "sim", NAN, NAN, "sim: NULL");
+    const ds_world *w = &sim->world;
+    const double height = w->box.side[1];
+    if (!isfinite(rate))
+        return ds_refuse(err, DS_ERR_ARG, "rate", rate, NAN,
+                         "rate = %g must be a finite shear rate dv_x/dy (0 stops the images)",
+                         rate);
+    if (fabs(rate) * w->dt > DS_SHEAR_MAX_STRAIN_PER_STEP)
+        return ds_refuse(err, DS_ERR_ARG, "rate", rate, DS_SHEAR_MAX_STRAIN_PER_STEP / w->dt,
+                         "rate = %g shears %g per step (dt = %g): at most %g, so that a heat bath "
+                         "at the steps' ends can hold the temperature",
+                         rate, fabs(rate) * w->dt, w->dt, DS_SHEAR_MAX_STRAIN_PER_STEP);
+    if (fabs(rate) * height > 0.25 * DS_VELOCITY_MAX)
+        return ds_refuse(err, DS_ERR_ARG, "rate", rate, 0.25 * DS_VELOCITY_MAX / height,
+                         "rate = %g moves the images at %g, past %g: a disk crossing to them "
+                         "would outrun the speed limit %g",
+                         rate, fabs(rate) * height, 0.25 * DS_VELOCITY_MAX, DS_VELOCITY_MAX);
+    if (!ds_box_periodic(&w->box, 0) || !ds_box_periodic(&w->box, 1))
+        return ds_refuse(err, DS_ERR_ARG, "boundary", NAN, NAN,
+                         "boundary = %s: a shear needs a box periodic along both axes",
+                         ds_boundary_name(w->boundary));
+    if (!sim->integrator->shear)
+        return ds_refuse(err, DS_ERR_ARG, "integrator", NAN, NAN,
+                         "integrator = %s cannot shear its box (the event-driven one can)",
+                         sim->integrator->name);
+    if (ds_sim_get_thermostat(sim) == DS_THERMOSTAT_ANDERSEN)
+        return ds_refuse(err, DS_ERR_ARG, "thermostat", NAN, NAN,
+                         "thermostat = andersen draws velocities about rest, not the shear's "
+                         "profile: use the isokinetic one, which scales the peculiar velocities");
+    if (ds_sim_get_barostat_pressure(sim) > 0.0)
+        return ds_refuse(err, DS_ERR_ARG, "barostat", NAN, NAN,
+                         "barostat: a box that changes its sides cannot be sheared (remove it "
+                         "first)");
+    if (growing(sim))
+        return ds_refuse(err, DS_ERR_ARG, "growth", NAN, NAN,
+                         "growth: a growth is growing (stop it first)");
+    if (ds_shear_start(sim, rate) != DS_OK)
+        return ds_refuse(err, DS_ERR_NOMEM, "rate", rate, NAN, "rate = %g: no memory for the shear",
+                         rate);
+    return DS_OK;
+}
+
+double ds_sim_get_shear(const ds_sim *sim) { return sim ? ds_shear_rate(sim) : 0.0; }
+
+double ds_sim_get_shear_shift(const ds_sim *sim)
+{
+    return sim && ds_protocols_get(sim, DS_PROTOCOL_SHEAR) ? sim->world.box.shift : 0.0;
+}
+
+double ds_sim_get_shear_offset(const ds_sim *sim)
+{
+    return sim && ds_protocols_get(sim, DS_PROTOCOL_SHEAR) ? sim->world.box.offset : 0.0;
 }

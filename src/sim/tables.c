@@ -23,6 +23,7 @@ const ds_protocol_ops *const ds_protocol_table[DS_PROTOCOL_KIND_COUNT] = {
     [DS_PROTOCOL_DRIVE] = &ds_drive_ops,
     [DS_PROTOCOL_THERMOSTAT] = &ds_thermostat_ops,
     [DS_PROTOCOL_BAROSTAT] = &ds_barostat_ops,
+    [DS_PROTOCOL_SHEAR] = &ds_shear_ops,
 };
 
 static const ds_writer_ops *const writers[DS_FORMAT_COUNT] = {

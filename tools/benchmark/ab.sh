@@ -2,14 +2,15 @@
 # SPDX-License-Identifier: MIT
 # Compares two builds of the library in one process (2.x or 3.x each):
 #
-#   tools/benchmark/ab.sh REV_A REV_B [N [ROUNDS [event|step|seed]]]
+#   tools/benchmark/ab.sh REV_A REV_B [N [ROUNDS [event|step|seed|chain]]]
 #
 # builds libdisksim.a at two git revisions (or "." for the working tree as
 # it is), gives every global symbol of each an A_ or B_ prefix (objcopy),
 # links both into one program (tools/benchmark/ab_events.c) and times N disks
 # (default 10^6) in ROUNDS (default 21) alternating rounds: event-driven at
 # area fraction 0.5, ~10^6 collisions a round (event, the default); the
-# time step at area fraction 0.1 (step); or the seed case (seed, N unused). Two separate runs a minute apart differ here
+# time step at area fraction 0.1 (step); the seed case (seed, N unused); or
+# event chains at area fraction 0.70, periodic, ns of CPU per lifting (chain). Two separate runs a minute apart differ here
 # by 10% and more; within one process the rounds see the same machine.
 # The same build against itself gave 1.01 and 1.04 (quartiles 0.96 to 1.08)
 # at 10^6 over 21 rounds: nothing under ~5% stands out from the noise.

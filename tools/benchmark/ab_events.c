@@ -11,13 +11,18 @@
  * - step: the time step at area fraction 0.1 (the broad phase DS_BROADPHASE_AUTO
  *   picks: SAP up to ~4000 disks, strips beyond), rounds of ~2 x 10^7
  *   disk-steps, ns of collision processing per disk-step;
- * - seed: the seed case, 400 disks of R = 5, rounds of 5000 steps.
+ * - seed: the seed case, 400 disks of R = 5, rounds of 5000 steps;
+ * - chain (3.x only): event chains at area fraction 0.70, periodic, from
+ *   the lattice (tools/benchmark/bench_chain.c's case), rounds of ~5 x
+ *   10^6 liftings, ns of CPU time (the process's) per lifting.
  * Prints each side's median and the median of the per-round ratios B / A
  * with its quartiles. */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #if defined(AB_SIDE)
 #include "disk_sim.h"
@@ -46,6 +51,7 @@ void AB(ds_sim_destroy)(ds_sim *sim);
 #define sim_destroy AB(ds_sim_destroy)
 #define EVENT_DRIVEN DS_INTEGRATOR_EVENT_DRIVEN
 #define TIME_STEP DS_INTEGRATOR_TIME_STEP
+#define HAS_CHAIN 1
 #else
 ds_params AB(ds_default_params)(size_t n, double radius);
 ds_status AB(ds_create)(const ds_params *params, ds_sim **out);
@@ -61,6 +67,7 @@ void AB(ds_destroy)(ds_sim *sim);
 #define sim_destroy AB(ds_destroy)
 #define EVENT_DRIVEN DS_EVENT_DRIVEN
 #define TIME_STEP DS_TIME_STEP
+#define HAS_CHAIN 0
 #endif
 
 void *AB(ab_make)(size_t n, int kind);
@@ -75,8 +82,34 @@ static double radius_at(size_t n, double fraction)
     return sqrt(fraction * 1e6 / ((double)n * 3.14159265358979));
 }
 
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Liftings per step at area fraction 0.70 (as tools/benchmark/bench_chain.c). */
+static double lifts_per_step(size_t n) { return 0.04 * (double)n * sqrt((double)n / 1024.0); }
+
 void *AB(ab_make)(size_t n, int kind)
 {
+#if HAS_CHAIN
+    if (kind == 3) {
+        ds_params p = params_default(n, radius_at(n, 0.70));
+        p.integrator = DS_INTEGRATOR_EVENT_CHAIN;
+        p.boundary = DS_BOUNDARY_PERIODIC;
+        p.placement = DS_PLACEMENT_LATTICE;
+        ds_sim *sim = NULL;
+        if (sim_create(&p, &sim) != DS_OK)
+            return NULL;
+        sim_run(sim, (unsigned long)(10.0 * (double)n / lifts_per_step(n)) + 1);
+        return sim;
+    }
+#else
+    if (kind == 3)
+        return NULL;
+#endif
     ds_params p = params_default(n, radius_at(n, kind == 0 ? 0.5 : 0.1));
     if (kind == 2)
         p = params_default(400, 5.0);
@@ -91,6 +124,13 @@ void *AB(ab_make)(size_t n, int kind)
 double AB(ab_round)(void *s, size_t n, int kind)
 {
     ds_sim *sim = s;
+    if (kind == 3) {
+        const unsigned long steps = (unsigned long)(5e6 / lifts_per_step(n)) + 1;
+        const uint64_t c0 = collision_count(sim);
+        const double t0 = cpu_now();
+        sim_run(sim, steps);
+        return 1e9 * (cpu_now() - t0) / (double)(collision_count(sim) - c0);
+    }
     if (kind) {
         const unsigned long steps = kind == 2 ? 5000 : (unsigned long)(2e7 / (double)n) + 1;
         const double s0 = collision_seconds(sim);
@@ -128,13 +168,13 @@ int main(int argc, char **argv)
 {
     const size_t n = argc > 1 ? strtoul(argv[1], NULL, 10) : 0;
     const int rounds = argc > 2 ? atoi(argv[2]) : 0;
-    static const char *const kinds[] = {"event", "step", "seed"};
+    static const char *const kinds[] = {"event", "step", "seed", "chain"};
     int kind = -1;
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 4; ++k)
         if (strcmp(argc > 3 ? argv[3] : "event", kinds[k]) == 0)
             kind = k;
     if (n < 2 || rounds < 1 || rounds > MAX_ROUNDS || kind < 0) {
-        fprintf(stderr, "usage: %s N ROUNDS [event|step|seed] (N >= 2, 1 <= ROUNDS <= %d)\n",
+        fprintf(stderr, "usage: %s N ROUNDS [event|step|seed|chain] (N >= 2, 1 <= ROUNDS <= %d)\n",
                 argv[0], MAX_ROUNDS);
         return 2;
     }
@@ -160,8 +200,10 @@ int main(int argc, char **argv)
     printf("%s, N = %zu, %d rounds: A %.1f ns per %s, B %.1f (medians); B / A %.3f "
            "(quartiles %.3f, %.3f)\n",
            kinds[kind], kind == 2 ? (size_t)400 : n, rounds, na[rounds / 2],
-           kind ? "disk-step" : "collision", nb[rounds / 2], ratio[rounds / 2], ratio[rounds / 4],
-           ratio[(3 * rounds) / 4]);
+           kind == 3 ? "lifting"
+           : kind    ? "disk-step"
+                     : "collision",
+           nb[rounds / 2], ratio[rounds / 2], ratio[rounds / 4], ratio[(3 * rounds) / 4]);
     A_ab_done(a);
     B_ab_done(b);
     return 0;

@@ -7,6 +7,7 @@
  *   tools/bench scale N    one scaling case, e.g. under /usr/bin/time -v
  *   tools/bench events N [C]  one event-driven case (area fraction 0.5),
  *                          likewise, timed after ~C collisions per disk
+ *   tools/bench chain N    one event-chain case (area fraction 0.70, periodic)
  *
  * Ratios are between figures measured in the same run, so they are less
  * sensitive to the machine than the absolute times. */
@@ -255,8 +256,10 @@ int main(int argc, char **argv)
     if ((argc == 3 || argc == 4) && strcmp(argv[1], "events") == 0)
         return bench_events_one(strtoul(argv[2], NULL, 10), argc == 4 ? atof(argv[3]) : 1.0) ? 0
                                                                                              : 1;
+    if (argc == 3 && strcmp(argv[1], "chain") == 0)
+        return bench_chain_one(strtoul(argv[2], NULL, 10)) ? 0 : 1;
     if (argc != 1) {
-        fprintf(stderr, "usage: bench [scale N | events N [collisions per disk]]\n");
+        fprintf(stderr, "usage: bench [scale N | events N [collisions per disk] | chain N]\n");
         return 2;
     }
     double started = ds_timer_now();
@@ -384,7 +387,7 @@ int main(int argc, char **argv)
                w == 0 ? "the current directory" : where[w], median(files_s[w], ROUNDS),
                all_ratio[w]);
 
-    if (!bench_events())
+    if (!bench_events() || !bench_chain())
         return 1;
 
     printf("\npeak RSS of this process %ld KB (the N = 10^6 cases); bench took %.0f s\n",

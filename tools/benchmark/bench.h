@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* What the sections of tools/bench share (bench_stats.c), and the
- * event-driven section (bench_events.c) that bench.c runs. */
+ * event-driven and event-chain sections (bench_events.c, bench_chain.c)
+ * that bench.c runs. */
 #ifndef DS_BENCH_H
 #define DS_BENCH_H
 
@@ -23,5 +24,10 @@ int bench_events(void);
 /* `bench events N [C]`: one collision-rate case at area fraction 0.5,
  * timed after about C collisions per disk (1 by default). */
 int bench_events_one(unsigned long n, double per_disk);
+
+/* Section 6, event-chain Monte Carlo (bench_chain.c); 0 on failure. */
+int bench_chain(void);
+/* `bench chain N`: one event-chain case at area fraction 0.70, periodic. */
+int bench_chain_one(unsigned long n);
 
 #endif
