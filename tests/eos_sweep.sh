@@ -6,6 +6,9 @@
 #  - tools/analysis/eos.sh -j 2 and -j 1 give the same tables, in the
 #    directory named by the sweep's parameters, with a '#' line naming
 #    the columns that numpy.loadtxt skips and numpy.genfromtxt reads;
+#  - with INTEGRATOR chain, the same points run by event chains in a
+#    directory of their own, each point's blocks kept beside its row, and
+#    plot_eos.plt draws them beside the dynamics' (chains=);
 #  - a second sweep with other parameters in the same directory keeps
 #    both results; the same sweep again resumes: it keeps every point done
 #    and runs only the missing ones; a directory whose points differ is
@@ -204,6 +207,50 @@ submit $sweep || status=$?
     [ ! -s "$FAKE_SLURM/submitted" ] ||
     fail "a submission while jobs are queued was not refused: $(cat "$work/slurm/submit.txt")"
 rm "$FAKE_SLURM/queued"
+
+# The same sweep with event chains: a directory of its own beside the
+# dynamics' (whose name and points are those before the integrator was a
+# choice, so that old directories resume), every row made by chains, and
+# each point's blocks beside its row, as many as it runs, whose mean is the
+# row's Z (to the six decimals both are printed with, and the rounding of
+# each block: 1e-6).
+mkdir "$work/chain"
+# shellcheck disable=SC2086
+eos "$work/chain" $sweep chain || fail "eos.sh with chains failed: $(cat "$work/chain/err.txt")"
+chain_dir="$work/chain/eos.chain.N64.relax1.blocks2x1"
+[ -s "$chain_dir/eos.dat" ] || fail "the chain sweep wrote no $chain_dir/eos.dat: $(ls "$work/chain")"
+awk '!/^#/ && ($2 != 64 || $3 != "chain" || $5 != "periodic") { exit 1 }' "$chain_dir/eos.dat" ||
+    fail "the chain sweep's eos.dat has rows not made by chains"
+[ "$(sh "$analysis/eos_point.sh" --name $sweep)" = "$name" ] &&
+    [ "$(sh "$analysis/eos_point.sh" --name $sweep event)" = "$name" ] ||
+    fail "the dynamics' sweep is no longer named $name"
+[ "$(sh "$analysis/eos_point.sh" --list $sweep event)" = "$(cat "$work/j1/$name/sweep.txt")" ] ||
+    fail "the dynamics' points are listed differently from before"
+for k in 0 8 16; do
+    row="$chain_dir/points/point_$k.dat"
+    # shellcheck disable=SC2086
+    blocks=$(sh "$analysis/eos_point.sh" --list $sweep chain | awk -v k="$k" '$1 == k { print $5 }')
+    awk -v z="$(awk '{ print $6 }' "$row")" -v b="$blocks" '{ s += $1; n++ }
+        END { exit !(n == b && (s / n - z) ^ 2 < 2e-6 ^ 2) }' "$chain_dir/points/point_$k.blocks" ||
+        fail "point $k's blocks are not its row's: $(cat "$chain_dir/points/point_$k.blocks") against $(cat "$row")"
+done
+if command -v gnuplot >/dev/null 2>&1; then
+    # The chains drawn beside the dynamics, named in the legend and title.
+    (cd "$work/j1/$name" && gnuplot -e "chains='$chain_dir/eos.dat'; out='both.png'; formats='svg'" \
+        "$analysis/plot_eos.plt") 2>"$work/chain/plot.err" ||
+        fail "plot_eos.plt with chains= failed: $(cat "$work/chain/plot.err")"
+    grep -q "disksim, event chains, N = 64" "$work/j1/$name/both.svg" &&
+        grep -q "event-driven and event chains" "$work/j1/$name/both.svg" ||
+        fail "the plot with chains= does not name them"
+fi
+# An integrator the sweep does not run is refused before anything is made.
+status=0
+# shellcheck disable=SC2086
+eos "$work/chain" $sweep step || status=$?
+[ "$status" -eq 2 ] && grep -q "INTEGRATOR must be event or chain, got 'step'" "$work/chain/err.txt" ||
+    fail "an integrator step was not refused: $status $(cat "$work/chain/err.txt")"
+[ ! -e "$work/chain/eos.step.N64.relax1.blocks2x1" ] && [ "$(ls "$work/chain" | grep -c '^eos\.')" -eq 1 ] ||
+    fail "a refused integrator left a directory: $(ls "$work/chain")"
 
 # A sweep whose points cannot run (N = 3: the disks do not fit) stops,
 # says which point failed, and writes no table and no plot.

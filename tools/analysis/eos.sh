@@ -28,15 +28,21 @@
 # naming the point and tools/pressure's reason, and no table is written;
 # the points that finished are kept for the next run.
 #
-#   sh tools/analysis/eos.sh [-j JOBS] [N] [RELAX] [BLOCKS] [BLOCK]
-#   defaults:            1      16384  50     15       10
+# INTEGRATOR chain runs every point with event-chain Monte Carlo instead
+# of the dynamics (the same canonical Z, from the chains' liftings;
+# docs/physics.md), in a directory of its own, eos.chain.N16384.relax...:
+# a time unit of chains costs less than one of dynamics, so give it
+# longer RELAX and BLOCK (docs/physics.md measures how long).
+#
+#   sh tools/analysis/eos.sh [-j JOBS] [N] [RELAX] [BLOCKS] [BLOCK] [INTEGRATOR]
+#   defaults:            1      16384  50     15       10      event
 set -eu
 # Where the other pieces are: in the checkout, the scripts beside this
 # file and tools/pressure one folder up; `make install` rewrites these two
 # lines with the installed places (docs/install.md).
 scripts=$(cd "$(dirname "$0")" && pwd)
 pressure=${PRESSURE:-$scripts/../pressure}
-usage="usage: ${0##*/} [-j JOBS] [N] [RELAX] [BLOCKS] [BLOCK] (JOBS >= 1)"
+usage="usage: ${0##*/} [-j JOBS] [N] [RELAX] [BLOCKS] [BLOCK] [INTEGRATOR] (JOBS >= 1)"
 case ${1:-} in
 --help | -h)
     cat <<EOF
@@ -44,10 +50,11 @@ $usage
 The hard-disk equation of state: 17 runs of tools/pressure (15 area
 fractions at N, 0.70 at N/4 and 4N), written to the directory
 eos.NN.relaxRELAX.blocksBLOCKSxBLOCK of the current directory; run again,
-it keeps the points done and runs the others.
+it keeps the points done and runs the others. INTEGRATOR is event (the
+dynamics) or chain (event-chain Monte Carlo, in eos.chain.NN...).
   -j JOBS   run JOBS points at a time, the longest first (default 1)
   --help    show this help and exit
-Defaults: N 16384, RELAX 50, BLOCKS 15, BLOCK 10. docs/sweeps.md has more.
+Defaults: N 16384, RELAX 50, BLOCKS 15, BLOCK 10, event. docs/sweeps.md has more.
 EOF
     exit 0
     ;;
@@ -67,27 +74,31 @@ n=${1:-16384}
 relax=${2:-50}
 blocks=${3:-15}
 block=${4:-10}
+integrator=${5:-event}
 point="$scripts/eos_point.sh"
 if [ ! -x "$pressure" ]; then
     echo "eos: $pressure is not built (run make)" >&2
     exit 1
 fi
 count=$(sh "$point" --count)
-dir=$(sh "$point" --name "$n" "$relax" "$blocks" "$block")
-state=$(sh "$point" --list "$n" "$relax" "$blocks" "$block" | sh "$scripts/sweep_dir.sh" "$dir")
+# The name alone first: an integrator eos_point.sh refuses stops the
+# sweep here, before a directory is made.
+dir=$(sh "$point" --name "$n" "$relax" "$blocks" "$block" "$integrator")
+state=$(sh "$point" --list "$n" "$relax" "$blocks" "$block" "$integrator" |
+    sh "$scripts/sweep_dir.sh" "$dir")
 # The programs the points run, by absolute paths, and the sweep's
 # arguments, for the points and for Slurm jobs that may finish this sweep
 # (tools/analysis/eos.sbatch reads them).
 pressure=$(cd "$(dirname "$pressure")" && pwd)/${pressure##*/}
 export PRESSURE="$pressure"
-printf 'scripts=%s\npressure=%s\narguments=%s %s %s %s\n' "$scripts" "$pressure" \
-    "$n" "$relax" "$blocks" "$block" >"$dir/run.txt"
+printf 'scripts=%s\npressure=%s\narguments=%s %s %s %s %s\n' "$scripts" "$pressure" \
+    "$n" "$relax" "$blocks" "$block" "$integrator" >"$dir/run.txt"
 
 # The points without a result, the longest first: the 4N point is the
 # longest, and started last it would keep one core busy while the others
 # wait.
 todo=""
-for k in $(sh "$point" --order "$n" "$relax" "$blocks" "$block"); do
+for k in $(sh "$point" --order "$n" "$relax" "$blocks" "$block" "$integrator"); do
     [ -s "$dir/points/point_$k.dat" ] || todo="$todo $k"
     rm -f "$dir/points/point_$k.dat.err" # a reason from an earlier run
 done
@@ -105,8 +116,8 @@ status=0
 if [ "$left" -gt 0 ]; then
     # shellcheck disable=SC2016 # $1 ... are the inner shell's, not ours
     for k in $todo; do echo "$k"; done | xargs -P "$jobs" -I '{}' sh -c \
-        'sh "$1" "$2" "$3" "$4" "$5" "$6" "$7" || exit 255' sh \
-        "$point" '{}' "$dir" "$n" "$relax" "$blocks" "$block" || status=$?
+        'sh "$1" "$2" "$3" "$4" "$5" "$6" "$7" "$8" || exit 255' sh \
+        "$point" '{}' "$dir" "$n" "$relax" "$blocks" "$block" "$integrator" || status=$?
 fi
 if [ "$status" -ne 0 ]; then
     failed=""

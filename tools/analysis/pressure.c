@@ -6,7 +6,7 @@
  *   pressure N ETA [--integrator step|event|chain] [--dt DT] [--periodic]
  *            [--lattice] [--box-y H] [--relax T] [--blocks B] [--block T]
  *            [--seed S] [--thermostat KIND] [--pressure BP]
- *            [--barostat-every K] [--memory]
+ *            [--barostat-every K] [--block-file FILE] [--memory]
  *
  * The N disks cover the area fraction ETA of the 1000 x H box (H = 1000
  * unless --box-y): R = sqrt(ETA 1000 H / (N pi)). After T time units of relaxation (default
@@ -31,7 +31,11 @@
  * ends with two more columns, the mean area fraction and its error: the
  * area fraction after every move (every K steps, a stretch at constant
  * area behind it), its error corrected for the samples' correlation by
- * blocking (the area forgets itself over hundreds of moves). With --memory it runs
+ * blocking (the area forgets itself over hundreds of moves). --block-file
+ * writes each block's Z to FILE, one a line, in order: the error above is
+ * honest only if neighbouring blocks are uncorrelated, which the series
+ * shows (their lag-1 correlation, or the error of the mean of pairs of
+ * blocks against that of the blocks). With --memory it runs
  * nothing and prints the bytes the simulation would allocate
  * (ds_memory_needed), which tools/analysis/eos.sbatch asks Slurm for. */
 #define _POSIX_C_SOURCE 200809L
@@ -48,7 +52,8 @@
 static const char usage_text[] =
     "usage: pressure N ETA [--integrator step|event|chain] [--dt DT] [--periodic] [--lattice]\n"
     "                [--box-y H] [--relax T] [--blocks B] [--block T] [--seed S]\n"
-    "                [--thermostat KIND] [--pressure BP] [--barostat-every K] [--memory]\n"
+    "                [--thermostat KIND] [--pressure BP] [--barostat-every K]\n"
+    "                [--block-file FILE] [--memory]\n"
     "Prints Z = P A / (N kT) of N disks covering the area fraction ETA of the\n"
     "1000 x H box, with the standard error of its mean over B blocks, as one line\n"
     "  eta N integrator dt boundary Z_virial error Z_walls error collisions seconds\n"
@@ -68,9 +73,12 @@ static const char usage_text[] =
     "  --pressure BP   the barostat at beta P sigma^2 = BP (periodic): the box moves,\n"
     "                  and the line ends with the mean area fraction and its error\n"
     "  --barostat-every K  a move of the box every K steps (default 10)\n"
+    "  --block-file FILE  write each block's Z_virial to FILE, one a line, to check\n"
+    "                  that the blocks are independent\n"
     "  --memory        run nothing: print the bytes the simulation would allocate\n"
     "  --help          show this help and exit\n"
-    "exit status: 0 success, 1 parameters the library refuses, 2 usage error\n";
+    "exit status: 0 success, 1 parameters the library refuses or a --block-file\n"
+    "             that cannot be written, 2 usage error\n";
 
 static void usage(void)
 {
@@ -88,6 +96,7 @@ typedef struct ensemble {
     ds_thermostat thermostat; /* DS_THERMOSTAT_NONE: constant energy */
     double pressure;          /* 0: a box of fixed sides */
     uint64_t every;           /* steps between moves of the box */
+    FILE *blocks;             /* each block's Z, or NULL */
 } ensemble;
 
 /* The blocks: Z of each (and with walls P A / K), and with a barostat the
@@ -112,7 +121,10 @@ static void run_blocks(ds_sim *sim, const ensemble *e, int blocks, uint64_t per_
             if (samples)
                 samples[taken++] = ds_sim_get_area_fraction(sim);
         }
-        add(virial, ds_sim_get_compressibility_factor(sim));
+        const double z = ds_sim_get_compressibility_factor(sim);
+        add(virial, z);
+        if (e->blocks)
+            fprintf(e->blocks, "%.6f\n", z);
         if (walls)
             add(wall, ds_sim_get_pressure(sim) * area / ds_sim_get_kinetic_energy(sim));
     }
@@ -137,7 +149,8 @@ int main(int argc, char **argv)
     p.box_y = 1000.0;
     double relax = 5.0, block = 1.0;
     int blocks = 20, memory = 0;
-    ensemble e = {DS_THERMOSTAT_NONE, 0.0, 10};
+    ensemble e = {DS_THERMOSTAT_NONE, 0.0, 10, NULL};
+    const char *block_file = NULL;
     for (int i = 3; i < argc; ++i) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--periodic") == 0) {
@@ -178,6 +191,8 @@ int main(int argc, char **argv)
             e.pressure = number(v, 1e-300, 1e9, "--pressure");
         else if (strcmp(a, "--barostat-every") == 0)
             e.every = (uint64_t)number(v, 1, 1e9, "--barostat-every");
+        else if (strcmp(a, "--block-file") == 0)
+            block_file = v;
         else
             usage();
     }
@@ -205,6 +220,13 @@ int main(int argc, char **argv)
         fprintf(stderr, "pressure: N = %zu at area fraction %g: %s\n", n, eta, why.message);
         return 1;
     }
+    /* Opened before the run, so that a path that cannot be written fails
+     * at once rather than after hours. */
+    if (block_file && !(e.blocks = fopen(block_file, "w"))) {
+        ds_sim_destroy(sim);
+        fprintf(stderr, "pressure: cannot write --block-file %s\n", block_file);
+        return 1;
+    }
     const double dt = ds_sim_get_dt(sim), t0 = ds_timer_now();
     const uint64_t per_block = (uint64_t)llround(block / dt);
     ds_sim_run(sim, (uint64_t)llround(relax / dt), NULL);
@@ -227,5 +249,9 @@ int main(int argc, char **argv)
         printf(" %.6f %.6f", eta_mean, eta_error);
     printf("\n");
     ds_sim_destroy(sim);
+    if (e.blocks && fclose(e.blocks) != 0) {
+        fprintf(stderr, "pressure: cannot write --block-file %s\n", block_file);
+        return 1;
+    }
     return 0;
 }
