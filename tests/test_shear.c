@@ -14,7 +14,8 @@
  * box, event-driven, the broad phase given, relaxed for `relax` steps. */
 static ds_sim *fluid(size_t n, double eta, ds_broadphase bp, uint64_t relax)
 {
-    ds_params p = ds_params_default(n, sqrt(eta * SIDE * SIDE / ((double)n * 3.14159265358979323846)));
+    ds_params p =
+        ds_params_default(n, sqrt(eta * SIDE * SIDE / ((double)n * 3.14159265358979323846)));
     p.boundary = DS_BOUNDARY_PERIODIC;
     p.integrator = DS_INTEGRATOR_EVENT_DRIVEN;
     p.placement = DS_PLACEMENT_LATTICE;
@@ -244,7 +245,8 @@ static void test_the_flow_is_the_linear_profile_of_the_rate(void **state)
     const double rate = 0.2;
     ds_sim *sim = fluid(400, 0.3, DS_BROADPHASE_AUTO, 1000);
     assert_int_equal(ds_sim_set_shear(sim, rate, NULL), DS_OK);
-    assert_int_equal(ds_sim_set_thermostat(sim, DS_THERMOSTAT_ISOKINETIC, 5000.0, 0.0, NULL), DS_OK);
+    assert_int_equal(ds_sim_set_thermostat(sim, DS_THERMOSTAT_ISOKINETIC, 5000.0, 0.0, NULL),
+                     DS_OK);
     assert_int_equal(ds_sim_run(sim, 2000, NULL), DS_OK);
     enum { BINS = 8, BLOCKS = 10 };
     const int frames = quick_mode() ? 10 : 40;

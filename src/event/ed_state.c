@@ -272,4 +272,3 @@ ds_status ds_ed_create(ds_sim *sim)
     ds_ed_start(e, 0.0);
     return DS_OK;
 }
-

@@ -121,8 +121,8 @@ static void read_law_2x(ds_ed_law *g, ds_reader *r, ds_legacy *legacy)
         r->failed = 1;
 }
 
-static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r,
-                             uint32_t version, ds_legacy *legacy, ds_error *err)
+static ds_status read_growth(ds_sim *sim, ds_events *e, double now, ds_reader *r, uint32_t version,
+                             ds_legacy *legacy, ds_error *err)
 {
     const size_t n = sim->world.n;
     const uint32_t has = ds_get_u32(r);
@@ -319,8 +319,7 @@ static ds_status check_records(const ds_sim *sim, ds_events *e, double now, ds_e
     return st == DS_OK ? DS_OK : ds_state_refuse(err, st, "no memory to check the disks");
 }
 
-ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
-                     ds_error *err)
+ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy, ds_error *err)
 {
     const size_t n = sim->world.n;
     if (ds_ed_alloc(sim) != DS_OK)

@@ -67,10 +67,10 @@ static void collide(ds_sim *sim, ds_events *e, uint32_t i, uint32_t j, double t)
     const double dvy = b->vy - a->vy;
     ds_ed_nearest(e, t, &rx, &ry, &dvx);
     const double approach = rx * dvx + ry * dvy;
-    /* For a sheared box's stress tally (sheared.c). */
-    const int across = e->lees_edwards && ry != b->y - a->y;
-    const double before[3] = {tally->kinetic[0], tally->kinetic[1], tally->kinetic[2]};
-    const double v0[4] = {a->vx, a->vy, b->vx, b->vy};
+    int across = 0; /* a sheared box's, for its stress tally (sheared.c) */
+    double before[3] = {0.0}, v0[4] = {0.0};
+    if (e->lees_edwards)
+        ds_ed_sheared_before(tally, a, b, ry, &across, before, v0);
     /* Rounding can leave a predicted pair a hair from approaching; then
      * there is nothing to exchange, and both are simply predicted again.
      * Restitution below 1 goes by the TC model (core/collide.h); the

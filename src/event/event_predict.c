@@ -193,8 +193,9 @@ static inline void test_gathered(predictor *pr, int shifted, int mixed)
         ry = ds_x2_sub(ry, dy);
         /* A sheared image's speed (0 elsewhere: the same difference). */
         const ds_x2 ivx =
-            shifted ? ds_x2_add(pvx, ds_x2_load_pair(&pr->su[pr->image[j]], &pr->su[pr->image[j + 1]]))
-                    : pvx;
+            shifted
+                ? ds_x2_add(pvx, ds_x2_load_pair(&pr->su[pr->image[j]], &pr->su[pr->image[j + 1]]))
+                : pvx;
         const ds_x2 vx = ds_x2_sub(ivx, dvx), vy = ds_x2_sub(pvy, dvy);
         const ds_x2 b = ds_x2_add(ds_x2_mul(rx, vx), ds_x2_mul(ry, vy));
         ds_x2 contact2 = sigma2;

@@ -235,6 +235,23 @@ static inline void ds_ed_show_shear(ds_sim *sim, const ds_events *e, double t)
     sim->world.box.offset = ds_ed_offset(e, t);
 }
 
+/* What ds_ed_sheared_collision needs of a pair a, b before their
+ * collision: whether it meets across the top or bottom (its separation
+ * ry along y was taken to another image), the kinetic tensor and the
+ * two velocities. */
+static inline void ds_ed_sheared_before(const ds_tally *t, const ed_disk *a, const ed_disk *b,
+                                        double ry, int *across, double before[3], double v0[4])
+{
+    *across = ry != b->y - a->y;
+    before[0] = t->kinetic[0];
+    before[1] = t->kinetic[1];
+    before[2] = t->kinetic[2];
+    v0[0] = a->vx;
+    v0[1] = a->vy;
+    v0[2] = b->vx;
+    v0[3] = b->vy;
+}
+
 /* Lees-Edwards (sheared.c): a crossing of the top (up) or bottom at t; the
  * stress tally's shear terms at a run's start and after a collision of i
  * and j (across: through the top or bottom; before[], v0[]: the kinetic
@@ -327,8 +344,7 @@ ds_status ds_ed_widen(ds_sim *sim, double until, int *rebuilt);
 /* A checkpoint of the integrator's state (event_checkpoint.c): the
  * table's save and load. */
 void ds_ed_save(const ds_sim *sim, ds_state_writer *w);
-ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy,
-                     ds_error *err);
+ds_status ds_ed_load(ds_sim *sim, ds_reader *r, uint32_t version, ds_legacy *legacy, ds_error *err);
 
 /* Finds disk i's earliest event from its state at its own time (event_predict.c):
  * records it in the disk and returns its time. */

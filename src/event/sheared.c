@@ -81,12 +81,12 @@ void ds_ed_sheared_collision(ds_tally *tally, const ds_events *e, uint32_t i, ui
         tally->shear_moment += ma * (a->vy - v0[1]) * (a->y - b->y);
     if (!across)
         return;
-    tally->kinetic[0] = before[0] + ma * (a->vx * a->vx - v0[0] * v0[0]) +
-                        mb * (b->vx * b->vx - v0[2] * v0[2]);
-    tally->kinetic[1] = before[1] + ma * (a->vy * a->vy - v0[1] * v0[1]) +
-                        mb * (b->vy * b->vy - v0[3] * v0[3]);
-    tally->kinetic[2] = before[2] + ma * (a->vx * a->vy - v0[0] * v0[1]) +
-                        mb * (b->vx * b->vy - v0[2] * v0[3]);
+    tally->kinetic[0] =
+        before[0] + ma * (a->vx * a->vx - v0[0] * v0[0]) + mb * (b->vx * b->vx - v0[2] * v0[2]);
+    tally->kinetic[1] =
+        before[1] + ma * (a->vy * a->vy - v0[1] * v0[1]) + mb * (b->vy * b->vy - v0[3] * v0[3]);
+    tally->kinetic[2] =
+        before[2] + ma * (a->vx * a->vy - v0[0] * v0[1]) + mb * (b->vx * b->vy - v0[2] * v0[3]);
 }
 
 /* A sheared box's velocities scaled about the profile (the peculiar

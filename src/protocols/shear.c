@@ -25,7 +25,10 @@ typedef struct shear {
     double speed; /* the image above's speed along x: rate times the height */
 } shear;
 
-static ds_protocol_clock *clock_of(ds_sim *sim) { return ds_protocols_clock(sim, DS_PROTOCOL_SHEAR); }
+static ds_protocol_clock *clock_of(ds_sim *sim)
+{
+    return ds_protocols_clock(sim, DS_PROTOCOL_SHEAR);
+}
 
 /* The images pass a cell edge at the clock's time, before the event at t
  * of the step that ends at end: one edge per call (a fast shear's next

@@ -251,10 +251,9 @@ int main(int argc, char **argv)
     const double eta_e = enskog_viscosity(mean(&temperature), sigma, eta, g);
     printf("# rheology: N %zu eta %.6g periodic event sheared, isokinetic kT %.9g, seed %llu, "
            "%d blocks of %llu steps of %.6g\n",
-           n, eta, kt, (unsigned long long)p.seed, blocks, (unsigned long long)per_block,
-           interval);
-    printf("# Z %.6f +- %.6f g(sigma) %.6f nu %.6g t_c %.6g rate*t_c %.6g\n", mean(&z), error(&z), g,
-           nu, 1.0 / nu, rate / nu);
+           n, eta, kt, (unsigned long long)p.seed, blocks, (unsigned long long)per_block, interval);
+    printf("# Z %.6f +- %.6f g(sigma) %.6f nu %.6g t_c %.6g rate*t_c %.6g\n", mean(&z), error(&z),
+           g, nu, 1.0 / nu, rate / nu);
     printf("# eta_E %.6g (Enskog, Gass 1971, at the measured Z) viscosity/eta_E %.5f +- %.5f\n",
            eta_e, visc_mean / eta_e, visc_error / eta_e);
     printf("# %llu collisions, %.1f s\n",
