@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* What tools/pressure and tools/transport share: reading a number from
- * the command line, and block averages with their standard errors (and a
- * series' error corrected for its correlation). */
+/* What the analysis tools share: reading a number from the command line,
+ * block averages with their standard errors (and a series' error
+ * corrected for its correlation), and Enskog's shear viscosity (the
+ * reference of tools/transport and tools/rheology). */
 #ifndef DS_ANALYSIS_UTIL_H
 #define DS_ANALYSIS_UTIL_H
 
@@ -70,6 +71,18 @@ static inline double blocked_mean(double *x, size_t n, double *err)
             x[i] = 0.5 * (x[2 * i] + x[2 * i + 1]);
     }
     return m;
+}
+
+/* Enskog's shear viscosity of disks of diameter sigma at area fraction
+ * eta, contact value g and temperature kT (unit mass), with Gass's
+ * second Sonine approximation's factor 1.022 (Gass 1971):
+ *   eta_E = 1.022 eta_0 (1 / g + 2 eta + (1 + 8 / pi) eta^2 g),
+ *   eta_0 = (1 / (2 sigma)) sqrt(kT / pi). */
+static inline double tool_enskog_viscosity(double kt, double sigma, double eta, double g)
+{
+    const double pi = 3.14159265358979323846;
+    const double eta_0 = sqrt(kt / pi) / (2.0 * sigma);
+    return 1.022 * eta_0 * (1.0 / g + 2.0 * eta + (1.0 + 8.0 / pi) * eta * eta * g);
 }
 
 #endif

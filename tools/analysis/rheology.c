@@ -74,14 +74,6 @@ static double number(const char *s, double lo, double hi, const char *what)
     return tool_number("rheology", s, lo, hi, what);
 }
 
-/* Enskog's shear viscosity of disks (Gass 1971, with his Sonine factor
- * 1.022), as tools/transport prints it. */
-static double enskog_viscosity(double kt, double sigma, double eta, double g)
-{
-    const double eta_0 = sqrt(kt / PI) / (2.0 * sigma);
-    return 1.022 * eta_0 * (1.0 / g + 2.0 * eta + (1.0 + 8.0 / PI) * eta * eta * g);
-}
-
 /* A refusal of the library, printed, and exit status 1. */
 static void check(ds_status st, const ds_error *why, const char *what)
 {
@@ -248,7 +240,7 @@ int main(int argc, char **argv)
     const double nu = 2.0 * (double)(ds_sim_get_collision_count(sim) - collisions0) /
                       ((double)n * (ds_sim_get_time(sim) - time0));
     const double sigma = 2.0 * p.radius, g = (mean(&z) - 1.0) / (2.0 * eta);
-    const double eta_e = enskog_viscosity(mean(&temperature), sigma, eta, g);
+    const double eta_e = tool_enskog_viscosity(mean(&temperature), sigma, eta, g);
     printf("# rheology: N %zu eta %.6g periodic event sheared, isokinetic kT %.9g, seed %llu, "
            "%d blocks of %llu steps of %.6g\n",
            n, eta, kt, (unsigned long long)p.seed, blocks, (unsigned long long)per_block, interval);

@@ -77,14 +77,6 @@ static double number(const char *s, double lo, double hi, const char *what)
     return tool_number("transport", s, lo, hi, what);
 }
 
-/* Enskog's shear viscosity of disks at area fraction eta and contact
- * value g (Gass 1971, his second Sonine approximation's factor 1.022). */
-static double enskog_viscosity(double kt, double sigma, double eta, double g)
-{
-    const double eta_0 = sqrt(kt / PI) / (2.0 * sigma);
-    return 1.022 * eta_0 * (1.0 / g + 2.0 * eta + (1.0 + 8.0 / PI) * eta * eta * g);
-}
-
 static void *checked_calloc(size_t n, size_t size)
 {
     void *p = calloc(n, size);
@@ -231,7 +223,7 @@ int main(int argc, char **argv)
          * mean component's slope over 2: eta A kT. */
         const double visc = helfand / (area * kt), gb = (zb - 1.0) / (2.0 * eta);
         add(&viscosity, visc);
-        add(&viscosity_ratio, visc / enskog_viscosity(kt, sigma, eta, gb));
+        add(&viscosity_ratio, visc / tool_enskog_viscosity(kt, sigma, eta, gb));
         double d = 0.0;
         for (size_t k = 0; k < lags; ++k) {
             if (k)
@@ -261,7 +253,7 @@ int main(int argc, char **argv)
     printf("# viscosity over the window: eta %.6g +- %.6g eta_0 %.6g eta_E %.6g eta/eta_E %.5f +- "
            "%.5f\n",
            mean(&viscosity), error(&viscosity), sqrt(kt / PI) / (2.0 * sigma),
-           enskog_viscosity(kt, sigma, eta, g_contact), mean(&viscosity_ratio),
+           tool_enskog_viscosity(kt, sigma, eta, g_contact), mean(&viscosity_ratio),
            error(&viscosity_ratio));
     printf("# %llu collisions, %.1f s\n",
            (unsigned long long)(ds_sim_get_collision_count(sim) - collisions0),
