@@ -7,9 +7,10 @@ equation-of-state sweep (tools/analysis/eos.sh), started either on the
 triangular lattice (ordered, the sweep's start) or melted: the lattice at
 area fraction 0.60, where it melts within a few time units, run 20 time
 units with the dynamics, then compressed by Lubachevsky-Stillinger growth
-to ETA over about 25 time units (it prints |psi6| on arrival: at
-N = 4096 and 16384 at 0.72 below 0.1, disordered; 1024 disks order
-during the compression already, to 0.55 - 0.66). Or started from the
+to ETA over about 25 time units. It prints |psi6| on arrival, which
+says how disordered the start is: at 0.72, 0.09 with 16384 disks, 0.06
+to 0.41 with 4096 (by seed), 0.55 to 0.66 with 1024, which order during
+the compression already. Or started from the
 positions an earlier run saved (FILE.npy, from --save, the velocities
 drawn afresh at the default speed), to continue a run or hand it from
 one integrator to the other. Then the integrator
