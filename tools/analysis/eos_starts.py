@@ -102,4 +102,7 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except (OSError, ValueError, disksim.Error) as e:  # a bad file, N or area fraction
+        sys.exit(f"eos_starts: {e}")
