@@ -60,7 +60,7 @@ def melted(n, eta, seed):
     if s.growth_state != "reached_eta":
         sys.exit(f"eos_starts: growth ended {s.growth_state} at {s.area_fraction:.4f}")
     print(f"# grown: psi6 {abs(s.psi6):.3f} at {s.area_fraction:.4f}, time {s.time:.0f}")
-    return s.positions, s.radii[0], s.velocities
+    return s.positions, s.radii[0]
 
 
 def main():
@@ -74,6 +74,8 @@ def main():
     p.add_argument("--seed", type=int, default=20260101)
     p.add_argument("--save", help="write the last positions to this .npy")
     a = p.parse_args()
+    if a.blocks < 1 or a.block < 1:
+        p.error("--blocks and --block must be at least 1")
     r = radius_at(a.n, a.eta)
     kw = dict(integrator=a.integrator, boundary="periodic", placement="lattice", box=BOX,
               box_y=BOX_Y, dt=1.0, seed=a.seed)
@@ -81,7 +83,7 @@ def main():
         s = disksim.Sim(a.n, r, **kw)
     else:
         if a.start == "melted":
-            pos, grown, _ = melted(a.n, a.eta, a.seed)
+            pos, grown = melted(a.n, a.eta, a.seed)
             print(f"# melted at {MELT_ETA}, grown to radius {grown:.9f} (lattice's {r:.9f})")
         else:
             pos = np.load(a.start)
